@@ -1,0 +1,47 @@
+// The parameters of SPEC section 7 (seed 001, table 4.3), with their ranges and defaults.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sylva {
+
+struct TreeParams {
+    int trunk_resolution = 96;     // P_Tres: marching-cubes cells along the longest side
+    int crown_resolution = 64;     // P_Cres
+    double branch_length = 0.5;    // P_Bl: default step of F and f, meters
+    double branch_width = 0.1;     // P_Bw: starting width (diameter) of the trunk, meters
+    double trunk_taper = 0.95;     // P_r1: width factor per trunk segment
+    double branch_taper = 0.8;     // P_r2: width factor per branch level and segment
+    double sphere_diameter = 0.3;  // P_Sdia
+    double crown_offset = 0.06;    // P_Soff
+    double crown_fusion = 0.01;    // P_Cfus
+    int generations = 6;           // P_Tgen: derivation steps
+    double pitch_angle = 22.5;     // P_alpha, degrees: & ^
+    double yaw_angle = 22.5;       // P_beta, degrees: + - (and roll \ /)
+    std::uint64_t seed = 1;
+};
+
+// One parameter's key, meaning and valid range, for --set, sliders and validation.
+struct ParamInfo {
+    std::string_view key;
+    std::string_view help;
+    double min;
+    double max;
+    bool integer;
+};
+
+const std::vector<ParamInfo>& param_infos();
+
+// Value of a parameter by key, as double (integers included). nullopt for an unknown key.
+std::optional<double> get_param(const TreeParams& params, std::string_view key);
+
+// Sets a parameter from text ("key=value" style input). Throws InputError naming the key
+// and its range for an unknown key, a non-number, NaN/inf, an out-of-range value or a
+// fraction given for an integer parameter.
+void set_param(TreeParams& params, std::string_view key, std::string_view value);
+
+}  // namespace sylva

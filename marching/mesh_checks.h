@@ -1,0 +1,32 @@
+// Measures and topology checks on triangle meshes: is it closed, manifold, consistently
+// oriented; its area and enclosed volume. Used by tests, the CLI summary and benchmarks.
+#pragma once
+
+#include "marching/mesh.h"
+
+#include <cstddef>
+
+namespace sylva {
+
+struct MeshTopology {
+    std::size_t boundary_edges = 0;      // undirected edges used by exactly one triangle
+    std::size_t non_manifold_edges = 0;  // undirected edges used by three or more triangles
+    std::size_t misoriented_edges = 0;   // edges used twice in the same direction
+    std::size_t degenerate_triangles = 0;  // repeated vertex index or zero area
+    std::size_t non_manifold_vertices = 0;  // triangles around a vertex form more than one fan
+
+    // Closed 2-manifold with consistent orientation and no degenerate triangle.
+    bool is_closed_manifold() const {
+        return boundary_edges == 0 && non_manifold_edges == 0 && misoriented_edges == 0 &&
+               degenerate_triangles == 0 && non_manifold_vertices == 0;
+    }
+};
+
+MeshTopology check_topology(const Mesh& mesh);
+
+double surface_area(const Mesh& mesh);
+
+// Signed volume by the divergence theorem; positive for a closed outward-oriented mesh.
+double enclosed_volume(const Mesh& mesh);
+
+}  // namespace sylva
