@@ -22,6 +22,7 @@ struct TreeParams {
     int generations = 6;           // P_Tgen: derivation steps
     double pitch_angle = 22.5;     // P_alpha, degrees: & ^
     double yaw_angle = 22.5;       // P_beta, degrees: + - (and roll \ /)
+    double tropism = 0.0;          // elasticity e of the bend towards gravity (ABOP)
     std::uint64_t seed = 1;
 };
 

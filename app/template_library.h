@@ -1,0 +1,19 @@
+// Where templates come from: the ones built into the binary, or a file on disk.
+#pragma once
+
+#include "app/pipeline.h"
+
+#include <string>
+#include <vector>
+
+namespace sylva {
+
+// Built-in templates, the default tree first.
+const std::vector<const TreeTemplate*>& builtin_templates();
+
+// `-t` semantics (SPEC section 8): a built-in template's name, else a file: a bare grammar
+// in the syntax of SPEC section 1 whose parameters take their defaults.
+// Throws InputError for an unknown name, IoError when the file cannot be read.
+TreeTemplate load_template(const std::string& name_or_path);
+
+}  // namespace sylva

@@ -1,0 +1,32 @@
+# Shared by scripts/run and scripts/test: Debian packages and the Release build.
+# Sourced, not run.
+
+SYLVA_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SYLVA_BUILD="${SYLVA_BUILD:-$SYLVA_ROOT/build}"
+
+# What building Sylva needs (see third_party_notes.md for why each one).
+SYLVA_BUILD_PACKAGES=(cmake g++ make pkg-config libglm-dev libtbb-dev nlohmann-json3-dev
+    libgtest-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev)
+
+as_root() {
+    if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+# Installs the packages that are missing; does nothing (and needs no network) otherwise.
+ensure_packages() {
+    local missing=()
+    for p in "$@"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
+            missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "sylva: installing ${missing[*]}"
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}" >/dev/null
+}
+
+build_sylva() {
+    cmake -S "$SYLVA_ROOT" -B "$SYLVA_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$SYLVA_BUILD" --parallel "$(nproc)"
+}

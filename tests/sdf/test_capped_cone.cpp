@@ -1,0 +1,67 @@
+// Capped-cone distance: signs and values at known points, and the culled union field.
+#include "sdf/capped_cone.h"
+#include "sdf/cone_field.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace sylva {
+namespace {
+
+const CappedCone kCone{{0, 0, 0}, {0, 2, 0}, 1.0f, 0.5f};
+
+TEST(CappedCone, SignsAtKnownPoints) {
+    EXPECT_LT(distance(kCone, {0, 1, 0}), 0.0f);      // on the axis
+    EXPECT_LT(distance(kCone, {0.7f, 0.2f, 0}), 0.0f);  // near the wide base
+    EXPECT_GT(distance(kCone, {0.7f, 1.9f, 0}), 0.0f);  // beside the narrow top
+    EXPECT_GT(distance(kCone, {0, 3, 0}), 0.0f);      // above
+    EXPECT_GT(distance(kCone, {0, -1, 0}), 0.0f);     // below
+}
+
+TEST(CappedCone, ExactDistancesOnTheAxisAndSides) {
+    EXPECT_NEAR(distance(kCone, {0, 3, 0}), 1.0f, 1e-5);    // above the top cap
+    EXPECT_NEAR(distance(kCone, {0, -0.5f, 0}), 0.5f, 1e-5);  // below the base
+    // On the axis at mid-height the slanted side (radius 0.75 there) is nearer than the
+    // caps: 0.75 * cos(slope), slope = atan(0.5 / 2).
+    EXPECT_NEAR(distance(kCone, {0, 1, 0}), -0.75f * 2.0f / std::sqrt(4.25f), 1e-5);
+    // A cylinder (ra == rb): distance to the side is radial.
+    CappedCone cylinder{{0, 0, 0}, {0, 2, 0}, 0.5f, 0.5f};
+    EXPECT_NEAR(distance(cylinder, {2, 1, 0}), 1.5f, 1e-5);
+    EXPECT_NEAR(distance(cylinder, {0.25f, 1, 0}), -0.25f, 1e-5);
+}
+
+TEST(CappedCone, IsOneLipschitz) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-3, 3);
+    for (int i = 0; i < 2000; ++i) {
+        glm::vec3 p{u(rng), u(rng), u(rng)}, q{u(rng), u(rng), u(rng)};
+        EXPECT_LE(std::abs(distance(kCone, p) - distance(kCone, q)),
+                  glm::length(p - q) * 1.0001f + 1e-5f);
+    }
+}
+
+TEST(ConeField, MatchesTheBruteForceUnionBelowTheMargin) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 10), r(0.05f, 0.4f);
+    std::vector<CappedCone> cones;
+    for (int i = 0; i < 300; ++i) {
+        glm::vec3 a{u(rng), u(rng), u(rng)};
+        glm::vec3 b = a + glm::vec3(u(rng), u(rng), u(rng)) * 0.1f;
+        cones.push_back({a, b, r(rng), r(rng)});
+    }
+    const float margin = 0.5f;
+    ConeField field(cones, margin);
+    for (int i = 0; i < 20000; ++i) {
+        glm::vec3 p{u(rng) * 1.2f - 1, u(rng) * 1.2f - 1, u(rng) * 1.2f - 1};
+        float exact = union_distance(cones, p), fast = field(p);
+        if (exact < margin) EXPECT_NEAR(fast, exact, 1e-5) << i;
+        else EXPECT_GE(fast, margin - 1e-5f) << i;
+    }
+}
+
+}  // namespace
+}  // namespace sylva

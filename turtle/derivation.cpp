@@ -1,0 +1,213 @@
+#include "turtle/derivation.h"
+
+#include "turtle/grammar_error.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sylva {
+namespace {
+
+class Deriver {
+public:
+    Deriver(const LSystem& system, const DeriveSettings& settings)
+        : system_(system), settings_(settings), random_(settings.seed) {
+        for (size_t r = 0; r < system.rules.size(); ++r) {
+            const Rule& rule = system.rules[r];
+            by_symbol_[static_cast<unsigned char>(rule.predecessor.symbol)].push_back(r);
+            has_context_ = has_context_ || !rule.left.empty() || !rule.right.empty();
+        }
+    }
+
+    Word run() {
+        Word word = axiom_word(system_, random_);
+        Word next;
+        for (int step = 1; step <= settings_.steps; ++step) {
+            if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
+                throw Cancelled{};
+            if (has_context_) match_brackets(word);
+            next.clear();
+            next.reserve(word.size() * 2, word.param_count() * 2);
+            for (size_t i = 0; i < word.size(); ++i) {
+                rewrite(word, i, next);
+                if (next.size() > settings_.max_modules)
+                    throw GrammarError("derivation step " + std::to_string(step) +
+                                       ": the word grew past " + std::to_string(next.size()) +
+                                       " modules (limit " +
+                                       std::to_string(settings_.max_modules) +
+                                       "); lower the number of steps or raise the limit");
+            }
+            std::swap(word, next);
+        }
+        return word;
+    }
+
+private:
+    void rewrite(const Word& word, size_t i, Word& out) {
+        const char symbol = word.symbol(i);
+        const auto& candidates = by_symbol_[static_cast<unsigned char>(symbol)];
+        const Rule* chosen = nullptr;
+        double total_weight = 0.0;
+        weighted_.clear();
+        for (size_t r : candidates) {
+            const Rule& rule = system_.rules[r];
+            if (!bind(word, i, rule)) continue;
+            if (rule.condition && evaluate(*rule.condition, rule) == 0.0) continue;
+            if (!rule.weight) {
+                if (weighted_.empty()) chosen = &rule;
+                break;  // an unweighted rule ends the search; weighted ones before it compete
+            }
+            weighted_.push_back({&rule, bindings_});
+            total_weight += *rule.weight;
+        }
+        if (!weighted_.empty()) {
+            chosen = pick_weighted(total_weight);
+        }
+        if (!chosen) {  // identity production
+            out.push(symbol, word.args(i));
+            return;
+        }
+        for (const ModuleProduction& m : chosen->successor) {
+            args_.clear();
+            for (const Expression& e : m.args) args_.push_back(evaluate(e, *chosen));
+            out.push(m.symbol, args_);
+        }
+    }
+
+    const Rule* pick_weighted(double total) {
+        double target = random_.uniform() * total;
+        for (auto& [rule, bindings] : weighted_) {
+            target -= *rule->weight;
+            if (target < 0.0 || &rule == &weighted_.back().first) {
+                bindings_ = bindings;
+                return rule;
+            }
+        }
+        return nullptr;
+    }
+
+    double evaluate(const Expression& e, const Rule& rule) {
+        try {
+            return e.evaluate(bindings_, random_);
+        } catch (const GrammarError& error) {
+            throw GrammarError(error.reason() + " in rule '" + rule.text + "'", rule.line);
+        }
+    }
+
+    // Binds the rule's parameters (left context, predecessor, right context) if it matches.
+    bool bind(const Word& word, size_t i, const Rule& rule) {
+        if (word.args(i).size() != static_cast<size_t>(rule.predecessor.arity)) return false;
+        bindings_.clear();
+        if (!rule.left.empty() && !match_left(word, i, rule.left)) return false;
+        auto a = word.args(i);
+        bindings_.insert(bindings_.end(), a.begin(), a.end());
+        if (!rule.right.empty() && !match_right(word, i, rule.right)) return false;
+        return true;
+    }
+
+    bool ignored(char c) const { return system_.ignored[static_cast<unsigned char>(c)]; }
+
+    // ABOP left context: walk left, skip ignored symbols and whole [...] branches, climb out
+    // of the enclosing '['. Patterns are matched from the last one backwards.
+    bool match_left(const Word& word, size_t i, const std::vector<ModulePattern>& left) {
+        std::vector<size_t> found(left.size());
+        long pos = static_cast<long>(i) - 1;
+        for (size_t k = left.size(); k-- > 0;) {
+            for (;;) {
+                if (pos < 0) return false;
+                char c = word.symbol(static_cast<size_t>(pos));
+                if (c == ']') pos = static_cast<long>(bracket_match_[static_cast<size_t>(pos)]) - 1;
+                else if (c == '[' || ignored(c)) --pos;
+                else break;
+            }
+            auto p = static_cast<size_t>(pos);
+            if (word.symbol(p) != left[k].symbol ||
+                word.args(p).size() != static_cast<size_t>(left[k].arity))
+                return false;
+            found[k] = p;
+            --pos;
+        }
+        for (size_t p : found) {
+            auto a = word.args(p);
+            bindings_.insert(bindings_.end(), a.begin(), a.end());
+        }
+        return true;
+    }
+
+    // ABOP right context: walk right, skip ignored symbols and side branches, stop at ']'.
+    bool match_right(const Word& word, size_t i, const std::vector<ModulePattern>& right) {
+        size_t pos = i + 1;
+        for (const ModulePattern& pattern : right) {
+            for (;;) {
+                if (pos >= word.size()) return false;
+                char c = word.symbol(pos);
+                if (c == '[') pos = bracket_match_[pos] + 1;
+                else if (c == ']') return false;
+                else if (ignored(c)) ++pos;
+                else break;
+            }
+            if (word.symbol(pos) != pattern.symbol ||
+                word.args(pos).size() != static_cast<size_t>(pattern.arity))
+                return false;
+            auto a = word.args(pos);
+            bindings_.insert(bindings_.end(), a.begin(), a.end());
+            ++pos;
+        }
+        return true;
+    }
+
+    // For every bracket, the index of its partner; an unmatched bracket points past the word
+    // (for ']' walking left: to index 0, so the walk ends).
+    void match_brackets(const Word& word) {
+        bracket_match_.assign(word.size(), 0);
+        std::vector<size_t> open;
+        for (size_t i = 0; i < word.size(); ++i) {
+            char c = word.symbol(i);
+            if (c == '[') {
+                open.push_back(i);
+                bracket_match_[i] = word.size() - 1;  // unmatched: skip to the end
+            } else if (c == ']' && !open.empty()) {
+                bracket_match_[i] = open.back();
+                bracket_match_[open.back()] = i;
+                open.pop_back();
+            }
+        }
+    }
+
+    const LSystem& system_;
+    const DeriveSettings& settings_;
+    Random random_;
+    std::array<std::vector<size_t>, 256> by_symbol_;
+    bool has_context_ = false;
+    std::vector<size_t> bracket_match_;
+    std::vector<double> bindings_;
+    std::vector<double> args_;
+    std::vector<std::pair<const Rule*, std::vector<double>>> weighted_;
+};
+
+}  // namespace
+
+Word axiom_word(const LSystem& system, Random& random) {
+    Word word;
+    std::vector<double> args;
+    for (const ModuleProduction& m : system.axiom) {
+        args.clear();
+        for (const Expression& e : m.args) {
+            try {
+                args.push_back(e.evaluate({}, random));
+            } catch (const GrammarError& error) {
+                throw GrammarError(error.reason() + " in the axiom");
+            }
+        }
+        word.push(m.symbol, args);
+    }
+    return word;
+}
+
+Word derive(const LSystem& system, const DeriveSettings& settings) {
+    if (settings.steps < 0) throw GrammarError("the number of derivation steps is negative");
+    return Deriver(system, settings).run();
+}
+
+}  // namespace sylva

@@ -1,0 +1,19 @@
+// Reads the grammar syntax of SPEC section 1 (ABOP/cpfg style) and seed 001's
+// "#axiom / #rules" format into an LSystem.
+#pragma once
+
+#include "turtle/lsystem.h"
+
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace sylva {
+
+// Constants visible to every expression, e.g. template parameters; #define overrides them.
+using Constants = std::map<std::string, double, std::less<>>;
+
+// Throws GrammarError naming line and column (with the line and a caret) on bad input.
+LSystem parse_lsystem(std::string_view text, const Constants& constants = {});
+
+}  // namespace sylva

@@ -1,0 +1,41 @@
+// Turtle interpretation (SPEC section 2): walks a derived word and records the skeleton.
+//
+// ABOP mode: frame H (heading), L (left), U (up), U = H x L, starting H=(0,1,0),
+// L=(-1,0,0), U=(0,0,1); Y is up. LPTG mode (seed 001, chapter 5.2): an elevation e and an
+// azimuth a; F moves along (cos e cos a, sin e, cos e sin a).
+#pragma once
+
+#include "turtle/skeleton.h"
+#include "turtle/word.h"
+
+#include <glm/vec3.hpp>
+
+namespace sylva {
+
+enum class TurtleMode { Abop, Lptg };
+
+enum class WidthModel {
+    Explicit,  // widths change only through '!'
+    Taper,     // seed 001, 5.3-5.5: every F on the trunk level multiplies the width by
+               // trunk_taper, deeper levels by branch_taper; '!' still sets the width
+};
+
+struct TurtleSettings {
+    TurtleMode mode = TurtleMode::Abop;
+    WidthModel width_model = WidthModel::Taper;
+    double step = 1.0;            // length of F and f without a parameter, meters
+    double turn_angle = 22.5;     // degrees, + -  (LPTG: the azimuth step P_beta)
+    double pitch_angle = 22.5;    // degrees, & ^  (LPTG: the elevation step P_alpha)
+    double roll_angle = 22.5;     // degrees, \ /
+    double initial_width = 0.1;   // diameter at the start, meters
+    double width_decay = 0.7;     // '!' without a parameter multiplies the width by this
+    double trunk_taper = 0.95;    // WidthModel::Taper, level 0
+    double branch_taper = 0.8;    // WidthModel::Taper, deeper levels
+    glm::dvec3 tropism{0.0, -1.0, 0.0};
+    double elasticity = 0.0;      // 0 disables tropism
+};
+
+// Throws GrammarError for a ']' with no '[' or a '}' with no '{' in the word.
+Skeleton interpret(const Word& word, const TurtleSettings& settings);
+
+}  // namespace sylva

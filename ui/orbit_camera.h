@@ -1,0 +1,36 @@
+// An orbit camera: it circles a target point at a distance, Y up, and is framed on a box.
+// Plain data plus free functions, so panels and tests can read and set it directly.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "marching/mesh.h"
+
+namespace sylva::studio {
+
+struct OrbitCamera {
+    glm::vec3 target{0.0f};
+    float distance = 5.0f;    // meters from the target
+    float yaw_deg = 35.0f;    // around +Y; 0 looks down -Z
+    float pitch_deg = 12.0f;  // positive looks down at the target
+    float fov_y_deg = 40.0f;
+    float scene_radius = 1.0f;  // sets the zoom limits and the clip planes
+};
+
+// Looks at the centre of `box` from the camera's current angles, far enough back that the
+// whole box fits the smaller field of view of a viewport with this aspect (width/height).
+void frame_box(OrbitCamera& camera, const Box& box, float aspect);
+
+// Left-drag: `pixels` is the mouse movement since the last frame.
+void orbit(OrbitCamera& camera, glm::vec2 pixels);
+
+// Scroll: positive `steps` move closer. Distance is clamped to a range around the scene.
+void zoom(OrbitCamera& camera, float steps);
+
+glm::vec3 eye_position(const OrbitCamera& camera);
+glm::mat4 view_matrix(const OrbitCamera& camera);
+glm::mat4 projection_matrix(const OrbitCamera& camera, float aspect);
+
+}  // namespace sylva::studio

@@ -1,0 +1,55 @@
+#include "ui/studio_options.h"
+
+#include <charconv>
+#include <string_view>
+
+namespace sylva::studio {
+
+StudioOptions parse_studio_options(int argc, const char* const* argv) {
+    StudioOptions options;
+    bool frames_given = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string_view arg = argv[i];
+        auto value = [&]() -> std::string_view {
+            if (i + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
+            return argv[++i];
+        };
+        if (arg == "-h" || arg == "--help") {
+            options.help = true;
+        } else if (arg == "--screenshot") {
+            std::string_view path = value();
+            if (path.empty()) throw UsageError("--screenshot needs a file name");
+            options.screenshot_path = std::string(path);
+        } else if (arg == "--frames") {
+            std::string_view text = value();
+            int frames = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), frames);
+            if (error != std::errc() || end != text.data() + text.size() || frames < 1) {
+                throw UsageError("--frames takes a whole number of at least 1, got '" +
+                                 std::string(text) + "'");
+            }
+            options.screenshot_frames = frames;
+            frames_given = true;
+        } else {
+            throw UsageError("unknown option '" + std::string(arg) + "'");
+        }
+    }
+    if (frames_given && !options.screenshot_path) {
+        throw UsageError("--frames only applies with --screenshot");
+    }
+    return options;
+}
+
+std::string studio_usage() {
+    return "usage: sylva-studio [--screenshot PATH [--frames N]]\n"
+           "\n"
+           "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
+           "\n"
+           "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
+           "  --frames N         frames to draw before the screenshot (default 5)\n"
+           "  -h, --help         show this help\n"
+           "\n"
+           "Without a display, use the command-line tool instead: sylva export -o tree.obj\n";
+}
+
+}  // namespace sylva::studio

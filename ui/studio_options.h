@@ -1,0 +1,27 @@
+// sylva-studio's command line: an interactive window by default, or a scripted screenshot.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace sylva::studio {
+
+struct StudioOptions {
+    bool help = false;
+    std::optional<std::string> screenshot_path;  // render, save a PNG, exit
+    int screenshot_frames = 5;                   // frames drawn before the capture
+};
+
+// A malformed command line; main prints the message and the usage, and exits with 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Throws UsageError for an unknown option, a missing or malformed value, or --frames without
+// --screenshot.
+StudioOptions parse_studio_options(int argc, const char* const* argv);
+
+std::string studio_usage();
+
+}  // namespace sylva::studio
