@@ -1,14 +1,13 @@
 #include "marching/marching_cubes.h"
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -22,12 +21,15 @@ namespace {
 // lower axis first, so edge 0 is the x edge at y = z = 0 and edge 11 the z edge at x = y = 1.
 // Face f lies at coordinate f % 2 of axis f / 2.
 
-constexpr int corner_index(const std::array<int, 3>& c) { return c[0] | c[1] << 1 | c[2] << 2; }
+constexpr int corner_index(const std::array<int, 3>& c) {
+    return c[0] | c[1] << 1 | c[2] << 2;
+}
 
 // The two axes other than `axis`, increasing.
 constexpr std::array<int, 2> other_axes(int axis) {
-    return axis == 0 ? std::array<int, 2>{1, 2}
-                     : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
+    return axis == 0   ? std::array<int, 2>{1, 2}
+           : axis == 1 ? std::array<int, 2>{0, 2}
+                       : std::array<int, 2>{0, 1};
 }
 
 constexpr int edge_index(int axis, const std::array<int, 3>& c) {
@@ -130,11 +132,11 @@ CubeCase build_case(unsigned config, unsigned joined) {
         // Walking counter-clockwise in (u, v), edge k "enters" the inside when corner k is
         // outside and corner k + 1 inside; a segment runs from an entry to an exit.
         if (ambiguous >> f & 1u) {
-            const bool saddle_inside = joined >> f & 1u;
+            const bool connected = joined >> f & 1u;
             for (int k = 0; k < 4; ++k) {
                 const int prev = (k + 3) % 4;
-                if (!saddle_inside && in[k]) add_segment(face, prev, k);  // cut off corner k
-                if (saddle_inside && !in[k]) add_segment(face, k, prev);
+                if (!connected && in[k]) add_segment(face, prev, k);  // cut off corner k
+                if (connected && !in[k]) add_segment(face, k, prev);
             }
         } else {
             int entry = -1, leave = -1;
@@ -161,7 +163,9 @@ CubeCase build_case(unsigned config, unsigned joined) {
         assert(n >= 3 && result.loop_count < 4);
         const int loop = result.loop_count++;
         result.loop_size[loop] = static_cast<std::uint8_t>(n);
-        if (n <= 4) continue;  // no two corners of a 3- or 4-loop share a face
+        // Up to five crossings a loop meets each face once, so no diagonal joins two
+        // crossings on one face; quads pick their shorter diagonal at run time.
+        if (n <= 4) continue;
         // A fan diagonal between two crossings on the same face would also be a candidate
         // diagonal of the cube across that face: two cubes could both use it and give an
         // edge with four triangles. That can only happen when an ambiguous face puts both
@@ -206,7 +210,9 @@ const std::vector<CubeCase>& case_table() {
 
 // Samples stored as NaN have no usable value: they are outside, and an edge that ends in one
 // is crossed at its midpoint.
-bool inside(float value) { return value < 0.0f; }
+bool inside(float value) {
+    return value < 0.0f;
+}
 
 // Whether the bilinear interpolant of a face, read in canonical order a, b, c, d around it,
 // is inside at its saddle point. Only called on ambiguous faces, where a and c share a sign
@@ -278,7 +284,7 @@ Grid make_grid(const Box& box, const MarchingCubesSettings& settings) {
 }
 
 class Mesher {
-public:
+  public:
     Mesher(const ScalarField& field, const Grid& grid)
         : field_(field),
           grid_(grid),
@@ -308,7 +314,7 @@ public:
         return std::move(mesh_);
     }
 
-private:
+  private:
     static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
     std::size_t at(int i, int j) const { return std::size_t(i) + std::size_t(nx_) * j; }
@@ -325,8 +331,8 @@ private:
         for (int j = 0; j < ny_; ++j) {
             for (int i = 0; i < nx_; ++i) {
                 const float value = field_(glm::vec3(node(i, j, k)));
-                const bool border = border_layer || i == 0 || j == 0 || i == nx_ - 1 ||
-                                    j == ny_ - 1;
+                const bool border =
+                    border_layer || i == 0 || j == 0 || i == nx_ - 1 || j == ny_ - 1;
                 const bool usable = std::isfinite(value) && !(border && inside(value));
                 out[at(i, j)] = usable ? value : std::numeric_limits<float>::quiet_NaN();
             }
@@ -341,9 +347,10 @@ private:
         return static_cast<std::uint32_t>(mesh_.positions.size() - 1);
     }
 
-    std::uint32_t crossing(float v0, float v1, const glm::dvec3& p0, int axis) {
+    // The vertex on the edge from node (i, j, k) along `axis`, if the edge is crossed.
+    std::uint32_t crossing(float v0, float v1, int i, int j, int k, int axis) {
         if (inside(v0) == inside(v1)) return kNone;
-        glm::dvec3 p = p0;
+        glm::dvec3 p = node(i, j, k);
         p[axis] += crossing_fraction(v0, v1) * grid_.h;
         return add_vertex(p);
     }
@@ -353,8 +360,8 @@ private:
         for (int j = 0; j < ny_; ++j) {
             for (int i = 0; i < nx_; ++i) {
                 const float v = s[at(i, j)];
-                if (i + 1 < nx_) x_ids[at(i, j)] = crossing(v, s[at(i + 1, j)], node(i, j, k), 0);
-                if (j + 1 < ny_) y_ids[at(i, j)] = crossing(v, s[at(i, j + 1)], node(i, j, k), 1);
+                if (i + 1 < nx_) x_ids[at(i, j)] = crossing(v, s[at(i + 1, j)], i, j, k, 0);
+                if (j + 1 < ny_) y_ids[at(i, j)] = crossing(v, s[at(i, j + 1)], i, j, k, 1);
             }
         }
     }
@@ -363,7 +370,7 @@ private:
         for (int j = 0; j < ny_; ++j) {
             for (int i = 0; i < nx_; ++i) {
                 z_ids_[at(i, j)] =
-                    crossing(samples_[0][at(i, j)], samples_[1][at(i, j)], node(i, j, k), 2);
+                    crossing(samples_[0][at(i, j)], samples_[1][at(i, j)], i, j, k, 2);
             }
         }
     }
@@ -371,21 +378,30 @@ private:
     std::uint32_t edge_vertex(int e, int i, int j) const {
         const int b0 = e & 1, b1 = e >> 1 & 1;
         switch (e / 4) {
-            case 0: return x_ids_[b1][at(i, j + b0)];
-            case 1: return y_ids_[b1][at(i + b0, j)];
-            default: return z_ids_[at(i + b0, j + b1)];
+            case 0:
+                return x_ids_[b1][at(i, j + b0)];
+            case 1:
+                return y_ids_[b1][at(i + b0, j)];
+            default:
+                return z_ids_[at(i + b0, j + b1)];
         }
     }
 
     void march_slab() {
         for (int j = 0; j + 1 < ny_; ++j) {
+            // Corner c = x + 2y + 4z of cube (i, j) is rows[c >> 1][i + (c & 1)].
+            const std::array<const float*, 4> rows{
+                &samples_[0][at(0, j)], &samples_[0][at(0, j + 1)], &samples_[1][at(0, j)],
+                &samples_[1][at(0, j + 1)]};
             for (int i = 0; i + 1 < nx_; ++i) {
-                std::array<float, 8> v;
-                unsigned config = 0;
-                for (int c = 0; c < 8; ++c) {
-                    v[c] = samples_[c >> 2][at(i + (c & 1), j + (c >> 1 & 1))];
-                    config |= unsigned(inside(v[c])) << c;
-                }
+                const std::array<float, 8> v{rows[0][i],     rows[0][i + 1], rows[1][i],
+                                             rows[1][i + 1], rows[2][i],     rows[2][i + 1],
+                                             rows[3][i],     rows[3][i + 1]};
+                // Written out: this loop runs once per grid cell and dominates empty space.
+                const unsigned config = unsigned(inside(v[0])) | unsigned(inside(v[1])) << 1 |
+                                        unsigned(inside(v[2])) << 2 | unsigned(inside(v[3])) << 3 |
+                                        unsigned(inside(v[4])) << 4 | unsigned(inside(v[5])) << 5 |
+                                        unsigned(inside(v[6])) << 6 | unsigned(inside(v[7])) << 7;
                 if (config == 0 || config == 255) continue;
                 unsigned joined = 0;
                 for (int f = 0; f < 6; ++f) {

@@ -1,10 +1,9 @@
 #include "marching/mesh_checks.h"
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-
 #include <algorithm>
 #include <cstdint>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -24,7 +23,9 @@ bool indices_valid(const Mesh& mesh, const Triangle& t) {
     return t[0] < n && t[1] < n && t[2] < n;
 }
 
-bool repeats_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+bool repeats_index(const Triangle& t) {
+    return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
 
 // Twice the triangle's vector area.
 glm::dvec3 area_vector(const Mesh& mesh, const Triangle& t) {
@@ -50,9 +51,7 @@ Bounds bounds(const Mesh& mesh) {
 // Union-find over a vertex's few neighbours, to count the fans around it.
 struct DisjointSets {
     std::vector<int> parent;
-    explicit DisjointSets(std::size_t n) : parent(n) {
-        std::iota(parent.begin(), parent.end(), 0);
-    }
+    explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
     int find(int x) {
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
@@ -135,7 +134,8 @@ MeshTopology check_topology(const Mesh& mesh) {
         std::vector<std::uint32_t> fill(link_start.begin(), link_start.end() - 1);
         for (const std::uint32_t t : usable) {
             const Triangle& tri = mesh.triangles[t];
-            for (int k = 0; k < 3; ++k) links[fill[tri[k]]++] = {tri[(k + 1) % 3], tri[(k + 2) % 3]};
+            for (int k = 0; k < 3; ++k)
+                links[fill[tri[k]]++] = {tri[(k + 1) % 3], tri[(k + 2) % 3]};
         }
     }
     std::vector<std::uint32_t> neighbours;

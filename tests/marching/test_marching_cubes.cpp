@@ -1,8 +1,3 @@
-#include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
-
-#include <glm/geometric.hpp>
-#include <glm/vec4.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,12 +5,17 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
 #include <limits>
 #include <numbers>
 #include <random>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <vector>
+
+#include "marching/marching_cubes.h"
+#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {
@@ -30,7 +30,9 @@ ScalarField unite(ScalarField a, ScalarField b) {
     return [=](const glm::vec3& p) { return std::min(a(p), b(p)); };
 }
 
-Box cube(float half) { return {glm::vec3(-half), glm::vec3(half)}; }
+Box cube(float half) {
+    return {glm::vec3(-half), glm::vec3(half)};
+}
 
 MarchingCubesSettings settings(int resolution, int padding = 2) {
     MarchingCubesSettings s;
@@ -88,8 +90,7 @@ struct RecordedRun {
     std::size_t ambiguous_faces = 0;
 };
 
-RecordedRun run_recorded(const ScalarField& field, const Box& box,
-                         const MarchingCubesSettings& s) {
+RecordedRun run_recorded(const ScalarField& field, const Box& box, const MarchingCubesSettings& s) {
     std::vector<std::pair<glm::vec3, float>> samples;
     const ScalarField recording = [&](const glm::vec3& p) {
         const float v = field(p);
@@ -168,8 +169,8 @@ TEST(MarchingCubes, SphereIsClosedAtSeveralResolutions) {
 
 TEST(MarchingCubes, SphereNormalsPointOutward) {
     const glm::vec3 center(0.3f, -0.2f, 0.1f);
-    const Mesh mesh = marching_cubes(sphere(center, 0.8f), {center - 0.8f, center + 0.8f},
-                                     settings(32));
+    const Mesh mesh =
+        marching_cubes(sphere(center, 0.8f), {center - 0.8f, center + 0.8f}, settings(32));
     ASSERT_FALSE(mesh.triangles.empty());
     std::size_t inward = 0;
     for (const auto& t : mesh.triangles) {
@@ -192,7 +193,8 @@ TEST(MarchingCubes, EvaluatesEachGridNodeOnce) {
 }
 
 TEST(MarchingCubes, SameInputGivesSameMesh) {
-    const ScalarField field = unite(sphere({-0.4f, 0.0f, 0.0f}, 0.5f), sphere({0.4f, 0.1f, 0.0f}, 0.45f));
+    const ScalarField field =
+        unite(sphere({-0.4f, 0.0f, 0.0f}, 0.5f), sphere({0.4f, 0.1f, 0.0f}, 0.45f));
     const Box box = cube(1.0f);
     const Mesh a = marching_cubes(field, box, settings(40));
     const Mesh b = marching_cubes(field, box, settings(40));
@@ -361,19 +363,19 @@ TEST(MarchingCubes, SineNoiseAtManyScalesIsClosed) {
 }
 
 TEST(MarchingCubes, PositiveFieldGivesEmptyMesh) {
-    const Mesh mesh = marching_cubes([](const glm::vec3&) { return 1.0f; }, cube(1.0f),
-                                     settings(20));
+    const Mesh mesh =
+        marching_cubes([](const glm::vec3&) { return 1.0f; }, cube(1.0f), settings(20));
     EXPECT_TRUE(mesh.positions.empty());
     EXPECT_TRUE(mesh.triangles.empty());
 }
 
 TEST(MarchingCubes, ZeroAndNonFiniteFieldsAreOutside) {
-    for (const float value : {0.0f, -0.0f, std::numeric_limits<float>::quiet_NaN(),
-                              std::numeric_limits<float>::infinity(),
-                              -std::numeric_limits<float>::infinity()}) {
+    for (const float value :
+         {0.0f, -0.0f, std::numeric_limits<float>::quiet_NaN(),
+          std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()}) {
         SCOPED_TRACE("value " + std::to_string(value));
-        const Mesh mesh = marching_cubes([=](const glm::vec3&) { return value; }, cube(1.0f),
-                                         settings(8));
+        const Mesh mesh =
+            marching_cubes([=](const glm::vec3&) { return value; }, cube(1.0f), settings(8));
         EXPECT_TRUE(mesh.triangles.empty());
     }
 }
@@ -399,10 +401,10 @@ TEST(MarchingCubes, FieldStillNegativeAtTheBorderIsCappedHalfACellInside) {
     const double h = 2.0 / 16.0;
     const double l = 2.0 + 2.0 * 2.0 * h - 2.0 * h;
     const double r = 0.5 * h;
-    const double volume = l * l * l + 6.0 * l * l * r + 12.0 * l * r * r / 2.0 +
-                          8.0 * r * r * r / 6.0;
-    const double area = 6.0 * l * l + 12.0 * l * r * std::sqrt(2.0) +
-                        8.0 * std::sqrt(3.0) / 2.0 * r * r;
+    const double volume =
+        l * l * l + 6.0 * l * l * r + 12.0 * l * r * r / 2.0 + 8.0 * r * r * r / 6.0;
+    const double area =
+        6.0 * l * l + 12.0 * l * r * std::sqrt(2.0) + 8.0 * std::sqrt(3.0) / 2.0 * r * r;
     EXPECT_NEAR(enclosed_volume(mesh), volume, 1e-5);
     EXPECT_NEAR(surface_area(mesh), area, 1e-5);
     expect_inside(mesh, cube(1.0f), float(1.5 * h + 1e-5));

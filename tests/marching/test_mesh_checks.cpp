@@ -1,8 +1,8 @@
-#include "marching/mesh_checks.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {
