@@ -49,6 +49,8 @@ TurtleSettings turtle_settings(const TreeTemplate& tree) {
     s.trunk_taper = p.trunk_taper;
     s.branch_taper = p.branch_taper;
     s.elasticity = p.tropism;
+    s.pipe_tip_width = p.tip_width;
+    s.pipe_exponent = p.pipe_exponent;
     return s;
 }
 

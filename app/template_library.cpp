@@ -10,11 +10,6 @@
 
 namespace sylva {
 
-const std::vector<const TreeTemplate*>& builtin_templates() {
-    static const std::vector<const TreeTemplate*> all = {&default_template()};
-    return all;
-}
-
 TreeTemplate load_template(const std::string& name_or_path) {
     for (const TreeTemplate* t : builtin_templates())
         if (t->name == name_or_path) return *t;

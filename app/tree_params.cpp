@@ -29,8 +29,10 @@ const std::vector<Field>& fields() {
         {{"crown_fusion", "P_Cfus: how strongly the crown spheres blend", 1e-3, 1e-1, false}, &TreeParams::crown_fusion, nullptr},
         {{"generations", "P_Tgen: derivation steps of the grammar", 0, 15, true}, nullptr, &TreeParams::generations},
         {{"pitch_angle", "P_alpha: default angle of & and ^, degrees", 0, 360, false}, &TreeParams::pitch_angle, nullptr},
-        {{"tropism", "elasticity of the bend towards gravity after each F (0 = none)", 0, 1, false}, &TreeParams::tropism, nullptr},
         {{"yaw_angle", "P_beta: default angle of + - \\ /, degrees", 0, 360, false}, &TreeParams::yaw_angle, nullptr},
+        {{"tropism", "elasticity of the bend towards gravity after each F (0 = none)", 0, 1, false}, &TreeParams::tropism, nullptr},
+        {{"tip_width", "pipe width model: diameter at the branch tips, meters", 0, 10, false}, &TreeParams::tip_width, nullptr},
+        {{"pipe_exponent", "pipe width model: Murray's exponent (r^g = sum of the children's r^g)", 1, 4, false}, &TreeParams::pipe_exponent, nullptr},
     };
     return table;
 }

@@ -23,6 +23,8 @@ struct TreeParams {
     double pitch_angle = 22.5;     // P_alpha, degrees: & ^
     double yaw_angle = 22.5;       // P_beta, degrees: + - (and roll \ /)
     double tropism = 0.0;          // elasticity e of the bend towards gravity (ABOP)
+    double tip_width = 0.02;       // pipe width model: diameter at the tips, meters
+    double pipe_exponent = 2.5;    // pipe width model: Murray's exponent g
     std::uint64_t seed = 1;
 };
 

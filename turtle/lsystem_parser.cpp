@@ -326,9 +326,10 @@ private:
         if (gt != std::string_view::npos)
             rule.right = parse_context(line, gt + 1, pattern_end, variables);
         if (colon != std::string_view::npos) {
-            if (trim(line.text.substr(colon + 1, arrow - colon - 1)).empty())
-                line.fail("empty condition after ':'", colon + 1);
-            rule.condition = compile(line, colon + 1, arrow, variables);
+            std::string_view condition = trim(line.text.substr(colon + 1, arrow - colon - 1));
+            if (condition.empty()) line.fail("empty condition after ':'", colon + 1);
+            if (condition != "*")  // ABOP writes "*" for "always"
+                rule.condition = compile(line, colon + 1, arrow, variables);
         }
 
         // Right side: successor [: weight]

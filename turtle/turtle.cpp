@@ -1,6 +1,7 @@
 #include "turtle/turtle.h"
 
 #include "turtle/grammar_error.h"
+#include "turtle/pipe_model.h"
 
 #include <glm/geometric.hpp>
 
@@ -92,6 +93,9 @@ public:
                 default: break;  // other symbols only drive the derivation
             }
         }
+        if (settings_.width_model == WidthModel::Pipe)
+            apply_pipe_model(out_, static_cast<float>(settings_.pipe_tip_width * 0.5),
+                             static_cast<float>(settings_.pipe_exponent));
         return std::move(out_);
     }
 

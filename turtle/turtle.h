@@ -18,6 +18,7 @@ enum class WidthModel {
     Explicit,  // widths change only through '!'
     Taper,     // seed 001, 5.3-5.5: every F on the trunk level multiplies the width by
                // trunk_taper, deeper levels by branch_taper; '!' still sets the width
+    Pipe,      // seed 000's pipe model on the finished skeleton (pipe_model.h)
 };
 
 struct TurtleSettings {
@@ -31,6 +32,8 @@ struct TurtleSettings {
     double width_decay = 0.7;     // '!' without a parameter multiplies the width by this
     double trunk_taper = 0.95;    // WidthModel::Taper, level 0
     double branch_taper = 0.8;    // WidthModel::Taper, deeper levels
+    double pipe_tip_width = 0.02;  // WidthModel::Pipe: diameter at the tips
+    double pipe_exponent = 2.5;    // WidthModel::Pipe: Murray's g
     glm::dvec3 tropism{0.0, -1.0, 0.0};
     double elasticity = 0.0;      // 0 disables tropism
 };

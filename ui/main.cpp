@@ -80,7 +80,7 @@ void show_tree(Viewport& viewport, StudioState& state, float aspect) {
     viewport.tree.upload(mesh);
     if (mesh.positions.empty()) return;
     sylva::Box box = mesh_bounds(mesh);
-    frame_box(state.camera, box, aspect);
+    frame_points(state.camera, mesh.positions, aspect);
     glm::vec3 size = box.max - box.min;
     float horizontal_radius = 0.5f * std::max(size.x, size.z);
     float radius = std::max(1.6f * horizontal_radius, 0.8f * size.y);

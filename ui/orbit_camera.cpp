@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
+#include <span>
 
 namespace sylva::studio {
 namespace {
@@ -14,17 +15,41 @@ constexpr float kZoomPerStep = 0.9f;
 // Not quite +-90 so the view direction never becomes parallel to Y (lookAt's up vector).
 constexpr float kMaxPitchDeg = 89.0f;
 
+// Unit vector from the target to the eye: yaw 0 puts the eye on +Z looking down -Z.
+glm::vec3 back_direction(const OrbitCamera& camera) {
+    float yaw = glm::radians(camera.yaw_deg);
+    float pitch = glm::radians(camera.pitch_deg);
+    return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+}
+
 }  // namespace
 
-void frame_box(OrbitCamera& camera, const Box& box, float aspect) {
-    camera.target = 0.5f * (box.min + box.max);
-    float radius = 0.5f * glm::length(box.max - box.min);
-    camera.scene_radius = std::max(radius, 1e-3f);
-    float half_fov_y = 0.5f * glm::radians(camera.fov_y_deg);
-    float half_fov_x = std::atan(std::tan(half_fov_y) * aspect);
-    float half_fov = std::min(half_fov_y, half_fov_x);
-    // The bounding sphere is loose for a tall tree, so fit it slightly tighter than exact.
-    camera.distance = 0.9f * camera.scene_radius / std::sin(half_fov);
+void frame_points(OrbitCamera& camera, std::span<const glm::vec3> points, float aspect) {
+    if (points.empty()) return;
+    glm::vec3 low = points.front(), high = points.front();
+    for (const glm::vec3& p : points) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    camera.target = 0.5f * (low + high);
+    camera.scene_radius = std::max(0.5f * glm::length(high - low), 1e-3f);
+
+    // Fit the points themselves, not a bounding sphere or box: both leave a tree (tall, or
+    // with an open crown) small in the window.
+    glm::vec3 back = back_direction(camera);
+    glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), back));
+    glm::vec3 up = glm::cross(back, right);
+    float tan_y = std::tan(0.5f * glm::radians(camera.fov_y_deg));
+    float tan_x = tan_y * aspect;
+    float distance = 1e-3f;
+    for (const glm::vec3& p : points) {
+        glm::vec3 offset = p - camera.target;
+        float toward_eye = glm::dot(offset, back);
+        distance = std::max(distance, toward_eye + std::abs(glm::dot(offset, right)) / tan_x);
+        distance = std::max(distance, toward_eye + std::abs(glm::dot(offset, up)) / tan_y);
+    }
+    constexpr float kMargin = 1.1f;  // a little air around the tree
+    camera.distance = kMargin * distance;
 }
 
 void orbit(OrbitCamera& camera, glm::vec2 pixels) {
@@ -40,12 +65,7 @@ void zoom(OrbitCamera& camera, float steps) {
 }
 
 glm::vec3 eye_position(const OrbitCamera& camera) {
-    float yaw = glm::radians(camera.yaw_deg);
-    float pitch = glm::radians(camera.pitch_deg);
-    // Direction from the target to the eye: yaw 0 puts the eye on +Z looking down -Z.
-    glm::vec3 back(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                   std::cos(pitch) * std::cos(yaw));
-    return camera.target + camera.distance * back;
+    return camera.target + camera.distance * back_direction(camera);
 }
 
 glm::mat4 view_matrix(const OrbitCamera& camera) {

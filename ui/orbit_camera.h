@@ -1,12 +1,11 @@
-// An orbit camera: it circles a target point at a distance, Y up, and is framed on a box.
+// An orbit camera: it circles a target point at a distance, Y up, and frames a point set.
 // Plain data plus free functions, so panels and tests can read and set it directly.
 #pragma once
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-
-#include "marching/mesh.h"
+#include <span>
 
 namespace sylva::studio {
 
@@ -19,9 +18,10 @@ struct OrbitCamera {
     float scene_radius = 1.0f;  // sets the zoom limits and the clip planes
 };
 
-// Looks at the centre of `box` from the camera's current angles, far enough back that the
-// whole box fits the smaller field of view of a viewport with this aspect (width/height).
-void frame_box(OrbitCamera& camera, const Box& box, float aspect);
+// Looks at the centre of the points' bounding box from the camera's current angles, just far
+// enough back that every point is in view in a viewport of this aspect (width / height).
+// Does nothing for no points.
+void frame_points(OrbitCamera& camera, std::span<const glm::vec3> points, float aspect);
 
 // Left-drag: `pixels` is the mouse movement since the last frame.
 void orbit(OrbitCamera& camera, glm::vec2 pixels);

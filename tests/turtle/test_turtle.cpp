@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <cmath>
+
 namespace sylva {
 namespace {
 
@@ -112,6 +114,29 @@ TEST(Turtle, UnbalancedBracketInTheWordIsAnError) {
     w.push('F');
     w.push(']');
     EXPECT_THROW(interpret(w, {}), GrammarError);
+}
+
+}  // namespace
+}  // namespace sylva
+
+namespace sylva {
+namespace {
+
+TEST(PipeModel, MurraysLawAtEveryFork) {
+    TurtleSettings settings;
+    settings.width_model = WidthModel::Pipe;
+    settings.pipe_tip_width = 0.2;  // r0 = 0.1
+    settings.pipe_exponent = 2.0;
+    // Trunk, fork into two tips, one of which forks again.
+    Skeleton s = draw("F[+F]F[+F]F", settings);
+    ASSERT_EQ(s.segments.size(), 5u);
+    const float r0 = 0.1f;
+    EXPECT_FLOAT_EQ(s.segments[4].ra, r0);  // tips
+    EXPECT_FLOAT_EQ(s.segments[3].ra, r0);
+    EXPECT_FLOAT_EQ(s.segments[1].ra, r0);
+    EXPECT_NEAR(s.segments[2].ra, std::sqrt(2.0f) * r0, 1e-6);  // r^2 = r0^2 + r0^2
+    EXPECT_NEAR(s.segments[0].ra, std::sqrt(3.0f) * r0, 1e-6);
+    EXPECT_NEAR(s.segments[0].rb, s.segments[2].ra, 1e-6);  // tapers to its thickest child
 }
 
 }  // namespace
