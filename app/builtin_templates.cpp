@@ -16,14 +16,15 @@ const TreeTemplate& default_template() {
 #define d1 94.74     # divergence angle between the first and second branch
 #define d2 132.63    # ... between the second and third
 #define lr 1.109     # internode elongation per generation
-#define vr 1.5       # width growth per generation
-axiom: !(0.06)F(1.6)/(45)A
-A -> !(0.035)F(0.45)[&(a)F(0.45)A]/(d1)[&(a)F(0.45)A]/(d2)[&(a)F(0.45)A]
+#define vr 1.732     # width growth per generation
+#define w0 0.022     # width of the first internode when it appears, meters
+axiom: !(w0)F(1.6)/(45)A
+A -> !(w0*vr)F(0.45)[&(a)F(0.45)A]/(d1)[&(a)F(0.45)A]/(d2)[&(a)F(0.45)A]
 F(l) -> F(l*lr)
 !(w) -> !(w*vr)
 )";
         t.width_model = WidthModel::Explicit;
-        t.params.generations = 6;
+        t.params.generations = 5;
         t.params.tropism = 0.22;
         return t;
     }();

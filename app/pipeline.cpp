@@ -54,6 +54,23 @@ TurtleSettings turtle_settings(const TreeTemplate& tree) {
     return s;
 }
 
+// One capped cone per segment with a width. Branches thinner than the grid can sample
+// would break into disconnected crumbs, so radii are raised to kMinRadiusInCells cells:
+// a ball that wide always holds a grid node (the cubic lattice's covering radius is
+// sqrt(3)/2 = 0.87 cells), which keeps every branch in one piece. Finer twigs need a
+// higher trunk_resolution.
+constexpr float kMinRadiusInCells = 0.9f;
+
+std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
+    const float min_radius = kMinRadiusInCells * cell;
+    std::vector<CappedCone> cones;
+    cones.reserve(skeleton.segments.size());
+    for (const Segment& s : skeleton.segments)
+        if (std::max(s.ra, s.rb) > 0.0f)
+            cones.push_back({s.a, s.b, std::max(s.ra, min_radius), std::max(s.rb, min_radius)});
+    return cones;
+}
+
 }  // namespace
 
 Word derive_word(const TreeTemplate& tree) {
@@ -98,20 +115,16 @@ Tree generate_tree(const TreeTemplate& tree) {
     Tree out;
     out.skeleton = grow_skeleton(tree, &out.times);
 
-    std::vector<CappedCone> cones;
-    cones.reserve(out.skeleton.segments.size());
-    for (const Segment& s : out.skeleton.segments)
-        if (std::max(s.ra, s.rb) > 0.0f) cones.push_back({s.a, s.b, s.ra, s.rb});
-    if (cones.empty())
-        throw InputError("the tree has no trunk: the derived word draws no segment with a "
-                         "width above zero (it needs F, and a width from branch_width or !)");
-
     Stopwatch clock;
     MarchingCubesSettings settings;
     settings.resolution = tree.params.trunk_resolution;
     Box box = skeleton_bounds(out.skeleton);
     glm::vec3 extent = box.max - box.min;
     float cell = std::max({extent.x, extent.y, extent.z}) / static_cast<float>(settings.resolution);
+    std::vector<CappedCone> cones = resolvable_cones(out.skeleton, cell);
+    if (cones.empty())
+        throw InputError("the tree has no trunk: the derived word draws no segment with a "
+                         "width above zero (it needs F, and a width from branch_width or !)");
     ConeField field(std::move(cones), 2.0f * cell);
     out.trunk = marching_cubes(field, box, settings);
     out.times.trunk_mesh_ms = clock.lap_ms();

@@ -1,0 +1,74 @@
+// Derivation throughput: modules written per second, for a D0L grammar (ABOP Fig. 1.24a)
+// and a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), one thread.
+// Usage: sylva-bench-derive [repetitions]
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+using namespace sylva;
+
+struct Case {
+    const char* name;
+    std::string grammar;
+    int steps;
+};
+
+// Every module written by every step (what the engine actually produced).
+std::size_t modules_written(const LSystem& system, int steps) {
+    std::size_t total = 0;
+    for (int n = 1; n <= steps; ++n) {
+        DeriveSettings s;
+        s.steps = n;
+        s.max_modules = 100'000'000;
+        total += derive(system, s).size();
+    }
+    return total;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    const Case cases[] = {
+        {"D0L  F -> F[+F]F[-F]F (ABOP 1.24a)", "axiom: F\nF -> F[+F]F[-F]F\n", 9},
+        {"parametric Honda (ABOP 2.6)", R"(#define r1 0.9
+#define r2 0.6
+#define d 137.5
+#define wr 0.707
+axiom: A(1,10)
+A(l,w) : * -> !(w)F(l)[&(45)B(l*r2,w*wr)]/(d)A(l*r1,w*wr)
+B(l,w) : * -> !(w)F(l)[-(45)$C(l*r2,w*wr)]C(l*r1,w*wr)
+C(l,w) : * -> !(w)F(l)[+(45)$B(l*r2,w*wr)]B(l*r1,w*wr)
+)", 19},
+    };
+    std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
+    std::printf("%-38s %6s %12s %12s %10s\n", "grammar", "steps", "final size", "written",
+                "M modules/s");
+    for (const Case& c : cases) {
+        LSystem system = parse_lsystem(c.grammar);
+        std::size_t written = modules_written(system, c.steps);
+        double best = 1e30;
+        std::size_t size = 0;
+        for (int r = 0; r < repetitions; ++r) {
+            DeriveSettings s;
+            s.steps = c.steps;
+            s.max_modules = 100'000'000;
+            auto start = std::chrono::steady_clock::now();
+            size = derive(system, s).size();
+            double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            best = std::min(best, seconds);
+        }
+        // One derive of n steps writes the words of steps 1..n: `written` modules.
+        std::printf("%-38s %6d %12zu %12zu %10.1f\n", c.name, c.steps, size, written,
+                    static_cast<double>(written) / best / 1e6);
+    }
+    return 0;
+}
