@@ -21,6 +21,9 @@ namespace {
 using namespace sylva;
 
 constexpr int kOk = 0, kUsage = 2, kInvalidInput = 3, kIoError = 4;
+// Beyond the 15 generations of a tree, grammar experiments (ABOP Fig. 1.31a takes 30 steps)
+// may ask for more; growing words stop at the module cap long before this.
+constexpr int kMaxSteps = 1000;
 
 constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 
@@ -86,7 +89,8 @@ Options parse_options(int argc, char** argv) {
             o.seed = parse_integer<std::uint64_t>(arg, value());
         } else if (arg == "--steps") {
             o.steps = parse_integer<int>(arg, value());
-            if (*o.steps < 0) throw UsageError("--steps must be 0 or more");
+            if (*o.steps < 0 || *o.steps > kMaxSteps)
+                throw UsageError("--steps must be 0 to " + std::to_string(kMaxSteps));
         } else if (arg == "-o" || arg == "--output") {
             o.output = value();
         } else {

@@ -201,10 +201,11 @@ private:
         if (!open.empty()) line.fail("'[' is never closed", open.back());
     }
 
-    // Modules with parameter expressions, e.g. "F(l*r)[+A(1,2)]", in [begin, end).
-    std::vector<ModuleProduction> parse_productions(const Line& line, size_t begin, size_t end,
-                                                    const std::vector<std::string>& variables) {
-        std::vector<ModuleProduction> out;
+    // Walks the modules in [begin, end): calls on_module(symbol) for each, then
+    // on_argument(a, b) for every parameter text [a, b) inside its parentheses.
+    template <class OnModule, class OnArgument>
+    void for_each_module(const Line& line, size_t begin, size_t end, OnModule&& on_module,
+                         OnArgument&& on_argument) const {
         size_t i = begin;
         while (i < end) {
             char c = line.text[i];
@@ -213,17 +214,23 @@ private:
                 continue;
             }
             if (!valid_symbol(c)) line.fail("'" + std::string(1, c) + "' is not a symbol", i);
-            ModuleProduction module{c, {}};
+            on_module(c);
             ++i;
             if (i < end && line.text[i] == '(') {
                 size_t close = matching_paren(line, i, end);
-                for_each_argument(line, i + 1, close, [&](size_t a, size_t b) {
-                    module.args.push_back(compile(line, a, b, variables));
-                });
+                for_each_argument(line, i + 1, close, on_argument);
                 i = close + 1;
             }
-            out.push_back(std::move(module));
         }
+    }
+
+    // Modules with parameter expressions, e.g. "F(l*r)[+A(1,2)]", in [begin, end).
+    std::vector<ModuleProduction> parse_productions(const Line& line, size_t begin, size_t end,
+                                                    const std::vector<std::string>& variables) {
+        std::vector<ModuleProduction> out;
+        for_each_module(
+            line, begin, end, [&](char symbol) { out.push_back({symbol, {}}); },
+            [&](size_t a, size_t b) { out.back().args.push_back(compile(line, a, b, variables)); });
         return out;
     }
 
@@ -231,34 +238,19 @@ private:
     std::vector<ModulePattern> parse_patterns(const Line& line, size_t begin, size_t end,
                                               std::vector<std::string>& variables) {
         std::vector<ModulePattern> out;
-        size_t i = begin;
-        while (i < end) {
-            char c = line.text[i];
-            if (is_space(c)) {
-                ++i;
-                continue;
-            }
-            if (!valid_symbol(c)) line.fail("'" + std::string(1, c) + "' is not a symbol", i);
-            ModulePattern pattern{c, 0};
-            ++i;
-            if (i < end && line.text[i] == '(') {
-                size_t close = matching_paren(line, i, end);
-                for_each_argument(line, i + 1, close, [&](size_t a, size_t b) {
-                    std::string_view name = trim(line.text.substr(a, b - a));
-                    bool ok = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
-                                                name[0] == '_');
-                    for (char n : name)
-                        ok = ok && (std::isalnum(static_cast<unsigned char>(n)) || n == '_');
-                    if (!ok) line.fail("a parameter of a rule's left side must be a name", a);
-                    if (std::find(variables.begin(), variables.end(), name) != variables.end())
-                        line.fail("parameter '" + std::string(name) + "' is named twice", a);
-                    variables.emplace_back(name);
-                    ++pattern.arity;
-                });
-                i = close + 1;
-            }
-            out.push_back(pattern);
-        }
+        for_each_module(
+            line, begin, end, [&](char symbol) { out.push_back({symbol, 0}); },
+            [&](size_t a, size_t b) {
+                std::string_view name = trim(line.text.substr(a, b - a));
+                bool ok = !name.empty() &&
+                          (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+                for (char n : name) ok = ok && (std::isalnum(static_cast<unsigned char>(n)) || n == '_');
+                if (!ok) line.fail("a parameter of a rule's left side must be a name", a);
+                if (std::find(variables.begin(), variables.end(), name) != variables.end())
+                    line.fail("parameter '" + std::string(name) + "' is named twice", a);
+                variables.emplace_back(name);
+                ++out.back().arity;
+            });
         return out;
     }
 

@@ -1,5 +1,6 @@
 // Grammars from ABOP (Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants),
 // checked against independent computations rather than against Sylva's own output.
+#include "derive_text.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_parser.h"
 #include "turtle/turtle.h"
@@ -11,13 +12,6 @@
 
 namespace sylva {
 namespace {
-
-Word derive_text(const std::string& grammar, int steps, std::uint64_t seed = 1) {
-    DeriveSettings settings;
-    settings.steps = steps;
-    settings.seed = seed;
-    return derive(parse_lsystem(grammar), settings);
-}
 
 // Word length after n steps of a D0L system by Parikh vectors: count symbols, never build
 // the word. rules maps a symbol to its successor; other symbols map to themselves.

@@ -1,5 +1,6 @@
 // L-system parsing and derivation: known words from ABOP and seed 001, errors that name
 // their place, and the size cap.
+#include "derive_text.h"
 #include "turtle/derivation.h"
 #include "turtle/grammar_error.h"
 #include "turtle/lsystem_parser.h"
@@ -10,13 +11,6 @@
 
 namespace sylva {
 namespace {
-
-Word derive_text(const std::string& grammar, int steps, std::uint64_t seed = 1) {
-    DeriveSettings settings;
-    settings.steps = steps;
-    settings.seed = seed;
-    return derive(parse_lsystem(grammar), settings);
-}
 
 TEST(LSystem, AbopFigure124aWordLength) {
     Word w = derive_text("axiom: F\nF -> F[+F]F[-F]F\n", 5);
@@ -53,6 +47,14 @@ TEST(LSystem, DefinesAndFunctions) {
                          "A(x) -> A(max(x*r, 3) + sqrt(4) - abs(-1) + floor(0.7))\n",
                          2);
     EXPECT_EQ(w.to_string(), "A(4)");  // 8 -> max(4,3)+2-1+0 = 5 -> max(2.5,3)+2-1+0 = 4
+}
+
+TEST(LSystem, SuppliedConstantsAndDefinesOverridingThem) {
+    DeriveSettings d;
+    d.steps = 0;
+    EXPECT_EQ(derive(parse_lsystem("axiom: F(k*2)\n", {{"k", 1.5}}), d).to_string(), "F(3)");
+    EXPECT_EQ(derive(parse_lsystem("#define k 4\naxiom: F(k)\n", {{"k", 1.5}}), d).to_string(),
+              "F(4)");
 }
 
 TEST(LSystem, AcropetalSignalWithLeftContext) {

@@ -141,3 +141,25 @@ TEST(PipeModel, MurraysLawAtEveryFork) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+TEST(Tropism, BendsBranchesTowardsTheTropismVector) {
+    TurtleSettings settings;
+    settings.elasticity = 0.2;  // towards T = (0,-1,0), gravity
+    Skeleton s = draw("+(90)FFFFFF", settings);
+    ASSERT_EQ(s.segments.size(), 6u);
+    float previous_slope = 0.0f;
+    for (const Segment& seg : s.segments) {
+        glm::vec3 d = glm::normalize(seg.b - seg.a);
+        EXPECT_LT(d.y, previous_slope + 1e-6f) << "each segment points further down";
+        previous_slope = d.y;
+    }
+    EXPECT_LT(previous_slope, -0.5f);
+    // Without elasticity the branch stays horizontal.
+    EXPECT_NEAR(draw("+(90)FFFFFF").segments.back().b.y, 0.0f, 1e-5);
+}
+
+}  // namespace
+}  // namespace sylva

@@ -1,0 +1,18 @@
+// Test helper: derive a grammar given as text.
+#pragma once
+
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
+
+#include <string>
+
+namespace sylva {
+
+inline Word derive_text(const std::string& grammar, int steps, std::uint64_t seed = 1) {
+    DeriveSettings settings;
+    settings.steps = steps;
+    settings.seed = seed;
+    return derive(parse_lsystem(grammar), settings);
+}
+
+}  // namespace sylva
