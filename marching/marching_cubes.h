@@ -8,17 +8,49 @@
 
 #include "marching/mesh.h"
 
+#include <atomic>
+#include <cstddef>
 #include <functional>
+#include <span>
 
 namespace sylva {
 
+// A field evaluated one point at a time (convenient for tests and simple shapes).
 using ScalarField = std::function<float(const glm::vec3&)>;
+
+// A field evaluated in batches: values[i] = f(points[i]); both spans have the same size.
+// Called concurrently from several threads: it must be thread-safe.
+using BatchField = std::function<void(std::span<const glm::vec3> points, std::span<float> values)>;
+
+// Thrown by the meshers when MarchingCubesSettings::cancel became true.
+struct MeshingCancelled {};
+
+enum class Mesher {
+    Dense,   // every grid node evaluated, in parallel slabs
+    Sparse,  // blocks that provably hold no surface are skipped (needs a distance bound)
+    Vdb,     // OpenVDB narrow-band level set + tools::volumeToMesh (marching/vdb_mesher.h)
+};
+
+// Counters a benchmark or a status bar can show.
+struct MeshingStats {
+    std::size_t evaluations = 0;     // field samples taken
+    std::size_t blocks_total = 0;    // Sparse: blocks in the grid
+    std::size_t blocks_meshed = 0;   // Sparse: blocks whose nodes were all evaluated
+};
 
 struct MarchingCubesSettings {
     // Cells along the longest side of the box (seed 001: P_Tres / P_Cres, 10-200).
     int resolution = 64;
     // Extra empty cells added on every side so the surface is never clipped by the box.
     int padding_cells = 2;
+    // Worker threads; 0 = all cores (oneTBB's default arena).
+    int threads = 0;
+    // Called now and then with the finished fraction in [0, 1], from any thread.
+    std::function<void(float)> progress;
+    // Polled between blocks; when it becomes true the mesher throws MeshingCancelled.
+    const std::atomic<bool>* cancel = nullptr;
+    // Filled in when not null.
+    MeshingStats* stats = nullptr;
 };
 
 // Meshes the zero level set of `field` inside `box` (grown by the padding).
@@ -42,5 +74,14 @@ struct MarchingCubesSettings {
 // Throws std::invalid_argument when resolution < 1, padding_cells < 0, or the box is empty
 // (no positive side) or not finite.
 Mesh marching_cubes(const ScalarField& field, const Box& box, const MarchingCubesSettings& settings);
+Mesh marching_cubes(const BatchField& field, const Box& box, const MarchingCubesSettings& settings);
+
+// The same grid, vertices and triangles as marching_cubes(), but a block of cells is only
+// evaluated when the field value at its centre does not prove it empty: |f(centre)| greater
+// than the block's half-diagonal means no sign change inside (the field must be
+// 1-Lipschitz: a distance or a distance bound). Cost grows with the surface's area, not
+// the box's volume. The mesh equals the dense one: same vertices, same triangles.
+Mesh sparse_marching_cubes(const BatchField& field, const Box& box,
+                           const MarchingCubesSettings& settings);
 
 }  // namespace sylva

@@ -25,7 +25,7 @@ public:
         Word next;
         for (int step = 1; step <= settings_.steps; ++step) {
             if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
-                throw Cancelled{};
+                throw DerivationCancelled{};
             if (has_context_) match_brackets(word);
             next.clear();
             next.reserve(word.size() * 2, word.param_count() * 2);

@@ -16,10 +16,10 @@ struct DeriveSettings {
     std::uint64_t seed = 1;
     // Derivation fails with a GrammarError naming the step once the word grows past this.
     std::size_t max_modules = 4'000'000;
-    const std::atomic<bool>* cancel = nullptr;  // checked between steps; throws Cancelled
+    const std::atomic<bool>* cancel = nullptr;  // checked between steps; throws DerivationCancelled
 };
 
-struct Cancelled {};
+struct DerivationCancelled {};
 
 // The axiom as a word (its expressions evaluated; rand() draws from `random`).
 Word axiom_word(const LSystem& system, Random& random);
