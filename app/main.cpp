@@ -28,7 +28,7 @@ constexpr int kMaxSteps = 1000;
 constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 
 Usage:
-  sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o OUT.obj
+  sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--mesher KIND] -o OUT.obj
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva templates
@@ -39,6 +39,9 @@ Usage:
   --set KEY=VALUE  override a parameter (keys below); may be repeated
   --seed N         seed of stochastic rules and rand() (default 1)
   --steps N        derivation steps (default: the template's generations)
+  --mesher KIND    sparse (default: skips empty space), dense (every grid node), or vdb
+                   (OpenVDB narrow band + volumeToMesh)
+  --adaptivity A   vdb mesher only: 0 (uniform, default) to 1 (merge flat regions)
   -o PATH          output file; written to a temporary file, then renamed
 
 Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
@@ -57,6 +60,7 @@ struct Options {
     std::optional<std::uint64_t> seed;
     std::optional<int> steps;
     std::string output;
+    MeshOptions mesh;
 };
 
 template <class T>
@@ -91,6 +95,18 @@ Options parse_options(int argc, char** argv) {
             o.steps = parse_integer<int>(arg, value());
             if (*o.steps < 0 || *o.steps > kMaxSteps)
                 throw UsageError("--steps must be 0 to " + std::to_string(kMaxSteps));
+        } else if (arg == "--mesher") {
+            std::string name = value();
+            std::optional<Mesher> mesher = mesher_from_name(name);
+            if (!mesher) throw UsageError("--mesher expects dense, sparse or vdb, not '" + name + "'");
+            o.mesh.mesher = *mesher;
+        } else if (arg == "--adaptivity") {
+            std::string text = value();
+            double a = -1.0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), a);
+            if (error != std::errc() || end != text.data() + text.size() || !(a >= 0.0 && a <= 1.0))
+                throw UsageError("--adaptivity expects a number from 0 to 1, not '" + text + "'");
+            o.mesh.vdb_adaptivity = a;
         } else if (arg == "-o" || arg == "--output") {
             o.output = value();
         } else {
@@ -120,15 +136,24 @@ int run_export(const Options& o) {
     std::string ext = std::filesystem::path(o.output).extension().string();
     if (ext != ".obj")
         throw UsageError("unsupported output format '" + ext + "': this version writes .obj");
-    Tree tree = generate_tree(configured_template(o));
-    write_obj(o.output, {{"trunk", &tree.trunk}});
-    MeshTopology topology = check_topology(tree.trunk);
-    std::printf("wrote %s\n  trunk: %zu triangles, %zu vertices, %s\n  skeleton: %zu segments\n"
-                "  time: derive %.1f ms, turtle %.1f ms, trunk mesh %.1f ms\n",
-                o.output.c_str(), tree.trunk.triangles.size(), tree.trunk.positions.size(),
-                topology.is_closed_manifold() ? "closed" : "NOT closed",
-                tree.skeleton.segments.size(), tree.times.derive_ms, tree.times.turtle_ms,
-                tree.times.trunk_mesh_ms);
+    Tree tree = generate_tree(configured_template(o), o.mesh);
+    std::vector<NamedMesh> parts = {{"trunk", &tree.trunk}};
+    if (!tree.crown.triangles.empty()) parts.push_back({"crown", &tree.crown});
+    if (!tree.leaves.triangles.empty()) parts.push_back({"leaves", &tree.leaves});
+    write_obj(o.output, parts);
+    std::printf("wrote %s\n", o.output.c_str());
+    for (const NamedMesh& part : parts) {
+        // Leaves are open quads by design; the solid parts must be closed.
+        const char* state = part.name == "leaves" ? "open by design"
+                            : check_topology(*part.mesh).is_closed_manifold() ? "closed"
+                                                                              : "NOT closed";
+        std::printf("  %-6s %zu triangles, %zu vertices, %s\n", part.name.c_str(),
+                    part.mesh->triangles.size(), part.mesh->positions.size(), state);
+    }
+    std::printf("  skeleton: %zu segments, %zu tips\n"
+                "  time: derive %.1f ms, turtle %.1f ms, trunk mesh %.1f ms, crown mesh %.1f ms\n",
+                tree.skeleton.segments.size(), tips(tree.skeleton).size(), tree.times.derive_ms,
+                tree.times.turtle_ms, tree.times.trunk_mesh_ms, tree.times.crown_mesh_ms);
     return kOk;
 }
 

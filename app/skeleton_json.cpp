@@ -30,7 +30,7 @@ std::string skeleton_json(const Skeleton& skeleton, const TreeParams& params) {
     }
     doc["tips"] = tips(skeleton);
     nlohmann::json& spheres = doc["crown_spheres"] = nlohmann::json::array();
-    for (const Sphere& s : crown_spheres(skeleton, params))
+    for (const Ball& s : crown_spheres(skeleton, params))
         spheres.push_back({{"c", point(s.center)}, {"r", s.radius}});
     nlohmann::json& polygons = doc["polygons"] = nlohmann::json::array();
     for (const auto& polygon : skeleton.polygons) {

@@ -1,7 +1,9 @@
 #include "app/template_library.h"
 
 #include "app/errors.h"
+#include "app/template_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -10,7 +12,39 @@
 
 namespace sylva {
 
+// Generated from templates/*.toml (app/CMakeLists.txt).
+const std::vector<std::pair<std::string_view, std::string_view>>& builtin_template_texts();
+
+namespace {
+
+constexpr std::string_view kDefaultName = "oak";
+
+std::vector<TreeTemplate> parse_builtins() {
+    std::vector<TreeTemplate> all;
+    for (const auto& [file, text] : builtin_template_texts())
+        all.push_back(parse_template_file(text, "templates/" + std::string(file)));
+    // The default first, the rest in file-name order.
+    std::stable_partition(all.begin(), all.end(),
+                          [](const TreeTemplate& t) { return t.name == kDefaultName; });
+    return all;
+}
+
+}  // namespace
+
+const std::vector<const TreeTemplate*>& builtin_templates() {
+    static const std::vector<TreeTemplate> parsed = parse_builtins();
+    static const std::vector<const TreeTemplate*> all = [] {
+        std::vector<const TreeTemplate*> out;
+        for (const TreeTemplate& t : parsed) out.push_back(&t);
+        return out;
+    }();
+    return all;
+}
+
+const TreeTemplate& default_template() { return *builtin_templates().front(); }
+
 TreeTemplate load_template(const std::string& name_or_path) {
+    if (name_or_path == "default") return default_template();
     for (const TreeTemplate* t : builtin_templates())
         if (t->name == name_or_path) return *t;
     std::error_code ec;
@@ -26,6 +60,9 @@ TreeTemplate load_template(const std::string& name_or_path) {
     if (!in) throw IoError("cannot read '" + name_or_path + "': " + std::strerror(errno));
     std::ostringstream text;
     text << in.rdbuf();
+    if (std::filesystem::path(name_or_path).extension() == ".toml")
+        return parse_template_file(text.str(), name_or_path);
+    // A bare grammar file: parameters take their defaults.
     TreeTemplate t;
     t.name = std::filesystem::path(name_or_path).stem().string();
     t.description = "grammar file " + name_or_path;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,8 +26,19 @@ struct TreeParams {
     double tropism = 0.0;          // elasticity e of the bend towards gravity (ABOP)
     double tip_width = 0.02;       // pipe width model: diameter at the tips, meters
     double pipe_exponent = 2.5;    // pipe width model: Murray's exponent g
+    double joint_blend = 0.0;      // trunk joints: smooth-union radius, meters (0 = hard union)
+    int crown_blend = 0;           // CrownBlend: how crown spheres fuse
+    int crown_mesh = 1;            // 1: mesh the crown; 0: leaves only (seed 001, B.6)
+    double leaf_density = 60.0;    // leaves per cubic meter of crown
+    double leaf_size = 0.25;       // leaf length, meters
+    int leaf_shape = 0;            // LeafShape
     std::uint64_t seed = 1;
 };
+
+// Choices of the `crown_blend` parameter.
+enum class CrownBlend { Root = 0, Pasko = 1 };
+// Choices of the `leaf_shape` parameter.
+enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
 
 // One parameter's key, meaning and valid range, for --set, sliders and validation.
 struct ParamInfo {
@@ -35,6 +47,8 @@ struct ParamInfo {
     double min;
     double max;
     bool integer;
+    // For a choice parameter: the names of its values 0, 1, ... (empty for numbers).
+    std::span<const std::string_view> choices = {};
 };
 
 const std::vector<ParamInfo>& param_infos();
@@ -42,9 +56,15 @@ const std::vector<ParamInfo>& param_infos();
 // Value of a parameter by key, as double (integers included). nullopt for an unknown key.
 std::optional<double> get_param(const TreeParams& params, std::string_view key);
 
-// Sets a parameter from text ("key=value" style input). Throws InputError naming the key
-// and its range for an unknown key, a non-number, NaN/inf, an out-of-range value or a
-// fraction given for an integer parameter.
+// Sets a parameter from text ("key=value" style input); a choice parameter takes a name of
+// its choices or its index. Throws InputError naming the key and its range for an unknown
+// key, a non-number, NaN/inf, an out-of-range value or a fraction for an integer parameter.
 void set_param(TreeParams& params, std::string_view key, std::string_view value);
+
+// Sets a parameter from a number, with the same checks as set_param.
+void set_param(TreeParams& params, std::string_view key, double value);
+
+// Text of a parameter's value: a number, or a choice's name.
+std::string param_text(const TreeParams& params, const ParamInfo& info);
 
 }  // namespace sylva

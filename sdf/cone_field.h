@@ -1,22 +1,28 @@
-// The union of many capped cones as one field, evaluated fast: cones are binned into a
-// uniform grid by their bounding boxes inflated by `margin`, so a sample only sees the
-// cones near it.
+// The union of many capped cones (the trunk) as one field, evaluated fast: cones are
+// binned by their bounding boxes inflated by `margin` (bin_grid.h), so a sample only sees
+// the cones near it.
 //
-// Contract: where the true union distance d is below `margin`, the value is exact; elsewhere
-// it is some value >= margin (never wrong in sign). Marching cubes only needs exact values
-// within a cell of the surface, so margin = 2 cells suffices.
+// Contract: where the true union distance d is below `margin`, the value is exact;
+// elsewhere it is some value >= margin. It stays 1-Lipschitz (a minimum of distances and
+// a constant), so meshers may skip empty space: choose margin >= the largest block
+// half-diagonal they test.
 #pragma once
 
+#include "sdf/bin_grid.h"
 #include "sdf/capped_cone.h"
 
-#include <cstdint>
 #include <vector>
 
 namespace sylva {
 
+// IQ's quadratic smooth minimum: min(a, b) lowered by up to k/4 where |a - b| < k, exactly
+// min(a, b) elsewhere (so culling stays exact), and 1-Lipschitz (a convex gradient blend).
+float polynomial_smooth_min(float a, float b, float k);
+
 class ConeField {
 public:
-    ConeField(std::vector<CappedCone> cones, float margin);
+    // joint_blend > 0 rounds the joints with polynomial_smooth_min of that radius.
+    ConeField(std::vector<CappedCone> cones, float margin, float joint_blend = 0.0f);
 
     float operator()(const glm::vec3& p) const;
 
@@ -25,11 +31,8 @@ public:
 private:
     std::vector<CappedCone> cones_;
     float margin_;
-    glm::vec3 origin_{0.0f};
-    float bin_size_ = 1.0f;
-    glm::ivec3 dims_{0};
-    std::vector<std::uint32_t> bin_start_;  // CSR: cones of bin b are
-    std::vector<std::uint32_t> bin_cones_;  // bin_cones_[bin_start_[b] .. bin_start_[b+1])
+    float joint_blend_;
+    BinGrid bins_;
 };
 
 }  // namespace sylva

@@ -93,7 +93,8 @@ TEST_F(Cli, DeriveAndTemplates) {
     EXPECT_EQ(r.output, "F[+F]F[-F]F[+F[+F]F[-F]F]F[+F]F[-F]F[-F[+F]F[-F]F]F[+F]F[-F]F\n");
     Result list = run("templates");
     EXPECT_EQ(list.code, 0);
-    EXPECT_EQ(list.output.rfind("default", 0), 0u) << list.output;
+    EXPECT_EQ(list.output.rfind("oak\t", 0), 0u) << "the default tree first: " << list.output;
+    EXPECT_NE(list.output.find("spruce\t"), std::string::npos);
 }
 
 TEST_F(Cli, SkeletonJson) {

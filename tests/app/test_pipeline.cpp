@@ -163,7 +163,8 @@ TEST(Export, AFailedWriteKeepsThePreviousFile) {
 }
 
 TEST(Templates, NamesFilesAndUnknowns) {
-    EXPECT_EQ(load_template("default").name, "default");
+    EXPECT_EQ(load_template("default").name, default_template().name);
+    EXPECT_EQ(load_template("spruce").name, "spruce");
     EXPECT_THROW(load_template("no-such-tree"), InputError);
     fs::path dir = temp_dir();
     fs::path grammar = dir / "bush.lsys";

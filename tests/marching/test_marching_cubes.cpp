@@ -8,10 +8,12 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "marching/marching_cubes.h"
@@ -190,6 +192,63 @@ TEST(MarchingCubes, EvaluatesEachGridNodeOnce) {
     // 16 + 4 cells along x, ceil(1.7 / 0.125) + 4 along y, 8 + 4 along z.
     EXPECT_EQ(run.grid_nodes, std::size_t(21 * 19 * 13));
     expect_closed_manifold(run.mesh);
+}
+
+TEST(MarchingCubes, BatchFieldEvaluatesEachNodeOnceAcrossThreads) {
+    const Box box{glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 0.7f, 0.5f)};
+    for (const int threads : {1, 2, 0}) {
+        SCOPED_TRACE("threads " + std::to_string(threads));
+        std::mutex mutex;
+        std::vector<std::array<float, 3>> points;
+        const BatchField field = [&](std::span<const glm::vec3> p, std::span<float> v) {
+            ASSERT_EQ(p.size(), v.size());
+            for (std::size_t i = 0; i < p.size(); ++i) v[i] = glm::length(p[i]) - 0.45f;
+            std::lock_guard lock(mutex);
+            for (const auto& q : p) points.push_back({q.x, q.y, q.z});
+        };
+        MarchingCubesSettings s = settings(37);
+        s.threads = threads;
+        MeshingStats stats;
+        s.stats = &stats;
+        const Mesh mesh = marching_cubes(field, box, s);
+        expect_closed_manifold(mesh);
+        const std::size_t evaluated = points.size();
+        std::sort(points.begin(), points.end());
+        EXPECT_EQ(std::unique(points.begin(), points.end()) - points.begin(),
+                  std::ptrdiff_t(evaluated));
+        // Nodes = cells + 1: 37 + 4 cells along x, ceil(1.7 * 37 / 2) + 4 along y and
+        // ceil(37 / 2) + 4 along z.
+        EXPECT_EQ(evaluated, std::size_t(42 * 37 * 24));
+        EXPECT_EQ(stats.evaluations, evaluated);
+    }
+}
+
+TEST(MarchingCubes, ScalarFieldRunsOnTheCallingThread) {
+    // The ScalarField overload makes no thread-safety demand on the field.
+    const std::thread::id caller = std::this_thread::get_id();
+    std::size_t elsewhere = 0;
+    const ScalarField field = [&](const glm::vec3& p) {
+        elsewhere += std::this_thread::get_id() != caller;
+        return glm::length(p) - 0.7f;
+    };
+    MarchingCubesSettings s = settings(64);
+    s.threads = 2;
+    expect_closed_manifold(marching_cubes(field, cube(1.0f), s));
+    EXPECT_EQ(elsewhere, 0u);
+}
+
+TEST(MarchingCubes, ScalarAndBatchFieldsGiveTheSameMesh) {
+    const ScalarField scalar =
+        unite(sphere({-0.4f, 0.0f, 0.0f}, 0.5f), sphere({0.4f, 0.1f, 0.0f}, 0.45f));
+    const BatchField batch = [&](std::span<const glm::vec3> p, std::span<float> v) {
+        for (std::size_t i = 0; i < p.size(); ++i) v[i] = scalar(p[i]);
+    };
+    const Mesh a = marching_cubes(scalar, cube(1.0f), settings(45));
+    const Mesh b = marching_cubes(batch, cube(1.0f), settings(45));
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    ASSERT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(0, std::memcmp(a.positions.data(), b.positions.data(),
+                             a.positions.size() * sizeof(glm::vec3)));
 }
 
 TEST(MarchingCubes, SameInputGivesSameMesh) {

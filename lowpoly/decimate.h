@@ -1,0 +1,65 @@
+// Low poly for real: quadric error decimation (Garland-Heckbert, halfedge collapses on
+// OpenMesh's Decimater) of closed meshes down to a triangle budget, keeping every part a
+// closed, consistently oriented 2-manifold. OpenMesh stays inside the .cpp; callers see
+// sylva::Mesh only.
+#pragma once
+
+#include "marching/mesh.h"
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sylva {
+
+struct DecimateSettings {
+    // Triangle budget over all the parts reduced together. They share it: one priority
+    // queue of collapses ordered by quadric error decides where the triangles go, so a
+    // thin trunk gives up triangles before a round crown does. For a budget per part,
+    // call decimate() once per part.
+    std::size_t max_triangles = 800;
+    // Guard against fold-overs: no collapse may turn a remaining triangle's normal by
+    // more than this many degrees (OpenMesh's normal-flip module uses 90).
+    double max_normal_turn_degrees = 75.0;
+    // Called with the finished fraction (0..1) from the calling thread.
+    std::function<void(float)> progress;
+    // Polled every few hundred collapses; when it becomes true, decimate() throws
+    // DecimationCancelled.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+struct DecimationCancelled : std::runtime_error {
+    DecimationCancelled() : std::runtime_error("decimation cancelled") {}
+};
+
+struct DecimateResult {
+    std::vector<Mesh> parts;      // in the order given; each a closed 2-manifold
+    std::size_t triangles = 0;    // over all parts
+    bool within_budget = false;   // triangles <= max_triangles
+    // How often a reduction was redone with fewer collapses because a part failed
+    // check_topology (marching/mesh_checks.h). 0 in every case seen so far: OpenMesh's
+    // link condition and the guards keep the manifold; the back-off is the safety net.
+    int backoffs = 0;
+    // Empty, or a sentence for people: why the budget was missed, or what was backed off.
+    std::string note;
+};
+
+// Reduces the parts together to settings.max_triangles (or as close as the guards allow:
+// each closed piece needs at least 4 triangles, and handles need more).
+//
+// Preconditions: every non-empty part is a closed 2-manifold by check_topology; otherwise
+// throws std::invalid_argument naming the part and what is wrong. Empty parts stay empty.
+// Guarantee: every returned part is a closed 2-manifold with the input's orientation; when
+// a reduction breaks that, it is redone with fewer collapses, down to returning the input.
+// Deterministic: the same input gives the same output. Not thread-safe on shared settings
+// callbacks; otherwise reentrant (no global state).
+DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings);
+
+// One mesh: the same, with result.parts.size() == 1.
+DecimateResult decimate(const Mesh& mesh, const DecimateSettings& settings);
+
+}  // namespace sylva

@@ -1,0 +1,14 @@
+// Several meshes as one (indices shifted, nothing welded): how the trunk and the crown are
+// measured together against a reference tree.
+#pragma once
+
+#include "marching/mesh.h"
+
+#include <span>
+
+namespace sylva {
+
+// Null pointers and empty meshes are skipped.
+Mesh merge_meshes(std::span<const Mesh* const> meshes);
+
+}  // namespace sylva

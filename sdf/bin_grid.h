@@ -1,0 +1,38 @@
+// A uniform grid of bins over a set of axis-aligned boxes: each bin lists the boxes that
+// overlap it, so a query point only visits the primitives whose (inflated) box holds it.
+// The culling structure behind the fast fields (cone_field.h, sphere_field.h).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace sylva {
+
+struct Aabb {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+};
+
+class BinGrid {
+public:
+    BinGrid() = default;
+    // About `bins_along_longest` bins along the longest side of all boxes together, but no
+    // bin smaller than `min_bin_size` (smaller bins would repeat boxes without culling more).
+    BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest = 64);
+
+    // Indices of the boxes whose bin holds p (a superset of the boxes containing p), in
+    // increasing order; empty outside every box.
+    std::span<const std::uint32_t> candidates(const glm::vec3& p) const;
+
+private:
+    glm::vec3 origin_{0.0f};
+    float bin_size_ = 1.0f;
+    glm::ivec3 dims_{0};
+    std::vector<std::uint32_t> bin_start_;  // CSR: boxes of bin b are
+    std::vector<std::uint32_t> bin_items_;  // bin_items_[bin_start_[b] .. bin_start_[b+1])
+};
+
+}  // namespace sylva

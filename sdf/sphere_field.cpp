@@ -1,0 +1,57 @@
+#include "sdf/sphere_field.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sylva {
+
+float distance(const Ball& ball, const glm::vec3& p) {
+    return glm::length(p - ball.center) - ball.radius;
+}
+
+float root_smooth_min(float a, float b, float k) {
+    float x = a - b;
+    return 0.5f * (a + b - std::sqrt(x * x + k * k));
+}
+
+float local_root_smooth_min(float a, float b, float k) {
+    float x = std::abs(a - b);
+    if (x >= 4.0f * k) return std::min(a, b);
+    // Smoothstep from 1 at 2k to 0 at 4k: its slope (at most 0.75 / k) keeps the blend
+    // 1-Lipschitz (d/dx sqrt(x^2 + w^2) = (x + w w') / sqrt(...) stays within [-1, 1]).
+    float t = std::clamp((x - 2.0f * k) / (2.0f * k), 0.0f, 1.0f);
+    float w = k * (1.0f - t * t * (3.0f - 2.0f * t));
+    return 0.5f * (a + b - std::sqrt(x * x + w * w));
+}
+
+float pasko_savchenko_union(float a, float b, float alpha) {
+    return (a + b - std::sqrt(std::max(a * a + b * b - 2.0f * alpha * a * b, 0.0f))) /
+           (1.0f + alpha);
+}
+
+SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, SphereBlend kind)
+    : balls_(std::move(balls)), blend_(blend), margin_(margin), kind_(kind) {
+    std::vector<Aabb> boxes;
+    boxes.reserve(balls_.size());
+    for (const Ball& b : balls_) {
+        glm::vec3 r(b.radius + margin_);
+        boxes.push_back({b.center - r, b.center + r});
+    }
+    bins_ = BinGrid(boxes, margin_);
+}
+
+float SphereField::operator()(const glm::vec3& p) const {
+    auto near = bins_.candidates(p);
+    if (near.empty()) return margin_;
+    float d = distance(balls_[near[0]], p);
+    for (size_t i = 1; i < near.size(); ++i) {
+        float next = distance(balls_[near[i]], p);
+        if (kind_ == SphereBlend::PaskoSavchenko) d = pasko_savchenko_union(d, next, blend_);
+        else d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
+    }
+    return std::min(d, margin_);
+}
+
+}  // namespace sylva

@@ -1,0 +1,69 @@
+// The crown: spheres joined by seed 001's smooth union ("root smooth min" after Inigo
+// Quilez), evaluated fast through a bin grid like the trunk's cones.
+//
+// root_smooth_min(a, b, k) = (a + b - sqrt((a - b)^2 + k^2)) / 2 lies below min(a, b) by at
+// most k/2 (where a == b) and blends the two gradients convexly, so it stays 1-Lipschitz.
+// Its reach is unbounded, though: a sphere far away still lowers the value by about
+// k^2 / (4 |a - b|), so which spheres a sample sees would show as jumps in the field. The
+// crown therefore fades the blend width out between |a - b| = 2k and 4k
+// (local_root_smooth_min): identical to the seed's blend where spheres meet, exactly min
+// farther away, still 1-Lipschitz, and spheres beyond the margin cannot matter.
+#pragma once
+
+#include "sdf/bin_grid.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace sylva {
+
+struct Ball {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+
+float distance(const Ball& ball, const glm::vec3& p);
+
+// How the spheres fuse.
+enum class SphereBlend {
+    RootSmoothMin,   // seed 001's choice; 1-Lipschitz (see above)
+    PaskoSavchenko,  // seed 001, eq. 2.13: (a + b - sqrt(a^2 + b^2 - 2 alpha a b)) / (1 + alpha)
+};
+
+// Seed 001's equation 2.13 on signed distances (negative inside): alpha = 1 is the hard
+// union, smaller alpha blends more. Not a distance bound: it can steepen the field up to
+// (2 + sqrt(2 (1 - alpha))) / (1 + alpha) times, so meshers must not skip space with it.
+float pasko_savchenko_union(float a, float b, float alpha);
+
+float root_smooth_min(float a, float b, float k);
+
+// root_smooth_min with the blend width faded to 0 between |a - b| = 2k and 4k.
+float local_root_smooth_min(float a, float b, float k);
+
+class SphereField {
+public:
+    // blend = k of root_smooth_min (seed 001: P_Cfus), or alpha of the Pasko-Savchenko
+    // union; blend 0 with RootSmoothMin gives the hard union.
+    SphereField(std::vector<Ball> balls, float blend, float margin,
+                SphereBlend kind = SphereBlend::RootSmoothMin);
+
+    // The smooth union of all spheres where it is below margin - 4 * blend; some value
+    // >= margin - 4 * blend elsewhere, capped at margin. 1-Lipschitz below that level, so
+    // meshers may skip blocks whose half-diagonal is below margin - 4 * blend.
+    float operator()(const glm::vec3& p) const;
+
+    const std::vector<Ball>& balls() const { return balls_; }
+    float blend() const { return blend_; }
+    // True when the field is 1-Lipschitz (below margin - 4 blend), so space may be skipped.
+    bool is_distance_bound() const { return kind_ == SphereBlend::RootSmoothMin; }
+
+private:
+    std::vector<Ball> balls_;
+    float blend_;
+    float margin_;
+    SphereBlend kind_;
+    BinGrid bins_;
+};
+
+}  // namespace sylva

@@ -1,0 +1,174 @@
+#include <gtest/gtest.h>
+
+#include "lowpoly/decimate.h"
+#include "lowpoly/fidelity.h"
+#include "marching/marching_cubes.h"
+#include "marching/mesh_checks.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace sylva {
+namespace {
+
+Mesh sphere(int resolution, glm::vec3 center = glm::vec3(0.0f), float radius = 1.0f) {
+    ScalarField f = [=](const glm::vec3& p) { return glm::length(p - center) - radius; };
+    MarchingCubesSettings s;
+    s.resolution = resolution;
+    return marching_cubes(f, Box{center - glm::vec3(radius), center + glm::vec3(radius)}, s);
+}
+
+// A torus (genus 1) around the Y axis.
+Mesh torus(int resolution) {
+    ScalarField f = [](const glm::vec3& p) {
+        const float q = std::sqrt(p.x * p.x + p.z * p.z) - 1.0f;
+        return std::sqrt(q * q + p.y * p.y) - 0.35f;
+    };
+    MarchingCubesSettings s;
+    s.resolution = resolution;
+    return marching_cubes(f, Box{glm::vec3(-1.4f, -0.4f, -1.4f), glm::vec3(1.4f, 0.4f, 1.4f)}, s);
+}
+
+DecimateSettings budget(std::size_t triangles) {
+    DecimateSettings s;
+    s.max_triangles = triangles;
+    return s;
+}
+
+TEST(Decimate, SphereStaysClosedAndHitsEveryBudget) {
+    const Mesh input = sphere(48);
+    ASSERT_TRUE(check_topology(input).is_closed_manifold());
+    ASSERT_GT(input.triangles.size(), 10000u);
+    for (std::size_t target : {50u, 100u, 200u, 400u, 800u}) {
+        SCOPED_TRACE(target);
+        const DecimateResult r = decimate(input, budget(target));
+        ASSERT_EQ(r.parts.size(), 1u);
+        const Mesh& m = r.parts[0];
+        EXPECT_TRUE(check_topology(m).is_closed_manifold());
+        EXPECT_TRUE(r.within_budget) << r.note;
+        // A halfedge collapse removes two triangles: the budget or one below it.
+        EXPECT_LE(m.triangles.size(), target);
+        EXPECT_GE(m.triangles.size(), target - 2);
+        EXPECT_EQ(r.triangles, m.triangles.size());
+        EXPECT_EQ(r.backoffs, 0);
+        // Still a sphere of radius 1: volume 4.19, within a few percent at 50 triangles.
+        EXPECT_GT(enclosed_volume(m), 0.0);
+        EXPECT_NEAR(enclosed_volume(m), 4.0 * M_PI / 3.0, 0.25 * 4.0 * M_PI / 3.0);
+        // Euler characteristic 2: V - E + F with E = 3F/2.
+        EXPECT_EQ(2 * static_cast<long>(m.positions.size()) - static_cast<long>(m.triangles.size()), 4);
+    }
+}
+
+TEST(Decimate, TorusKeepsItsHole) {
+    const Mesh input = torus(60);
+    ASSERT_TRUE(check_topology(input).is_closed_manifold());
+    const DecimateResult r = decimate(input, budget(60));
+    const Mesh& m = r.parts[0];
+    EXPECT_TRUE(check_topology(m).is_closed_manifold());
+    EXPECT_TRUE(r.within_budget) << r.note;
+    // Genus 1: V - F/2 = 0.
+    EXPECT_EQ(2 * static_cast<long>(m.positions.size()), static_cast<long>(m.triangles.size()));
+}
+
+TEST(Decimate, PartsShareTheBudgetAndStaySeparate) {
+    const Mesh big = sphere(40, glm::vec3(0.0f), 1.0f);
+    const Mesh small = sphere(40, glm::vec3(3.0f, 0.0f, 0.0f), 0.25f);
+    const Mesh* parts[] = {&big, &small};
+    const DecimateResult r = decimate(parts, budget(300));
+    ASSERT_EQ(r.parts.size(), 2u);
+    EXPECT_TRUE(r.within_budget);
+    EXPECT_LE(r.parts[0].triangles.size() + r.parts[1].triangles.size(), 300u);
+    for (const Mesh& m : r.parts) EXPECT_TRUE(check_topology(m).is_closed_manifold());
+    // The quadric error favours the large sphere (same curvature error costs it more area).
+    EXPECT_GT(r.parts[0].triangles.size(), r.parts[1].triangles.size());
+    for (const glm::vec3& p : r.parts[1].positions) EXPECT_GT(p.x, 2.0f);
+}
+
+TEST(Decimate, BudgetAboveTheInputReturnsItUnchanged) {
+    const Mesh input = sphere(8);
+    const DecimateResult r = decimate(input, budget(input.triangles.size() + 10));
+    EXPECT_EQ(r.parts[0].triangles, input.triangles);
+    EXPECT_EQ(r.parts[0].positions, input.positions);
+    EXPECT_TRUE(r.within_budget);
+}
+
+TEST(Decimate, UnreachableBudgetSaysWhy) {
+    // Two separate spheres need at least 4 triangles each.
+    const Mesh a = sphere(16), b = sphere(16, glm::vec3(3.0f, 0.0f, 0.0f));
+    const Mesh* parts[] = {&a, &b};
+    const DecimateResult r = decimate(parts, budget(4));
+    EXPECT_FALSE(r.within_budget);
+    EXPECT_FALSE(r.note.empty());
+    for (const Mesh& m : r.parts) {
+        EXPECT_TRUE(check_topology(m).is_closed_manifold());
+        EXPECT_GE(m.triangles.size(), 4u);
+    }
+}
+
+TEST(Decimate, EmptyPartsStayEmpty) {
+    const Mesh a = sphere(16), empty;
+    const Mesh* parts[] = {&a, &empty};
+    const DecimateResult r = decimate(parts, budget(100));
+    EXPECT_TRUE(r.parts[1].triangles.empty());
+    EXPECT_TRUE(check_topology(r.parts[0]).is_closed_manifold());
+}
+
+TEST(Decimate, RejectsOpenInputNamingThePart) {
+    Mesh open = sphere(16);
+    open.triangles.pop_back();
+    try {
+        decimate(open, budget(50));
+        FAIL() << "expected std::invalid_argument";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("part 0"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("boundary edges"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Decimate, IsDeterministic) {
+    const Mesh input = sphere(32);
+    const DecimateResult a = decimate(input, budget(200)), b = decimate(input, budget(200));
+    EXPECT_EQ(a.parts[0].positions, b.parts[0].positions);
+    EXPECT_EQ(a.parts[0].triangles, b.parts[0].triangles);
+}
+
+TEST(Decimate, ReportsProgressAndCanBeCancelled) {
+    const Mesh input = sphere(48);
+    DecimateSettings s = budget(100);
+    float last = -1.0f;
+    int calls = 0;
+    s.progress = [&](float f) {
+        EXPECT_GE(f, last);
+        last = f;
+        ++calls;
+    };
+    decimate(input, s);
+    EXPECT_GT(calls, 2);
+    EXPECT_FLOAT_EQ(last, 1.0f);
+
+    std::atomic<bool> cancel{true};
+    s.progress = nullptr;
+    s.cancel = &cancel;
+    EXPECT_THROW(decimate(input, s), DecimationCancelled);
+}
+
+TEST(Decimate, HarderReductionStraysFurther) {
+    const Mesh input = sphere(48);
+    const Mesh reference = sphere(96);
+    double previous = -1.0;
+    for (std::size_t target : {2000u, 500u, 100u}) {
+        const DecimateResult r = decimate(input, budget(target));
+        const Fidelity f = measure_fidelity(r.parts[0], reference);
+        EXPECT_GT(f.mean, previous) << target;
+        EXPECT_GE(f.max, f.mean);
+        previous = f.mean;
+    }
+    // 100 triangles on a unit sphere: the chord error of an icosphere-like mesh of that
+    // size is a few percent of the diameter.
+    EXPECT_LT(previous, 0.05);
+}
+
+}  // namespace
+}  // namespace sylva

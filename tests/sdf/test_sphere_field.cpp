@@ -1,0 +1,88 @@
+// The crown field: root smooth min properties and the culled field against brute force.
+#include "sdf/sphere_field.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <random>
+
+namespace sylva {
+namespace {
+
+TEST(RootSmoothMin, LocalVersionEqualsTheSeedsWhereSpheresMeetAndMinFarther) {
+    const float k = 0.1f;
+    for (float a = -1; a <= 1; a += 0.01f) {
+        EXPECT_FLOAT_EQ(local_root_smooth_min(a, a + 0.15f, k), root_smooth_min(a, a + 0.15f, k));
+        EXPECT_FLOAT_EQ(local_root_smooth_min(a, a + 0.45f, k), a);
+        // Never above min, never more than k/2 below it, and monotone in each argument.
+        float s = local_root_smooth_min(a, 0.2f, k);
+        EXPECT_LE(s, std::min(a, 0.2f) + 1e-6f);
+        EXPECT_GE(s, std::min(a, 0.2f) - k / 2 - 1e-6f);
+        EXPECT_LE(s, local_root_smooth_min(a + 0.01f, 0.2f, k) + 1e-6f);
+    }
+}
+
+TEST(RootSmoothMin, BelowMinByAtMostHalfK) {
+    const float k = 0.1f;
+    for (float a = -1; a <= 1; a += 0.05f)
+        for (float b = -1; b <= 1; b += 0.05f) {
+            float s = root_smooth_min(a, b, k);
+            EXPECT_LE(s, std::min(a, b) + 1e-6f);
+            EXPECT_GE(s, std::min(a, b) - k / 2 - 1e-6f);
+        }
+    EXPECT_NEAR(root_smooth_min(0.3f, 0.3f, k), 0.3f - k / 2, 1e-6);
+    EXPECT_FLOAT_EQ(root_smooth_min(0.2f, 0.7f, 0.0f), 0.2f);
+}
+
+std::vector<Ball> random_balls(std::mt19937& rng, int n) {
+    std::uniform_real_distribution<float> u(0, 5), r(0.2f, 0.6f);
+    std::vector<Ball> balls;
+    for (int i = 0; i < n; ++i) balls.push_back({{u(rng), u(rng), u(rng)}, r(rng)});
+    return balls;
+}
+
+TEST(SphereField, BlendsOnlyAddMaterialAndOnlyWhereSpheresMeet) {
+    std::mt19937 rng(11);
+    std::vector<Ball> balls = random_balls(rng, 30);
+    const float k = 0.05f, margin = 0.5f;
+    SphereField field(balls, k, margin);
+    std::uniform_real_distribution<float> u(-1, 6);
+    int alone = 0;
+    for (int i = 0; i < 20000; ++i) {
+        glm::vec3 p{u(rng), u(rng), u(rng)};
+        std::vector<float> d;
+        for (const Ball& b : balls) d.push_back(distance(b, p));
+        std::sort(d.begin(), d.end());
+        // The smooth union lies on or below the hard union (it only fills the creases).
+        EXPECT_LE(field(p), std::min(d[0], margin) + 1e-6f) << i;
+        // With one sphere within the margin and no other near, there is nothing to blend:
+        // the value is that sphere's exact distance.
+        if (d[0] < margin && d[1] > d[0] + 4 * k) {
+            EXPECT_NEAR(field(p), d[0], 1e-6) << i;
+            ++alone;
+        }
+    }
+    EXPECT_GT(alone, 50);
+}
+
+TEST(SphereField, IsOneLipschitzAndHardUnionWithoutBlend) {
+    std::mt19937 rng(12);
+    std::vector<Ball> balls = random_balls(rng, 50);
+    SphereField smooth(balls, 0.1f, 1.0f), hard(balls, 0.0f, 1.0f);
+    std::uniform_real_distribution<float> u(-1, 6);
+    for (int i = 0; i < 5000; ++i) {
+        glm::vec3 p{u(rng), u(rng), u(rng)}, q = p + glm::vec3(u(rng), u(rng), u(rng)) * 0.05f;
+        // 1-Lipschitz below margin - 4k (the level the contract promises).
+        if (smooth(p) < 0.6f && smooth(q) < 0.6f) {
+            EXPECT_LE(std::abs(smooth(p) - smooth(q)), glm::length(p - q) * 1.001f + 1e-5f);
+        }
+        float exact = 1.0f;
+        for (const Ball& b : balls) exact = std::min(exact, distance(b, p));
+        EXPECT_NEAR(hard(p), exact, 1e-5);
+    }
+}
+
+}  // namespace
+}  // namespace sylva
