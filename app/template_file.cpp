@@ -162,7 +162,13 @@ std::string template_file_text(const TreeTemplate& tree) {
     if (grammar.find("'''") == std::string::npos) {
         out << "grammar = '''\n" << grammar << (grammar.ends_with('\n') ? "" : "\n") << "'''\n";
     } else {
-        out << "grammar = " << toml::value<std::string>(grammar) << "\n";
+        // A grammar that itself holds three quotes goes into a basic string, escaped.
+        std::string escaped;
+        for (char c : grammar) {
+            if (c == '\\' || c == '"') escaped.push_back('\\');
+            escaped.push_back(c);
+        }
+        out << "grammar = \"\"\"\n" << escaped << (grammar.ends_with('\n') ? "" : "\n") << "\"\"\"\n";
     }
     out << "\n[params]\n" << params << "\n\n[colors]\n" << colors << "\n";
     return out.str();

@@ -56,3 +56,42 @@ TEST(Templates, EveryBuiltInExportsAClosedTrunk) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// A fingerprint of everything generate_tree produces.
+std::vector<float> fingerprint(const Tree& tree) {
+    std::vector<float> out;
+    for (const Mesh* mesh : {&tree.trunk, &tree.crown, &tree.leaves}) {
+        out.push_back(static_cast<float>(mesh->triangles.size()));
+        for (const glm::vec3& p : mesh->positions) out.insert(out.end(), {p.x, p.y, p.z});
+    }
+    return out;
+}
+
+TEST(Sliders, EverySeed001ParameterChangesTheSpruce) {
+    TreeTemplate spruce = load_template("spruce");
+    spruce.params.trunk_resolution = spruce.params.crown_resolution = 24;
+    const std::vector<float> base = fingerprint(generate_tree(spruce));
+    const char* keys[] = {"trunk_resolution", "crown_resolution", "branch_length",
+                          "branch_width",     "trunk_taper",      "branch_taper",
+                          "sphere_diameter",  "crown_offset",     "crown_fusion",
+                          "generations",      "pitch_angle",      "yaw_angle"};
+    for (const char* key : keys) {
+        TreeTemplate changed = spruce;
+        double value = *get_param(changed.params, key);
+        const ParamInfo* info = nullptr;
+        for (const ParamInfo& i : param_infos())
+            if (i.key == key) info = &i;
+        ASSERT_NE(info, nullptr) << key;
+        // A step inside the range: up by 20% (at least 1 for whole numbers), else down.
+        double step = info->integer ? std::max(1.0, std::round(value * 0.2)) : value * 0.2;
+        double next = value + step <= info->max ? value + step : value - step;
+        set_param(changed.params, key, next);
+        EXPECT_NE(fingerprint(generate_tree(changed)), base) << key << " " << value << " -> " << next;
+    }
+}
+
+}  // namespace
+}  // namespace sylva
