@@ -73,9 +73,10 @@ std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
     return cones;
 }
 
-// Sparse meshing skips a block when |f(centre)| exceeds its half-diagonal, so the culled
-// fields must stay exact (and 1-Lipschitz) up to at least that level.
-constexpr float kFieldMarginInCells = 8.0f;
+// The culled fields are exact within this many cells of the surface (all marching cubes
+// interpolates) and a lower bound of the distance beyond it, which is all the sparse mesher
+// needs to skip empty blocks: |f(centre)| above a block's half-diagonal proves it empty.
+constexpr float kFieldMarginInCells = 3.0f;
 
 float cell_size(const Box& box, int resolution) {
     glm::vec3 extent = box.max - box.min;

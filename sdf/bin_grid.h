@@ -5,7 +5,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,11 +23,20 @@ public:
     BinGrid() = default;
     // About `bins_along_longest` bins along the longest side of all boxes together, but no
     // bin smaller than `min_bin_size` (smaller bins would repeat boxes without culling more).
-    BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest = 64);
+    // `overlaps(i, centre, radius)`, when given, refines box i's bins: a bin is kept only if
+    // it returns true for the ball (centre, radius) around the bin, so long diagonal
+    // primitives are not listed in every bin of their bounding box.
+    using Overlap = std::function<bool(std::size_t, const glm::vec3&, float)>;
+    BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest = 64,
+            const Overlap& overlaps = {});
 
     // Indices of the boxes whose bin holds p (a superset of the boxes containing p), in
     // increasing order; empty outside every box.
     std::span<const std::uint32_t> candidates(const glm::vec3& p) const;
+
+    // A lower bound on the distance from p to every box: 0 in a bin that lists boxes, else
+    // how far the nearest such bin is at least (from a distance transform over the bins).
+    float empty_distance(const glm::vec3& p) const;
 
 private:
     glm::vec3 origin_{0.0f};
@@ -33,6 +44,8 @@ private:
     glm::ivec3 dims_{0};
     std::vector<std::uint32_t> bin_start_;  // CSR: boxes of bin b are
     std::vector<std::uint32_t> bin_items_;  // bin_items_[bin_start_[b] .. bin_start_[b+1])
+    // Chebyshev distance, in bins, from each bin to the nearest bin that lists boxes.
+    std::vector<std::uint16_t> bins_to_nearest_;
 };
 
 }  // namespace sylva

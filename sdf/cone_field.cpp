@@ -1,6 +1,7 @@
 #include "sdf/cone_field.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,22 +17,35 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     : cones_(std::move(cones)), margin_(margin), joint_blend_(joint_blend) {
     std::vector<Aabb> boxes;
     boxes.reserve(cones_.size());
+    bounds_.reserve(cones_.size());
     for (const CappedCone& c : cones_) {
+        bounds_.push_back({0.5f * (c.a + c.b), 0.5f * glm::length(c.b - c.a) + std::max(c.ra, c.rb)});
         float r = std::max(c.ra, c.rb) + margin_;
         boxes.push_back({glm::min(c.a, c.b) - glm::vec3(r), glm::max(c.a, c.b) + glm::vec3(r)});
     }
-    bins_ = BinGrid(boxes, margin_);
+    // A bin lists a cone only if some point of the bin can be within the inflation of it.
+    const float inflation = margin_ + joint_blend_;
+    bins_ = BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
+        return distance(cones_[i], centre) < inflation + radius;
+    });
 }
 
 float ConeField::operator()(const glm::vec3& p) const {
+    // A cone whose bounding sphere is at least d + joint_blend away leaves the result
+    // unchanged (min, and the polynomial blend is exactly min beyond its radius), so it is
+    // skipped without an exact evaluation; the value stays exact.
+    auto near = bins_.candidates(p);
+    if (near.empty()) return margin_ + bins_.empty_distance(p);
     float d = margin_;
-    if (joint_blend_ > 0.0f) {
-        for (std::uint32_t i : bins_.candidates(p))
-            d = polynomial_smooth_min(d, distance(cones_[i], p), joint_blend_);
-        return std::min(d, margin_);
+    for (std::uint32_t i : near) {
+        const Bound& b = bounds_[i];
+        float reach = d + joint_blend_ + b.radius;
+        glm::vec3 offset = p - b.center;
+        if (reach > 0.0f && glm::dot(offset, offset) >= reach * reach) continue;
+        float next = distance(cones_[i], p);
+        d = joint_blend_ > 0.0f ? polynomial_smooth_min(d, next, joint_blend_) : std::min(d, next);
     }
-    for (std::uint32_t i : bins_.candidates(p)) d = std::min(d, distance(cones_[i], p));
-    return d;
+    return std::min(d, margin_);
 }
 
 }  // namespace sylva

@@ -3,9 +3,10 @@
 // the cones near it.
 //
 // Contract: where the true union distance d is below `margin`, the value is exact;
-// elsewhere it is some value >= margin. It stays 1-Lipschitz (a minimum of distances and
-// a constant), so meshers may skip empty space: choose margin >= the largest block
-// half-diagonal they test.
+// elsewhere it is a value between margin and d: a lower bound of the distance, so meshers
+// may skip any block whose centre value exceeds its half-diagonal. Far from every cone the
+// bound comes from a distance transform over the bins, so big empty blocks are skipped
+// without visiting a single cone.
 #pragma once
 
 #include "sdf/bin_grid.h"
@@ -29,7 +30,14 @@ public:
     const std::vector<CappedCone>& cones() const { return cones_; }
 
 private:
+    // A bounding sphere per cone (centre, radius): a cheap lower bound on its distance
+    // lets a sample skip the exact evaluation of cones that cannot change the result.
+    struct Bound {
+        glm::vec3 center;
+        float radius;
+    };
     std::vector<CappedCone> cones_;
+    std::vector<Bound> bounds_;
     float margin_;
     float joint_blend_;
     BinGrid bins_;

@@ -39,15 +39,27 @@ SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, Sph
         glm::vec3 r(b.radius + margin_);
         boxes.push_back({b.center - r, b.center + r});
     }
-    bins_ = BinGrid(boxes, margin_);
+    bins_ = BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
+        return distance(balls_[i], centre) < margin_ + radius;
+    });
 }
 
 float SphereField::operator()(const glm::vec3& p) const {
+    // The fold starts at the margin (values near it may blend with it, which the contract
+    // allows) and skips spheres too far to matter: with the local blend, a sphere at least
+    // 4 k beyond the running value leaves it unchanged, so the value stays exact.
+    const float reach_extra = kind_ == SphereBlend::PaskoSavchenko ? margin_ : 4.0f * blend_;
     auto near = bins_.candidates(p);
-    if (near.empty()) return margin_;
-    float d = distance(balls_[near[0]], p);
-    for (size_t i = 1; i < near.size(); ++i) {
-        float next = distance(balls_[near[i]], p);
+    if (near.empty()) return margin_ + bins_.empty_distance(p);
+    float d = margin_;
+    for (std::uint32_t i : near) {
+        const Ball& ball = balls_[i];
+        glm::vec3 offset = p - ball.center;
+        float reach = d + reach_extra + ball.radius;
+        if (kind_ != SphereBlend::PaskoSavchenko && reach > 0.0f &&
+            glm::dot(offset, offset) >= reach * reach)
+            continue;
+        float next = std::sqrt(glm::dot(offset, offset)) - ball.radius;
         if (kind_ == SphereBlend::PaskoSavchenko) d = pasko_savchenko_union(d, next, blend_);
         else d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
     }

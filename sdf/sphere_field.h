@@ -48,9 +48,10 @@ public:
     SphereField(std::vector<Ball> balls, float blend, float margin,
                 SphereBlend kind = SphereBlend::RootSmoothMin);
 
-    // The smooth union of all spheres where it is below margin - 4 * blend; some value
-    // >= margin - 4 * blend elsewhere, capped at margin. 1-Lipschitz below that level, so
-    // meshers may skip blocks whose half-diagonal is below margin - 4 * blend.
+    // The smooth union of all spheres where it is below margin - 4 * blend; elsewhere a
+    // value between margin - 4 * blend and the distance to the nearest sphere (far away a
+    // distance transform over the bins gives it), so with the root blend meshers may skip
+    // blocks whose centre value exceeds their half-diagonal.
     float operator()(const glm::vec3& p) const;
 
     const std::vector<Ball>& balls() const { return balls_; }

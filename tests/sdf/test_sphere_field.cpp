@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 namespace sylva {
@@ -55,12 +56,14 @@ TEST(SphereField, BlendsOnlyAddMaterialAndOnlyWhereSpheresMeet) {
         std::vector<float> d;
         for (const Ball& b : balls) d.push_back(distance(b, p));
         std::sort(d.begin(), d.end());
-        // The smooth union lies on or below the hard union (it only fills the creases).
-        EXPECT_LE(field(p), std::min(d[0], margin) + 1e-6f) << i;
-        // With one sphere within the margin and no other near, there is nothing to blend:
-        // the value is that sphere's exact distance.
-        if (d[0] < margin && d[1] > d[0] + 4 * k) {
-            EXPECT_NEAR(field(p), d[0], 1e-6) << i;
+        // The smooth union lies on or below the hard union (it only fills the creases), and
+        // far away the value is still a lower bound of the distance.
+        EXPECT_LE(field(p), d[0] + 1e-6f) << i;
+        EXPECT_GE(field(p), std::min(d[0], margin) - 4 * k - 1e-6f) << i;
+        // With one sphere well within the margin and no other near, there is nothing to
+        // blend: the value is that sphere's exact distance.
+        if (d[0] < margin - 4 * k && d[1] > d[0] + 4 * k) {
+            EXPECT_NEAR(field(p), d[0], 1e-4) << i;
             ++alone;
         }
     }
@@ -78,9 +81,14 @@ TEST(SphereField, IsOneLipschitzAndHardUnionWithoutBlend) {
         if (smooth(p) < 0.6f && smooth(q) < 0.6f) {
             EXPECT_LE(std::abs(smooth(p) - smooth(q)), glm::length(p - q) * 1.001f + 1e-5f);
         }
-        float exact = 1.0f;
+        float exact = std::numeric_limits<float>::max();
         for (const Ball& b : balls) exact = std::min(exact, distance(b, p));
-        EXPECT_NEAR(hard(p), exact, 1e-5);
+        if (exact < 1.0f) {
+            EXPECT_NEAR(hard(p), exact, 1e-5);
+        } else {  // beyond the margin: a lower bound of the distance, at least the margin
+            EXPECT_GE(hard(p), 1.0f - 1e-6f);
+            EXPECT_LE(hard(p), exact + 1e-5f);
+        }
     }
 }
 
