@@ -112,11 +112,9 @@ struct BlockScratch {
     // Vertex ref per (local node, axis) edge slot of the block being meshed, or kNoVertex.
     std::vector<std::uint32_t> edge_refs;
     std::vector<std::uint32_t> touched;
-    // Free for the meshers' own use (node values, points to evaluate, ...).
-    std::vector<float> node_values;
+    // A batch of points to evaluate and their values, for the meshers' own use.
     std::vector<glm::vec3> points;
     std::vector<float> values;
-    std::vector<std::uint8_t> node_marks;
 };
 
 // Meshes the cells of block b that lie in a sub-block whose bit is set in `mask` (bit

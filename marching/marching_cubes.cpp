@@ -61,8 +61,7 @@ Mesh mesh_dense(const BatchField& field, const Box& box, const MarchingCubesSett
                     for (int i = 0; i < nx; ++i) s.points.push_back(g.node(i, j, k));
                 }
                 float* values = slab.data() + r0 * nx;
-                field(s.points, std::span<float>(values, s.points.size()));
-                run.count_evaluations(s.points.size());
+                run.evaluate(field, s.points, std::span<float>(values, s.points.size()));
                 for (std::size_t r = r0; r < r1; ++r) {
                     const int k = z0 + int(r / ny), j = int(r % ny);
                     float* row = values + (r - r0) * nx;

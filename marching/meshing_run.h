@@ -57,6 +57,16 @@ class MeshingRun {
         throw_if_cancelled();
     }
 
+    // Calls the field on one batch and counts it. Isolated: a field that runs its own TBB
+    // loops must not let this thread, while it waits for them, pick up another of our
+    // items, which would reuse the thread's scratch buffers under the batch being filled.
+    void evaluate(const BatchField& field, std::span<const glm::vec3> points,
+                  std::span<float> values) {
+        if (points.empty()) return;
+        tbb::this_task_arena::isolate([&] { field(points, values); });
+        evaluations_.fetch_add(points.size(), std::memory_order_relaxed);
+    }
+
     bool cancelled() const {
         return settings_.cancel && settings_.cancel->load(std::memory_order_relaxed);
     }
@@ -85,7 +95,6 @@ class MeshingRun {
     // The last progress report, exactly 1.
     void finish() { report(1.0f); }
 
-    void count_evaluations(std::size_t n) { evaluations_.fetch_add(n, std::memory_order_relaxed); }
     std::size_t evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
 
   private:

@@ -7,8 +7,9 @@
 // Phases, each parallel over runs of blocks: find the candidate blocks; find each one's
 // surviving cubes; evaluate the needed nodes, each by the one block that owns it (the same
 // half-open rule as for edge vertices), in one batch per block; mesh each block, taking the
-// nodes on its upper faces from their owners. So no node is evaluated twice, and no block
-// waits for another within a phase.
+// nodes on its upper faces from their owners. So a node is evaluated once (unless its owner
+// was skipped as empty: then each block that needs it evaluates it), and no block waits
+// for another within a phase.
 #include "marching/marching_cubes.h"
 
 #include "marching/block_mesher.h"
@@ -48,7 +49,7 @@ constexpr std::size_t kBlocksPerChunk = 8;
 // Node marks while a block is sampled.
 constexpr std::uint8_t kUnknown = 0;
 constexpr std::uint8_t kWanted = 1;  // needed by a surviving cube, to be evaluated
-constexpr std::uint8_t kKnown = 2;   // evaluated as the centre of a range
+constexpr std::uint8_t kKnown = 2;   // value in hand: a range's centre, or evaluated
 
 // A range of cells the bound could not prove empty, with the field at its centre.
 struct Candidate {
@@ -63,12 +64,10 @@ struct SparseScratch {
     std::vector<Candidate> children;
 };
 
-// Evaluates points_[0..n) into values and counts them.
+// Evaluates s.points into s.values.
 void evaluate(const BatchField& field, MeshingRun& run, BlockScratch& s) {
     s.values.resize(s.points.size());
-    if (s.points.empty()) return;
-    field(s.points, s.values);
-    run.count_evaluations(s.points.size());
+    run.evaluate(field, s.points, s.values);
 }
 
 // Replaces `out` by the children of side `size` cells of every range in `parents` that the
@@ -192,6 +191,17 @@ std::array<int, 3> step(const std::array<int, 3>& b, unsigned axes, int sign) {
             b[2] + sign * int(axes >> 2 & 1u)};
 }
 
+// The candidates one step up (sign +1) or down (-1) along each set of axes (index = axis
+// bits; entry 0 is block i itself), looked up once per block rather than once per node.
+std::array<std::size_t, 8> neighbours(const BlockGrid& g, const SparseBlocks& sb,
+                                      std::size_t i, int sign) {
+    const std::array<int, 3> b = g.block_coords(sb.blocks[i].first);
+    std::array<std::size_t, 8> out{};
+    out[0] = i;
+    for (unsigned axes = 1; axes < 8; ++axes) out[axes] = sb.index_of(g, step(b, axes, sign));
+    return out;
+}
+
 // A range whose sides are an even number of cells is centred on a grid node, and its centre
 // was computed exactly as that node is (origin + index * h, in double, rounded once), so
 // its value is the node's: kept in the block's node values and marked as known.
@@ -238,7 +248,6 @@ void find_surviving_cells(const BlockGrid& g, const BatchField& field, MeshingRu
 // not evaluate them). Writes only block i's values and marks.
 void sample_owned_nodes(const BlockGrid& g, const BatchField& field, MeshingRun& run,
                         SparseBlocks& sb, std::size_t i, BlockScratch& s) {
-    const std::array<int, 3> b = g.block_coords(sb.blocks[i].first);
     const CellRange& r = sb.blocks[i].second.cells;
     const std::array<int, 3> size = size_of(r);
     std::uint8_t* marks = sb.marks_of(i);
@@ -247,24 +256,24 @@ void sample_owned_nodes(const BlockGrid& g, const BatchField& field, MeshingRun&
         if (mark == kUnknown) mark = kWanted;
     };
     if (const std::uint64_t mask = sb.masks[i]) {
+        const std::array<std::size_t, 8> above = neighbours(g, sb, i, +1);
         for_masked_nodes(size, mask, {-1, -1, -1}, [&](int x, int y, int z) {
             const unsigned axes = foreign_axes(g, r, x, y, z);
-            if (axes == 0 || sb.index_of(g, step(b, axes, +1)) == SparseBlocks::kNone) {
-                want(x, y, z);
-            }
+            if (axes == 0 || above[axes] == SparseBlocks::kNone) want(x, y, z);
         });
     }
     // A block below along the axes in `axes` needs the nodes of its upper faces; those on
     // this block's lower faces and inside its owned range are this block's to evaluate.
+    const std::array<std::size_t, 8> below = neighbours(g, sb, i, -1);
     for (unsigned axes = 1; axes < 8; ++axes) {
-        const std::size_t n = sb.index_of(g, step(b, axes, -1));
+        const std::size_t n = below[axes];
         if (n == SparseBlocks::kNone || sb.masks[n] == 0) continue;
-        const CellRange& below = sb.blocks[n].second.cells;
+        const CellRange& lower = sb.blocks[n].second.cells;
         std::array<int, 3> only{-1, -1, -1};
         for (int a = 0; a < 3; ++a) {
             if (axes >> a & 1u) only[a] = kBlockCells;  // the block below is full there
         }
-        for_masked_nodes(size_of(below), sb.masks[n], only, [&](int x, int y, int z) {
+        for_masked_nodes(size_of(lower), sb.masks[n], only, [&](int x, int y, int z) {
             const std::array<int, 3> here{x - int(axes & 1u) * kBlockCells,
                                           y - int(axes >> 1 & 1u) * kBlockCells,
                                           z - int(axes >> 2 & 1u) * kBlockCells};
@@ -301,13 +310,13 @@ void sample_owned_nodes(const BlockGrid& g, const BatchField& field, MeshingRun&
 // Phase 4, first step: copies into block i the values of its upper-face nodes that other
 // blocks own. Writes only block i's upper faces, which no other block reads.
 void fetch_foreign_nodes(const BlockGrid& g, SparseBlocks& sb, std::size_t i) {
-    const std::array<int, 3> b = g.block_coords(sb.blocks[i].first);
     const CellRange& r = sb.blocks[i].second.cells;
     float* values = sb.values_of(i);
+    const std::array<std::size_t, 8> above = neighbours(g, sb, i, +1);
     for_masked_nodes(size_of(r), sb.masks[i], {-1, -1, -1}, [&](int x, int y, int z) {
         const unsigned axes = foreign_axes(g, r, x, y, z);
         if (axes == 0) return;
-        const std::size_t owner = sb.index_of(g, step(b, axes, +1));
+        const std::size_t owner = above[axes];
         if (owner == SparseBlocks::kNone) return;  // evaluated here in phase 3
         const std::size_t there = local_node(x - int(axes & 1u) * kBlockCells,
                                              y - int(axes >> 1 & 1u) * kBlockCells,

@@ -17,6 +17,9 @@
 #include <string>
 #include <vector>
 
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
@@ -271,6 +274,29 @@ TEST(SparseMarchingCubes, SameBytesWhateverTheThreadCount) {
     }
     for (int run = 0; run < 3; ++run) {
         expect_same_mesh(reference, sparse_marching_cubes(field, cube(1.0f), settings(110)));
+    }
+}
+
+TEST(SparseMarchingCubes, FieldRunningItsOwnParallelLoopsIsSafe) {
+    // While a worker waits for the field's loop it must not start another block of ours
+    // on the same thread (it would reuse that thread's buffers under the running batch);
+    // the meshers isolate field calls. Such steals are rare and timing-dependent, so this
+    // mostly checks that nested loops work and change nothing; more threads than cores
+    // and uneven nested work give them their best chance.
+    tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, 8);
+    const BatchField nested = [](std::span<const glm::vec3> points, std::span<float> values) {
+        tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+            float v = glm::length(points[i] - glm::vec3(0.1f, 0.0f, -0.2f)) - 0.7f;
+            // A data-dependent delay (that changes nothing) unbalances the nested loop.
+            for (int k = 0; k < int(points[i].x * 50.0f + 50.0f); ++k) v = std::nextafter(v, v);
+            values[i] = v;
+        });
+    };
+    const BatchField plain = sphere(glm::vec3(0.1f, 0.0f, -0.2f), 0.7f);
+    const Mesh reference = marching_cubes(plain, cube(1.0f), settings(80, 2, 1));
+    for (int run = 0; run < 3; ++run) {
+        expect_same_mesh(reference, sparse_marching_cubes(nested, cube(1.0f), settings(80, 2, 8)));
+        expect_same_mesh(reference, marching_cubes(nested, cube(1.0f), settings(80, 2, 8)));
     }
 }
 
