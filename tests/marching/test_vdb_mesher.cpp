@@ -287,7 +287,7 @@ TEST(VdbMesher, SameMeshWhateverTheThreadCount) {
     }
 }
 
-TEST(VdbMesher, ProgressRisesToOne) {
+TEST(VdbMesher, ProgressRisesToOneOnce) {
     std::mutex mutex;
     std::vector<float> seen;
     auto s = settings(100);
@@ -300,13 +300,18 @@ TEST(VdbMesher, ProgressRisesToOne) {
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
     EXPECT_GE(seen.front(), 0.0f);
     EXPECT_EQ(seen.back(), 1.0f);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1.0f), 1);
 }
 
 TEST(VdbMesher, CancelThrows) {
     std::atomic<bool> cancel{true};
+    MeshingStats stats;
+    stats.evaluations = 12345;
     auto s = settings(64);
     s.cancel = &cancel;
+    s.stats = &stats;
     EXPECT_THROW(vdb_mesh(batch(sphere({}, 1.0f)), cube(1.0f), s), MeshingCancelled);
+    EXPECT_EQ(stats.evaluations, 12345u);  // only a completed run overwrites the stats
 
     // Cancelled while sampling, from the field itself.
     cancel = false;
@@ -316,6 +321,32 @@ TEST(VdbMesher, CancelThrows) {
         for (std::size_t i = 0; i < points.size(); ++i) values[i] = f(points[i]);
     };
     EXPECT_THROW(vdb_mesh(cancelling, cube(1.0f), s), MeshingCancelled);
+
+    // Cancelled from the progress callback, at each of its calls but the last (1: done).
+    auto p = settings(64);
+    p.threads = 1;
+    p.cancel = &cancel;
+    int calls = 0;
+    p.progress = [&](float) { ++calls; };
+    cancel = false;
+    vdb_mesh(batch(f), cube(1.0f), p);
+    const int total = calls;
+    ASSERT_GE(total, 3);
+    for (int at_call = 1; at_call < total; ++at_call) {
+        cancel = false;
+        calls = 0;
+        p.progress = [&](float) {
+            if (++calls == at_call) cancel = true;
+        };
+        EXPECT_THROW(vdb_mesh(batch(f), cube(1.0f), p), MeshingCancelled) << "call " << at_call;
+    }
+}
+
+TEST(VdbMesher, FieldExceptionsReachTheCaller) {
+    const BatchField failing = [](std::span<const glm::vec3>, std::span<float>) {
+        throw std::runtime_error("field failed");
+    };
+    EXPECT_THROW(vdb_mesh(failing, cube(1.0f), settings(40)), std::runtime_error);
 }
 
 TEST(VdbMesher, RejectsBadSettings) {
