@@ -1,23 +1,44 @@
 // Wavefront OBJ export: one group per part, Y up, meters. Written atomically.
+//
+// Two flavours: write_obj() writes bare geometry (positions and triangles), and
+// write_obj_with_mtl() adds normals (flat or smooth) and a material library beside the
+// file (`tree.obj` -> `tree.mtl`) with one material per part, named like the part, whose
+// Kd is the part's colour.
 #pragma once
-
-#include "marching/mesh.h"
 
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
-namespace sylva {
+#include "app/export_options.h"
+#include "app/named_mesh.h"
+#include "marching/mesh.h"
 
-struct NamedMesh {
-    std::string name;  // becomes the OBJ group ("trunk", "crown", "leaves")
-    const Mesh* mesh = nullptr;
-};
+namespace sylva {
 
 void write_obj(std::ostream& out, const std::vector<NamedMesh>& parts);
 
 // Throws IoError naming the path when it cannot be written; never leaves a partial file.
 void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& parts);
+
+// The OBJ text that goes with an MTL file called `mtl_file_name` (written beside it):
+// per part `o`, `g` and `usemtl` with the part's name, `v`, `vn` and `f v//vn` lines.
+// Empty parts are left out.
+void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
+                        const ExportOptions& options, std::string_view mtl_file_name);
+
+// One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
+// baseColorFactor), no specular.
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts);
+
+// Writes `path` and its material library (`path` with the extension .mtl), each
+// atomically. Returns both paths. Throws IoError naming the path that failed; when the
+// OBJ fails after the MTL was written, a new MTL is removed again (an older one was
+// already replaced: the pair is two files, not one transaction).
+std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::path& path,
+                                                      const std::vector<NamedMesh>& parts,
+                                                      const ExportOptions& options = {});
 
 }  // namespace sylva

@@ -42,6 +42,7 @@ const std::vector<Field>& fields() {
         {{"leaf_density", "leaves per cubic meter of crown (0 = none)", 0, 20000, false}, &TreeParams::leaf_density, nullptr},
         {{"leaf_size", "leaf length, meters", 0.01, 2, false}, &TreeParams::leaf_size, nullptr},
         {{"leaf_shape", "round, oak, needle or frond", 0, 3, true, kLeafShapes}, nullptr, &TreeParams::leaf_shape},
+        {{"triangle_budget", "export: trunk + crown reduced to this many triangles (0 = keep every marching-cubes triangle)", 0, 10000000, true}, nullptr, &TreeParams::triangle_budget},
     };
     return table;
 }

@@ -32,6 +32,7 @@ struct TreeParams {
     double leaf_density = 60.0;    // leaves per cubic meter of crown
     double leaf_size = 0.25;       // leaf length, meters
     int leaf_shape = 0;            // LeafShape
+    int triangle_budget = 800;     // export: trunk + crown reduced to this (0 = no reduction)
     std::uint64_t seed = 1;
 };
 

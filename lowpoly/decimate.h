@@ -1,10 +1,14 @@
-// Low poly for real: quadric error decimation (Garland-Heckbert, halfedge collapses on
-// OpenMesh's Decimater) of closed meshes down to a triangle budget, keeping every part a
-// closed, consistently oriented 2-manifold. OpenMesh stays inside the .cpp; callers see
-// sylva::Mesh only.
+// Low poly for real: quadric error decimation (Garland-Heckbert) of closed meshes down to
+// a triangle budget, keeping every part a closed, consistently oriented 2-manifold.
+//
+// Built on OpenMesh's decimation framework (BaseDecimaterT, ModQuadricT, its collapse
+// test and heap) with a greedy loop that scores candidates before the costly legality
+// tests, guards against fold-overs and slivers, quadric-optimal vertex placement at the
+// end, and handle cutting (lowpoly/handle_cutting.h) for budgets below what the topology
+// allows. OpenMesh stays inside the .cpp; callers see sylva::Mesh only.
+//
+// Speed: a 100k-triangle tree to 800 triangles in about 0.3 s on one core.
 #pragma once
-
-#include "marching/mesh.h"
 
 #include <atomic>
 #include <cstddef>
@@ -13,6 +17,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "marching/mesh.h"
 
 namespace sylva {
 
@@ -25,6 +31,15 @@ struct DecimateSettings {
     // Guard against fold-overs: no collapse may turn a remaining triangle's normal by
     // more than this many degrees (OpenMesh's normal-flip module uses 90).
     double max_normal_turn_degrees = 75.0;
+    // When the budget is below what the topology allows (every handle, where branches
+    // cross, pins about a dozen triangles), cut handles along their shortest loops and cap
+    // them (lowpoly/handle_cutting.h), then reduce again. Still closed and manifold; the
+    // shape changes by a branch cross-section per cut.
+    bool cut_handles = true;
+    // After the collapses, move each vertex to the minimum of its accumulated quadric
+    // (guarded like a collapse): facets then straddle the input surface instead of
+    // lying inside it, which roughly halves the mean distance at game budgets.
+    bool relocate_vertices = true;
     // Called with the finished fraction (0..1) from the calling thread.
     std::function<void(float)> progress;
     // Polled every few hundred collapses; when it becomes true, decimate() throws
@@ -37,13 +52,14 @@ struct DecimationCancelled : std::runtime_error {
 };
 
 struct DecimateResult {
-    std::vector<Mesh> parts;      // in the order given; each a closed 2-manifold
-    std::size_t triangles = 0;    // over all parts
-    bool within_budget = false;   // triangles <= max_triangles
+    std::vector<Mesh> parts;     // in the order given; each a closed 2-manifold
+    std::size_t triangles = 0;   // over all parts
+    bool within_budget = false;  // triangles <= max_triangles
     // How often a reduction was redone with fewer collapses because a part failed
     // check_topology (marching/mesh_checks.h). 0 in every case seen so far: OpenMesh's
     // link condition and the guards keep the manifold; the back-off is the safety net.
     int backoffs = 0;
+    int handles_cut = 0;  // see DecimateSettings::cut_handles
     // Empty, or a sentence for people: why the budget was missed, or what was backed off.
     std::string note;
 };
@@ -53,8 +69,10 @@ struct DecimateResult {
 //
 // Preconditions: every non-empty part is a closed 2-manifold by check_topology; otherwise
 // throws std::invalid_argument naming the part and what is wrong. Empty parts stay empty.
-// Guarantee: every returned part is a closed 2-manifold with the input's orientation; when
-// a reduction breaks that, it is redone with fewer collapses, down to returning the input.
+// Guarantee: every returned part is a closed 2-manifold with the input's orientation
+// (checked with check_topology); when a reduction breaks that, it is redone with fewer
+// collapses, down to returning the input. Connected components never vanish or merge;
+// handles are kept unless cut_handles had to cut some (then result.handles_cut > 0).
 // Deterministic: the same input gives the same output. Not thread-safe on shared settings
 // callbacks; otherwise reentrant (no global state).
 DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings);

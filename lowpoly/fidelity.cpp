@@ -1,11 +1,11 @@
 #include "lowpoly/fidelity.h"
 
-#include "lowpoly/surface_sampling.h"
-#include "lowpoly/triangle_bvh.h"
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+
+#include "lowpoly/surface_sampling.h"
+#include "lowpoly/triangle_bvh.h"
 
 namespace sylva {
 

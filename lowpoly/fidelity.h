@@ -3,10 +3,10 @@
 // surface), as a mean and a max, in meters and in percent of the tree's height.
 #pragma once
 
-#include "marching/mesh.h"
-
 #include <cstddef>
 #include <cstdint>
+
+#include "marching/mesh.h"
 
 namespace sylva {
 
@@ -23,7 +23,7 @@ struct Fidelity {
     double max = 0.0;           // meters; the largest over the samples (a lower bound)
     double mean_percent = 0.0;  // of height
     double max_percent = 0.0;
-    double height = 0.0;        // meters
+    double height = 0.0;  // meters
     std::size_t samples = 0;
 };
 

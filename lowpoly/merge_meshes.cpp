@@ -16,7 +16,8 @@ Mesh merge_meshes(std::span<const Mesh* const> meshes) {
         if (!m) continue;
         const auto base = static_cast<std::uint32_t>(out.positions.size());
         out.positions.insert(out.positions.end(), m->positions.begin(), m->positions.end());
-        for (const auto& t : m->triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        for (const auto& t : m->triangles)
+            out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     }
     return out;
 }

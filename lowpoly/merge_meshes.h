@@ -2,9 +2,9 @@
 // measured together against a reference tree.
 #pragma once
 
-#include "marching/mesh.h"
-
 #include <span>
+
+#include "marching/mesh.h"
 
 namespace sylva {
 

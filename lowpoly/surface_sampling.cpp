@@ -1,9 +1,8 @@
 #include "lowpoly/surface_sampling.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace sylva {
 namespace {

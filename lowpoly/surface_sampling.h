@@ -1,13 +1,12 @@
 // Points spread uniformly over a mesh's surface (area-weighted), for distance measures.
 #pragma once
 
-#include "marching/mesh.h"
-
-#include <glm/vec3.hpp>
-
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
+
+#include "marching/mesh.h"
 
 namespace sylva {
 

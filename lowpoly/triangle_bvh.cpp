@@ -1,10 +1,9 @@
 #include "lowpoly/triangle_bvh.h"
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 
 namespace sylva {
@@ -78,11 +77,13 @@ std::uint32_t TriangleBvh::build(std::uint32_t begin, std::uint32_t end) {
         return node;
     }
     const glm::vec3 extent = chi - clo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(triangles_.begin() + begin, triangles_.begin() + mid, triangles_.begin() + end,
                      [axis](const Triangle& x, const Triangle& y) {
-                         return x.a[axis] + x.b[axis] + x.c[axis] < y.a[axis] + y.b[axis] + y.c[axis];
+                         return x.a[axis] + x.b[axis] + x.c[axis] <
+                                y.a[axis] + y.b[axis] + y.c[axis];
                      });
     build(begin, mid);
     const std::uint32_t right = build(mid, end);

@@ -2,17 +2,16 @@
 // over its triangles. Used to measure how far a reduced mesh strays from a reference.
 #pragma once
 
-#include "marching/mesh.h"
-
-#include <glm/vec3.hpp>
-
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
+
+#include "marching/mesh.h"
 
 namespace sylva {
 
 class TriangleBvh {
-public:
+  public:
     struct Hit {
         float distance = 0.0f;       // to the closest point; infinity for an empty mesh
         glm::vec3 point{0.0f};       // the closest point on the mesh
@@ -28,7 +27,7 @@ public:
 
     std::size_t size() const { return triangles_.size(); }
 
-private:
+  private:
     struct Triangle {
         glm::vec3 a, b, c;
         std::uint32_t index;

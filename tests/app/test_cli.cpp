@@ -58,7 +58,8 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("frobnicate").code, 2);
     EXPECT_EQ(run("export").code, 2);                      // no -o
     EXPECT_EQ(run("export --bogus -o x.obj").code, 2);
-    EXPECT_EQ(run("export -o " + path("x.glb")).code, 2);  // format not written yet
+    EXPECT_EQ(run("export -o " + path("x.fbx")).code, 2);  // no such format
+    EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
 }
 
 TEST_F(Cli, BrokenGrammarIsExitCode3WithLineAndNoFile) {
@@ -81,7 +82,7 @@ TEST_F(Cli, BadParameterIsExitCode3NamingTheKey) {
 TEST_F(Cli, UnwritablePathIsExitCode4AndLeavesNothing) {
     Result r = run("export -o " + path("missing/dir/tree.obj"));
     EXPECT_EQ(r.code, 4) << r.output;
-    EXPECT_NE(r.output.find("missing/dir/tree.obj"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("missing/dir/tree."), std::string::npos) << r.output;  // .obj or its .mtl
     EXPECT_FALSE(fs::exists(path("missing")));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 0);
 }

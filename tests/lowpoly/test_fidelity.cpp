@@ -1,17 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <stdexcept>
+
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
-
-#include <glm/geometric.hpp>
-
-#include <cmath>
-#include <limits>
-#include <stdexcept>
 
 namespace sylva {
 namespace {
@@ -33,32 +34,63 @@ Mesh cube() {
     return m;
 }
 
+// Independent of the BVH's closest-point routine: the plane distance when the projection
+// falls inside the triangle, else the nearest of the three edges.
+float segment_distance(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
+    const glm::vec3 ab = b - a;
+    const float t = glm::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+    return glm::length(p - (a + t * ab));
+}
+
+float triangle_distance(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    const glm::vec3 q = p - glm::dot(p - a, n) * n;
+    const bool inside = glm::dot(glm::cross(b - a, q - a), n) >= 0 &&
+                        glm::dot(glm::cross(c - b, q - b), n) >= 0 &&
+                        glm::dot(glm::cross(a - c, q - c), n) >= 0;
+    if (inside) return std::abs(glm::dot(p - a, n));
+    return std::min(
+        {segment_distance(p, a, b), segment_distance(p, b, c), segment_distance(p, c, a)});
+}
+
 TEST(TriangleBvh, MatchesBruteForce) {
-    const Mesh m = sphere(24);
+    const Mesh m = sphere(16);
     const TriangleBvh bvh(m);
     EXPECT_EQ(bvh.size(), m.triangles.size());
-    const std::vector<glm::vec3> probes = sample_surface(sphere(10, 1.6f), 300, 7);
+    // Probes inside, on and outside the surface.
+    std::vector<glm::vec3> probes = sample_surface(sphere(10, 1.6f), 100, 7);
+    for (const glm::vec3& p : sample_surface(m, 100, 8)) probes.push_back(p * 0.7f);
+    for (const glm::vec3& p : sample_surface(m, 50, 9)) probes.push_back(p);
     for (const glm::vec3& p : probes) {
         float brute = std::numeric_limits<float>::infinity();
-        for (const auto& t : m.triangles) {
-            // Dense sampling of the triangle is too coarse; use the BVH's own hit and check
-            // it against the distance to every vertex and the plane bound instead.
-            for (std::uint32_t i : t) brute = std::min(brute, glm::length(m.positions[i] - p));
+        std::uint32_t nearest = 0;
+        for (std::uint32_t i = 0; i < m.triangles.size(); ++i) {
+            const auto& t = m.triangles[i];
+            const float d =
+                triangle_distance(p, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+            if (d < brute) {
+                brute = d;
+                nearest = i;
+            }
         }
         const TriangleBvh::Hit hit = bvh.closest(p);
-        EXPECT_LE(hit.distance, brute + 1e-5f);
+        EXPECT_NEAR(hit.distance, brute, 1e-5f);
         EXPECT_NEAR(glm::length(hit.point - p), hit.distance, 1e-5f);
-        // Points 1.6 from the centre are ~0.6 from a unit sphere.
-        EXPECT_NEAR(hit.distance, 0.6f, 0.02f);
+        if (hit.triangle != nearest) {  // a tie: then both are equally near
+            const auto& t = m.triangles[hit.triangle];
+            EXPECT_NEAR(
+                triangle_distance(p, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]),
+                brute, 1e-5f);
+        }
     }
 }
 
 TEST(TriangleBvh, KnownDistancesToACube) {
     const TriangleBvh bvh(cube());
-    EXPECT_NEAR(bvh.distance({0.5f, 0.5f, 2.0f}), 1.0f, 1e-6f);   // above a face
+    EXPECT_NEAR(bvh.distance({0.5f, 0.5f, 2.0f}), 1.0f, 1e-6f);             // above a face
     EXPECT_NEAR(bvh.distance({2.0f, 2.0f, 0.5f}), std::sqrt(2.0f), 1e-6f);  // off an edge
     EXPECT_NEAR(bvh.distance({2.0f, 2.0f, 2.0f}), std::sqrt(3.0f), 1e-6f);  // off a corner
-    EXPECT_NEAR(bvh.distance({0.5f, 0.5f, 0.4f}), 0.4f, 1e-6f);   // inside: to the nearest face
+    EXPECT_NEAR(bvh.distance({0.5f, 0.5f, 0.4f}), 0.4f, 1e-6f);  // inside: to the nearest face
     EXPECT_TRUE(std::isinf(TriangleBvh(Mesh{}).distance({0, 0, 0})));
 }
 

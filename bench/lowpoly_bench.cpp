@@ -1,0 +1,142 @@
+// Low poly for real (issue 6): every built-in template at its "game" setting (its default
+// resolutions, trunk + crown reduced to at most 800 triangles) against its resolution-200
+// surface, and plain marching cubes at the resolution that reaches the same mean error.
+// Then the time to reduce a ~100k-triangle tree.
+//
+// Columns: input = trunk + crown as meshed; tris = after reduction; cuts = handles cut to
+// get there (lowpoly/handle_cutting.h); ms = the reduction's wall time; closed = both
+// parts closed 2-manifolds;
+// mean / max = one-sided distance from the reduced surface to the resolution-200 surface,
+// in % of the tree's height (20,000 samples); MC res / MC tris = the coarsest plain
+// marching-cubes resolution (trunk and crown) whose mean error is at most the reduced
+// tree's, and its triangles; ratio = MC tris / reduced tris (target >= 5).
+//
+// Usage: sylva-bench-lowpoly [--budget N] [--quick] [TEMPLATE...]
+//   --quick  the reference at resolution 120 instead of 200 (a rough look in a minute)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "app/lowpoly_tree.h"
+#include "app/template_library.h"
+#include "lowpoly/decimate.h"
+#include "lowpoly/fidelity.h"
+#include "lowpoly/merge_meshes.h"
+#include "marching/mesh_checks.h"
+
+namespace {
+
+using namespace sylva;
+
+bool closed(const Mesh& m) {
+    return m.triangles.empty() || check_topology(m).is_closed_manifold();
+}
+
+// Plain marching cubes: the coarsest resolution in `resolutions` whose mean error is at
+// most `target`; {0, 0, 0} when none is.
+struct PlainMatch {
+    int resolution = 0;
+    std::size_t triangles = 0;
+    double mean_percent = 0;
+};
+
+PlainMatch plain_match(const TreeTemplate& tmpl, const Mesh& reference, double target,
+                       int max_resolution) {
+    for (int r : {8, 12, 16, 20, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 160, 200}) {
+        if (r > max_resolution) break;
+        TreeTemplate t = tmpl;
+        t.params.trunk_resolution = r;
+        t.params.crown_resolution = r;
+        const Tree tree = generate_tree(t);
+        const Fidelity f = measure_tree_fidelity(tree.trunk, tree.crown, reference);
+        if (f.mean_percent <= target)
+            return {r, tree.trunk.triangles.size() + tree.crown.triangles.size(), f.mean_percent};
+    }
+    return {};
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::size_t budget = 800;
+    int reference_resolution = 200;
+    std::vector<std::string> names;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--budget" && i + 1 < argc)
+            budget = std::strtoul(argv[++i], nullptr, 10);
+        else if (arg == "--quick")
+            reference_resolution = 120;
+        else
+            names.push_back(arg);
+    }
+    if (names.empty())
+        for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
+
+    std::printf("game budget: trunk + crown <= %zu triangles; reference: resolution %d\n\n", budget,
+                reference_resolution);
+    std::printf("%-9s %7s %5s %4s %5s %6s %6s %6s | %6s %8s %6s | %s\n", "template", "input",
+                "tris", "cuts", "ms", "closed", "mean%", "max%", "MC res", "MC tris", "ratio",
+                "note");
+    for (const std::string& name : names) {
+        const TreeTemplate tmpl = load_template(name);
+        const Tree tree = generate_tree(tmpl);
+        TreeBudget b;
+        b.total = budget;
+        const auto start = std::chrono::steady_clock::now();
+        const ReducedTree reduced = reduce_tree(tree, b);
+        const double reduce_ms = ms_since(start);
+        const Mesh reference = reference_surface(tmpl, reference_resolution);
+        const Fidelity f = measure_tree_fidelity(reduced.trunk, reduced.crown, reference);
+        const PlainMatch plain = plain_match(tmpl, reference, f.mean_percent, reference_resolution);
+        const bool is_closed = closed(reduced.trunk) && closed(reduced.crown);
+        char ratio[16] = "-";
+        if (plain.resolution > 0)
+            std::snprintf(
+                ratio, sizeof ratio, "%.1fx",
+                static_cast<double>(plain.triangles) / std::max<std::size_t>(reduced.triangles, 1));
+        std::printf("%-9s %7zu %5zu %4d %5.0f %6s %6.3f %6.3f | %6d %8zu %6s | %s\n", name.c_str(),
+                    tree.trunk.triangles.size() + tree.crown.triangles.size(), reduced.triangles,
+                    reduced.handles_cut, reduce_ms, is_closed ? "yes" : "NO", f.mean_percent,
+                    f.max_percent, plain.resolution, plain.triangles, ratio,
+                    reduced.within_budget ? "" : reduced.note.c_str());
+        std::fflush(stdout);
+    }
+
+    // Reduction speed: the default tree meshed to about 100k triangles, best of 5.
+    TreeTemplate tmpl = default_template();
+    Tree tree;
+    for (int r = 80; r <= 200; r += 5) {
+        tmpl.params.trunk_resolution = r;
+        tmpl.params.crown_resolution = r;
+        tree = generate_tree(tmpl);
+        if (tree.trunk.triangles.size() + tree.crown.triangles.size() >= 100'000) break;
+    }
+    double best_ms = 1e30, best_cpu_ms = 1e30;
+    ReducedTree r;
+    TreeBudget b;
+    b.total = budget;
+    for (int i = 0; i < 5; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        const std::clock_t cpu = std::clock();
+        r = reduce_tree(tree, b);
+        best_ms = std::min(best_ms, ms_since(start));
+        best_cpu_ms = std::min(best_cpu_ms,
+                               1000.0 * static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC);
+    }
+    std::printf(
+        "\nreduce %zu triangles (%s at resolution %d) to %zu: %.0f ms wall, %.0f ms CPU "
+        "(best of 5; target < 500 ms)\n",
+        tree.trunk.triangles.size() + tree.crown.triangles.size(), tmpl.name.c_str(),
+        tmpl.params.trunk_resolution, r.triangles, best_ms, best_cpu_ms);
+    return 0;
+}

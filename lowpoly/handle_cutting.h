@@ -1,0 +1,30 @@
+// Topology simplification for budgets that handles would not allow. Where branches cross,
+// the union of their cones closes a loop: the surface gets a handle (genus), and no edge
+// collapse that keeps the manifold can remove it, so every handle pins some dozen
+// triangles (the willow's 200 handles alone need 2,600). Cutting a handle along its
+// shortest non-separating loop (usually around the thinner branch, next to the crossing)
+// and capping both sides removes it with a change of shape the size of that branch's
+// cross-section, invisible at game scale. The result stays a closed, consistently
+// oriented 2-manifold.
+#pragma once
+
+#include <cstddef>
+
+#include "marching/mesh.h"
+
+namespace sylva {
+
+// Sum over the connected components of their genus (from V - E + F); the mesh must be a
+// closed 2-manifold.
+std::size_t genus(const Mesh& mesh);
+
+// Cuts up to `max_cuts` handles, shortest loops first (loops through a deterministic
+// sample of root vertices: Erickson and Whittlesey's greedy system of loops, whose
+// shortest member is the shortest non-separating loop through its root). Each cut
+// duplicates the loop's vertices and closes both sides with a fan around the loop's
+// centroid; a cut that would not lower the genus by one or would break the manifold
+// (check_topology) is undone and skipped. Returns the number of handles cut.
+// Precondition: a closed 2-manifold. Deterministic.
+std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts);
+
+}  // namespace sylva
