@@ -189,4 +189,12 @@ double enclosed_volume(const Mesh& mesh) {
     return six_volume / 6.0;
 }
 
+std::string to_string(const MeshTopology& t) {
+    return "boundary " + std::to_string(t.boundary_edges) + ", non-manifold edges " +
+           std::to_string(t.non_manifold_edges) + ", misoriented " +
+           std::to_string(t.misoriented_edges) + ", degenerate " +
+           std::to_string(t.degenerate_triangles) + ", non-manifold vertices " +
+           std::to_string(t.non_manifold_vertices);
+}
+
 }  // namespace sylva

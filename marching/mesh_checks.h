@@ -5,6 +5,7 @@
 #include "marching/mesh.h"
 
 #include <cstddef>
+#include <string>
 
 namespace sylva {
 
@@ -23,6 +24,9 @@ struct MeshTopology {
 };
 
 MeshTopology check_topology(const Mesh& mesh);
+
+// "boundary 0, non-manifold edges 0, ..." for messages and test failures.
+std::string to_string(const MeshTopology& topology);
 
 double surface_area(const Mesh& mesh);
 

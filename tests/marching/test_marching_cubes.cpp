@@ -1,3 +1,4 @@
+#include "closed_manifold.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,24 +42,6 @@ MarchingCubesSettings settings(int resolution, int padding = 2) {
     s.resolution = resolution;
     s.padding_cells = padding;
     return s;
-}
-
-std::string describe(const MeshTopology& t) {
-    return "boundary " + std::to_string(t.boundary_edges) + ", non-manifold edges " +
-           std::to_string(t.non_manifold_edges) + ", misoriented " +
-           std::to_string(t.misoriented_edges) + ", degenerate " +
-           std::to_string(t.degenerate_triangles) + ", non-manifold vertices " +
-           std::to_string(t.non_manifold_vertices);
-}
-
-void expect_closed_manifold(const Mesh& mesh) {
-    const MeshTopology t = check_topology(mesh);
-    EXPECT_EQ(t.boundary_edges, 0u);
-    EXPECT_EQ(t.non_manifold_edges, 0u);
-    EXPECT_EQ(t.misoriented_edges, 0u);
-    EXPECT_EQ(t.degenerate_triangles, 0u);
-    EXPECT_EQ(t.non_manifold_vertices, 0u);
-    EXPECT_TRUE(t.is_closed_manifold()) << describe(t);
 }
 
 // Every vertex lies within `box` grown by `margin` on every side.

@@ -1,6 +1,8 @@
 // The sparse mesher against the dense one: the same mesh, byte for byte, for 1-Lipschitz
 // fields, at a fraction of the evaluations; and the settings (threads, progress, cancel,
 // stats) honoured by both.
+#include "closed_manifold.h"
+#include "sdf/capped_cone.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,35 +67,11 @@ BatchField sphere_cloud(std::uint32_t seed, int count, float min_radius, float m
     });
 }
 
-// Inigo Quilez's exact capped cone, as in sdf/capped_cone.cpp (marching/ does not link sdf/).
-struct Cone {
-    glm::vec3 a, b;
-    float ra, rb;
-};
-
-float cone_distance(const Cone& c, const glm::vec3& p) {
-    const float rba = c.rb - c.ra;
-    const glm::vec3 ba = c.b - c.a;
-    const glm::vec3 pa = p - c.a;
-    const float baba = glm::dot(ba, ba);
-    const float papa = glm::dot(pa, pa);
-    const float paba = glm::dot(pa, ba) / baba;
-    const float x = std::sqrt(std::max(papa - paba * paba * baba, 0.0f));
-    const float cax = std::max(0.0f, x - (paba < 0.5f ? c.ra : c.rb));
-    const float cay = std::abs(paba - 0.5f) - 0.5f;
-    const float k = rba * rba + baba;
-    const float f = std::clamp((rba * (x - c.ra) + paba * baba) / k, 0.0f, 1.0f);
-    const float cbx = x - c.ra - f * rba;
-    const float cby = paba - f;
-    const float s = (cbx < 0.0f && cay < 0.0f) ? -1.0f : 1.0f;
-    return s * std::sqrt(std::min(cax * cax + cay * cay * baba, cbx * cbx + cby * cby * baba));
-}
-
 // Random branches in [-1, 1]^3, clamped at `margin` like sylva's culled ConeField (the
 // clamp keeps it 1-Lipschitz but caps what the bound can prove).
 BatchField cone_cloud(std::uint32_t seed, int count, float margin) {
     std::mt19937 rng(seed);
-    std::vector<Cone> cones(count);
+    std::vector<CappedCone> cones(count);
     for (auto& c : cones) {
         c.a = glm::vec3(next_unit(rng), next_unit(rng), next_unit(rng)) * 1.6f - 0.8f;
         c.b = c.a + (glm::vec3(next_unit(rng), next_unit(rng), next_unit(rng)) - 0.5f) * 0.5f;
@@ -110,7 +88,7 @@ BatchField cone_cloud(std::uint32_t seed, int count, float margin) {
         float d = margin;
         for (std::size_t i = 0; i < cones.size(); ++i) {
             if (glm::length(p - glm::vec3(bounds[i])) - bounds[i].w >= d) continue;
-            d = std::min(d, cone_distance(cones[i], p));
+            d = std::min(d, distance(cones[i], p));
         }
         return d;
     });
@@ -126,19 +104,6 @@ MarchingCubesSettings settings(int resolution, int padding = 2, int threads = 0)
     s.padding_cells = padding;
     s.threads = threads;
     return s;
-}
-
-std::string describe(const MeshTopology& t) {
-    return "boundary " + std::to_string(t.boundary_edges) + ", non-manifold edges " +
-           std::to_string(t.non_manifold_edges) + ", misoriented " +
-           std::to_string(t.misoriented_edges) + ", degenerate " +
-           std::to_string(t.degenerate_triangles) + ", non-manifold vertices " +
-           std::to_string(t.non_manifold_vertices);
-}
-
-void expect_closed_manifold(const Mesh& mesh) {
-    const MeshTopology t = check_topology(mesh);
-    EXPECT_TRUE(t.is_closed_manifold()) << describe(t);
 }
 
 // Same vertices in the same order, bit for bit, and the same triangles.

@@ -1,0 +1,16 @@
+// Test helper: the mesh is a closed, consistently oriented 2-manifold without degenerate
+// triangles, with every failing count reported.
+#pragma once
+
+#include "marching/mesh_checks.h"
+
+#include <gtest/gtest.h>
+
+namespace sylva {
+
+inline void expect_closed_manifold(const Mesh& mesh) {
+    const MeshTopology t = check_topology(mesh);
+    EXPECT_TRUE(t.is_closed_manifold()) << to_string(t);
+}
+
+}  // namespace sylva
