@@ -166,19 +166,25 @@ Box skeleton_bounds(const Skeleton& skeleton) {
 
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p) {
     TreeFields fields;
+    // The joint blend swells the union by up to joint_blend / 4 where cones meet.
+    float joint_blend = static_cast<float>(p.joint_blend);
     fields.trunk_box = skeleton_bounds(skeleton);
+    fields.trunk_box.min -= glm::vec3(joint_blend);
+    fields.trunk_box.max += glm::vec3(joint_blend);
     float trunk_cell = cell_size(fields.trunk_box, p.trunk_resolution);
     std::vector<CappedCone> cones = resolvable_cones(skeleton, trunk_cell);
-    float joint_blend = static_cast<float>(p.joint_blend);
     if (!cones.empty())
         fields.trunk.emplace(std::move(cones), kFieldMarginInCells * trunk_cell + joint_blend,
                              joint_blend);
 
     std::vector<Ball> balls = crown_spheres(skeleton, p);
     if (!balls.empty() && p.sphere_diameter > 0.0) {
-        fields.crown_box = crown_bounds(balls);
-        float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
         float fusion = static_cast<float>(p.crown_fusion);
+        // The root smooth min swells the union by up to fusion / 2 where spheres meet.
+        fields.crown_box = crown_bounds(balls);
+        fields.crown_box.min -= glm::vec3(fusion);
+        fields.crown_box.max += glm::vec3(fusion);
+        float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
         float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
         if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
             // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.

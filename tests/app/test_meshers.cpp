@@ -120,3 +120,33 @@ INSTANTIATE_TEST_SUITE_P(Resolutions, EveryTemplate, ::testing::Values(10, 25, 6
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// Nothing reaches the grid's outer node layer (where meshes would be capped flat), even
+// with the strongest blends at a fine grid: the boxes grow with what the blends add.
+TEST(Boxes, StrongBlendsAreNeverClippedByTheGrid) {
+    TreeTemplate t = load_template("spruce");
+    t.params.crown_fusion = 0.1;
+    t.params.joint_blend = 0.2;
+    t.params.trunk_resolution = t.params.crown_resolution = 200;
+    Skeleton skeleton = grow_skeleton(t);
+    TreeFields fields = tree_fields(skeleton, t.params);
+    for (const Part& part : parts_of(fields)) {
+        SCOPED_TRACE(part.name);
+        MarchingCubesSettings settings;
+        settings.resolution = 200;
+        Grid grid = make_grid(part.box, settings);
+        glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
+        Mesh mesh = mesh_with(Mesher::Sparse, part, 200);
+        for (const glm::vec3& p : mesh.positions)
+            for (int a = 0; a < 3; ++a) {
+                ASSERT_GT(p[a], grid.origin[a] + grid.h);
+                ASSERT_LT(p[a], far[a] - grid.h);
+            }
+    }
+}
+
+}  // namespace
+}  // namespace sylva
