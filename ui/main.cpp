@@ -4,9 +4,11 @@
 
 #include "app/errors.h"
 #include "app/pipeline.h"
+#include "app/template_library.h"
 #include "ui/backdrop.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
 #include "ui/panels.h"
@@ -24,6 +26,7 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -31,8 +34,8 @@ using namespace sylva::studio;
 
 constexpr int kWindowWidth = 1280;
 constexpr int kWindowHeight = 800;
-// Linear RGB; about sRGB (137, 104, 75) where fully lit: a mid-brown bark.
-constexpr glm::vec3 kBarkAlbedo{0.25f, 0.14f, 0.07f};
+constexpr glm::vec3 kSkeletonColor{1.0f, 0.85f, 0.2f};
+constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
 
 // GLFW reports errors through a C callback without a user pointer; the last one is kept to
 // explain a failed window creation.
@@ -46,7 +49,8 @@ void remember_glfw_error(int /*code*/, const char* description) {
 struct Viewport {
     Backdrop backdrop;
     GroundGrid grid;
-    MeshRenderer tree;
+    MeshRenderer trunk, crown, leaves;
+    LineRenderer skeleton;
 };
 
 GLFWwindow* create_window() {
@@ -65,35 +69,58 @@ GLFWwindow* create_window() {
     return window;
 }
 
-sylva::Box mesh_bounds(const sylva::Mesh& mesh) {
-    sylva::Box box{mesh.positions.front(), mesh.positions.front()};
-    for (const glm::vec3& p : mesh.positions) {
-        box.min = glm::min(box.min, p);
-        box.max = glm::max(box.max, p);
-    }
-    return box;
+// Every vertex of the visible parts: what "frame tree" fits into the view.
+std::vector<glm::vec3> visible_points(const StudioState& state) {
+    std::vector<glm::vec3> points;
+    const sylva::Tree& tree = *state.tree;
+    for (const sylva::Mesh* mesh : {&tree.trunk, &tree.crown, &tree.leaves})
+        points.insert(points.end(), mesh->positions.begin(), mesh->positions.end());
+    for (const sylva::Segment& s : tree.skeleton.segments) points.insert(points.end(), {s.a, s.b});
+    return points;
 }
 
-// A freshly generated tree: upload it, frame the camera on it, lay the ground grid under it.
-void show_tree(Viewport& viewport, StudioState& state, float aspect) {
-    const sylva::Mesh& mesh = state.tree->trunk;
-    viewport.tree.upload(mesh);
-    if (mesh.positions.empty()) return;
-    sylva::Box box = mesh_bounds(mesh);
-    frame_points(state.camera, mesh.positions, aspect);
-    glm::vec3 size = box.max - box.min;
-    float horizontal_radius = 0.5f * std::max(size.x, size.z);
-    float radius = std::max(1.6f * horizontal_radius, 0.8f * size.y);
-    viewport.grid.layout(0.5f * (box.min + box.max), radius, grid_cell_for(2.0f * radius));
+// A freshly generated tree: upload its parts and skeleton.
+void upload_tree(Viewport& viewport, const sylva::Tree& tree) {
+    viewport.trunk.upload(tree.trunk);
+    viewport.crown.upload(tree.crown);
+    viewport.leaves.upload(tree.leaves);
+    std::vector<glm::vec3> lines;
+    for (const sylva::Segment& s : tree.skeleton.segments) lines.insert(lines.end(), {s.a, s.b});
+    viewport.skeleton.upload(lines);
+}
+
+// Fits the camera to the tree and lays the ground grid under it.
+void frame_tree(Viewport& viewport, StudioState& state, float aspect) {
+    std::vector<glm::vec3> points = visible_points(state);
+    if (points.empty()) return;
+    frame_points(state.camera, points, aspect);
+    glm::vec3 low = points.front(), high = points.front();
+    for (const glm::vec3& p : points) low = glm::min(low, p), high = glm::max(high, p);
+    glm::vec3 size = high - low;
+    float radius = std::max(1.6f * 0.5f * std::max(size.x, size.z), 0.8f * size.y);
+    viewport.grid.layout(0.5f * (low + high), radius, grid_cell_for(2.0f * radius));
 }
 
 // The 3D view takes the mouse only when ImGui does not want it (not over or dragging a panel).
 void handle_camera_input(StudioState& state) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
-        orbit(state.camera, {io.MouseDelta.x, io.MouseDelta.y});
+    glm::vec2 delta{io.MouseDelta.x, io.MouseDelta.y};
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) orbit(state.camera, delta);
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+        pan(state.camera, delta, io.DisplaySize.y);
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
+}
+
+// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame. (ImGui 1.86 indexes keys
+// by the platform backend's codes, GLFW's here.)
+void handle_shortcuts(StudioState& state) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_E)) start_export(state);
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) io.KeyShift ? redo(state) : undo(state);
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) redo(state);
+    if (!io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_F))
+        state.frame_requested = true;
 }
 
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height) {
@@ -104,8 +131,22 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
     float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     glm::mat4 view = view_matrix(state.camera);
     glm::mat4 projection = projection_matrix(state.camera, aspect);
-    viewport.tree.draw(view, projection, kBarkAlbedo);
+    const sylva::PartColors& colors = state.shown_template.colors;
+    const ViewToggles& show = state.view;
+    struct Part {
+        bool on;
+        const MeshRenderer& renderer;
+        glm::vec3 color;
+    };
+    for (const Part& part : {Part{show.trunk, viewport.trunk, colors.trunk},
+                             Part{show.crown, viewport.crown, colors.crown},
+                             Part{show.leaves, viewport.leaves, colors.leaves}}) {
+        if (!part.on) continue;
+        part.renderer.draw(view, projection, part.color);
+        if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
+    }
     viewport.grid.draw(view, projection);
+    if (show.skeleton) viewport.skeleton.draw(view, projection, kSkeletonColor);
 }
 
 // The window's loop; returns main's exit code. In screenshot mode it stops after the
@@ -113,8 +154,7 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
 int run(GLFWwindow* window, const StudioOptions& options) {
     Viewport viewport;
     StudioState state;
-    state.tree_template = sylva::default_template();
-    start_generation(state);
+    load_template_into(state, sylva::load_template(options.tree_template));
 
     int frames_with_tree = 0;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
@@ -123,7 +163,15 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         glfwGetFramebufferSize(window, &width, &height);
         float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
 
-        if (collect_generation(state)) show_tree(viewport, state, aspect);
+        poll_jobs(state);
+        if (state.tree_changed) {
+            upload_tree(viewport, *state.tree);
+            state.tree_changed = false;
+        }
+        if (state.frame_requested && state.tree) {
+            frame_tree(viewport, state, aspect);
+            state.frame_requested = false;
+        }
         if (options.screenshot_path && !state.error.empty()) {
             std::fprintf(stderr, "sylva-studio: %s\n", state.error.c_str());
             return 1;
@@ -133,13 +181,20 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         draw_sylva_panel(state);
+        draw_status_bar(state, static_cast<float>(width), static_cast<float>(height));
         handle_camera_input(state);
+        handle_shortcuts(state);
         ImGui::Render();
+
+        // Live mode follows every edit; a new generation cancels the stale one. The undo
+        // history records an edit once the widget is let go.
+        if (state.live && edit_pending(state)) start_generation(state);
+        if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
         render_viewport(viewport, state, width, height);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (options.screenshot_path && state.tree &&
+        if (options.screenshot_path && state.tree && !generation_running(state) &&
             ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
             return 0;

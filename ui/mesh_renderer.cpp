@@ -26,8 +26,13 @@ constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_view_position;
 uniform vec3 u_albedo;
 uniform vec3 u_up;  // world +Y in view space
+uniform bool u_unlit;  // the wireframe overlay: plain colour
 out vec4 frag_color;
 void main() {
+    if (u_unlit) {
+        frag_color = vec4(pow(u_albedo, vec3(1.0 / 2.2)), 1.0);
+        return;
+    }
     vec3 n = normalize(cross(dFdx(v_view_position), dFdy(v_view_position)));
     vec3 to_eye = normalize(-v_view_position);
     vec3 key_direction = normalize(vec3(-0.5, 0.6, 0.65));
@@ -75,8 +80,24 @@ void MeshRenderer::upload(const Mesh& mesh) {
     index_count_ = static_cast<GLsizei>(3 * mesh.triangles.size());
 }
 
+void MeshRenderer::draw_wireframe(const glm::mat4& view, const glm::mat4& projection,
+                                  const glm::vec3& color) const {
+    if (index_count_ == 0) return;
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glEnable(GL_POLYGON_OFFSET_LINE);
+    glPolygonOffset(-1.0f, -1.0f);  // the lines win the depth test against their own faces
+    draw_with(view, projection, color, true);
+    glDisable(GL_POLYGON_OFFSET_LINE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
 void MeshRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
                         const glm::vec3& albedo) const {
+    draw_with(view, projection, albedo, false);
+}
+
+void MeshRenderer::draw_with(const glm::mat4& view, const glm::mat4& projection,
+                             const glm::vec3& albedo, bool unlit) const {
     if (index_count_ == 0) return;
     glm::vec3 up = glm::mat3(view) * glm::vec3(0.0f, 1.0f, 0.0f);
     glUseProgram(program_.id());
@@ -84,6 +105,7 @@ void MeshRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
     glUniformMatrix4fv(program_.uniform("u_projection"), 1, GL_FALSE, glm::value_ptr(projection));
     glUniform3fv(program_.uniform("u_albedo"), 1, glm::value_ptr(albedo));
     glUniform3fv(program_.uniform("u_up"), 1, glm::value_ptr(up));
+    glUniform1i(program_.uniform("u_unlit"), unlit ? 1 : 0);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);

@@ -18,14 +18,20 @@ class MeshRenderer {
     MeshRenderer(const MeshRenderer&) = delete;
     MeshRenderer& operator=(const MeshRenderer&) = delete;
 
-    // Replaces the GPU copy. The mesh must be closed and counter-clockwise seen from
-    // outside: back faces are culled.
+    // Replaces the GPU copy. Triangles must be counter-clockwise seen from where they show:
+    // back faces are culled (leaves carry both windings).
     void upload(const Mesh& mesh);
 
     // `albedo` is in linear RGB; the output is gamma-encoded for an 8-bit framebuffer.
     void draw(const glm::mat4& view, const glm::mat4& projection, const glm::vec3& albedo) const;
+    // The triangle edges in one unlit colour, drawn over the faces.
+    void draw_wireframe(const glm::mat4& view, const glm::mat4& projection,
+                        const glm::vec3& color) const;
 
   private:
+    void draw_with(const glm::mat4& view, const glm::mat4& projection, const glm::vec3& albedo,
+                   bool unlit) const;
+
     GlProgram program_;
     GLuint vertex_array_ = 0;
     GLuint vertex_buffer_ = 0;

@@ -58,6 +58,16 @@ void orbit(OrbitCamera& camera, glm::vec2 pixels) {
         std::clamp(camera.pitch_deg + kDegreesPerPixel * pixels.y, -kMaxPitchDeg, kMaxPitchDeg);
 }
 
+void pan(OrbitCamera& camera, glm::vec2 pixels, float viewport_height) {
+    glm::vec3 back = back_direction(camera);
+    glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), back));
+    glm::vec3 up = glm::cross(back, right);
+    // Meters per pixel at the target's depth, so the tree follows the mouse.
+    float meters = 2.0f * camera.distance * std::tan(0.5f * glm::radians(camera.fov_y_deg)) /
+                   std::max(viewport_height, 1.0f);
+    camera.target += (-pixels.x * right + pixels.y * up) * meters;
+}
+
 void zoom(OrbitCamera& camera, float steps) {
     camera.distance *= std::pow(kZoomPerStep, steps);
     camera.distance =

@@ -26,6 +26,10 @@ void frame_points(OrbitCamera& camera, std::span<const glm::vec3> points, float 
 // Left-drag: `pixels` is the mouse movement since the last frame.
 void orbit(OrbitCamera& camera, glm::vec2 pixels);
 
+// Right- or middle-drag: slides the target in the view plane, `pixels` since the last frame,
+// for a viewport `viewport_height` pixels tall.
+void pan(OrbitCamera& camera, glm::vec2 pixels, float viewport_height);
+
 // Scroll: positive `steps` move closer. Distance is clamped to a range around the scene.
 void zoom(OrbitCamera& camera, float steps);
 

@@ -1,0 +1,33 @@
+// Draws line segments in one colour: the skeleton (the turtle graphic of seed 001's table
+// 4.4) over or through the meshes.
+#pragma once
+
+#include "ui/gl_program.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <span>
+
+namespace sylva::studio {
+
+class LineRenderer {
+public:
+    LineRenderer();  // needs a current GL 3.3 context
+    ~LineRenderer();
+    LineRenderer(const LineRenderer&) = delete;
+    LineRenderer& operator=(const LineRenderer&) = delete;
+
+    // Pairs of points: (points[0], points[1]) is the first segment, and so on.
+    void upload(std::span<const glm::vec3> points);
+    // Drawn without depth test, so the skeleton shows through the bark.
+    void draw(const glm::mat4& view, const glm::mat4& projection, const glm::vec3& color) const;
+
+private:
+    GlProgram program_;
+    GLuint vertex_array_ = 0;
+    GLuint vertex_buffer_ = 0;
+    GLsizei vertex_count_ = 0;
+};
+
+}  // namespace sylva::studio
