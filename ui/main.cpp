@@ -34,6 +34,8 @@ using namespace sylva::studio;
 
 constexpr int kWindowWidth = 1280;
 constexpr int kWindowHeight = 800;
+constexpr int kPanelReserve = 396;  // pixels: the side panel's width and margin
+constexpr int kStatusReserve = 36;  // pixels: the status bar
 constexpr glm::vec3 kSkeletonColor{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
 
@@ -123,12 +125,27 @@ void handle_shortcuts(StudioState& state) {
         state.frame_requested = true;
 }
 
+// The part of the window the tree is drawn in: right of the side panel, above the status
+// bar, so "frame tree" centres it where the artist can see it.
+struct ViewRect {
+    int x, y, width, height;
+    float aspect() const { return static_cast<float>(width) / static_cast<float>(std::max(height, 1)); }
+};
+
+ViewRect view_rect(int width, int height) {
+    const int left = std::min(kPanelReserve, width / 2);
+    const int bottom = std::min(kStatusReserve, height / 4);
+    return {left, bottom, std::max(width - left, 1), std::max(height - bottom, 1)};
+}
+
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height) {
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     viewport.backdrop.draw();
-    float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    const ViewRect rect = view_rect(width, height);
+    glViewport(rect.x, rect.y, rect.width, rect.height);
+    float aspect = rect.aspect();
     glm::mat4 view = view_matrix(state.camera);
     glm::mat4 projection = projection_matrix(state.camera, aspect);
     const sylva::PartColors& colors = state.shown_template.colors;
@@ -161,12 +178,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         glfwPollEvents();
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
-        float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+        float aspect = view_rect(width, height).aspect();
 
         poll_jobs(state);
         if (state.tree_changed) {
             upload_tree(viewport, *state.tree);
             state.tree_changed = false;
+            state.frame_requested |= state.frame_next_tree;
+            state.frame_next_tree = false;
         }
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
@@ -197,10 +216,11 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (options.screenshot_path && state.tree && !generation_running(state) &&
             ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
-            return 0;
+            break;
         }
         glfwSwapBuffers(window);
     }
+    cancel_generations(state);  // do not keep the window waiting for stale work on exit
     return 0;
 }
 

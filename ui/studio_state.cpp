@@ -42,7 +42,7 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
     state.undo.clear();
     state.redo.clear();
     state.committed = current_edit(state);
-    state.frame_requested = true;
+    state.frame_next_tree = true;
     start_generation(state);
 }
 
@@ -68,6 +68,11 @@ void start_generation(StudioState& state) {
 }
 
 bool generation_running(const StudioState& state) { return state.job.has_value(); }
+
+void cancel_generations(StudioState& state) {
+    if (state.job) state.job->cancel->store(true);
+    for (GenerationJob& job : state.stale) job.cancel->store(true);
+}
 
 float generation_progress(const StudioState& state) {
     return state.job ? state.job->progress->load() : 1.0f;

@@ -75,7 +75,8 @@ struct StudioState {
 
     ViewToggles view;
     OrbitCamera camera;
-    bool frame_requested = true;
+    bool frame_requested = false;  // frame the tree on screen now ("frame tree", F)
+    bool frame_next_tree = true;   // frame the next tree that arrives (a new template)
     bool quit_requested = false;
 };
 
@@ -86,6 +87,9 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template);
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);
+
+// Asks every running generation to stop (on exit).
+void cancel_generations(StudioState& state);
 float generation_progress(const StudioState& state);
 
 // Takes finished jobs without blocking: a finished generation replaces `tree` (or sets

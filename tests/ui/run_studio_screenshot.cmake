@@ -1,5 +1,5 @@
 # Runs sylva-studio under a virtual X server, saves a screenshot and checks it.
-# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800 -P this
+# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800 [-DTEMPLATE=name] -P this
 # Any failure ends in FATAL_ERROR, which makes cmake -P (and so the test) exit non-zero.
 foreach(var STUDIO CHECKER OUTPUT WIDTH HEIGHT)
   if(NOT DEFINED ${var})
@@ -14,11 +14,16 @@ if(NOT XVFB_RUN)
     "(Debian: apt-get install xvfb)")
 endif()
 
+set(template_args "")
+if(DEFINED TEMPLATE)
+  set(template_args --template "${TEMPLATE}")
+endif()
+
 file(REMOVE "${OUTPUT}")
 # -a picks a free display number so parallel runs do not collide; 24-bit depth for GLX.
 execute_process(
   COMMAND "${XVFB_RUN}" -a -s "-screen 0 1600x1200x24"
-          "${STUDIO}" --screenshot "${OUTPUT}" --frames 5
+          "${STUDIO}" ${template_args} --screenshot "${OUTPUT}" --frames 5
   RESULT_VARIABLE studio_result
   TIMEOUT 120)
 if(NOT studio_result EQUAL 0)
