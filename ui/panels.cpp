@@ -240,6 +240,8 @@ void draw_status_bar(StudioState& state, float width, float height) {
         ImGui::SameLine();
         ImGui::TextColored(kErrorColor, "  (the last edit failed; showing the last good tree)");
     }
+    ImGui::SameLine(width - 90.0f);
+    ImGui::TextDisabled("%5.0f fps", ImGui::GetIO().Framerate);
     ImGui::End();
 }
 
