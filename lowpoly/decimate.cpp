@@ -114,11 +114,26 @@ class Guards {
     // Walks v0's outgoing halfedges (each face around v0 is v0 -> a -> b, with v0 moved
     // to p1) in plain arithmetic and squares: this runs for every promising candidate.
     bool hold(const OmMesh& mesh, const OpenMesh::Decimater::CollapseInfoT<OmMesh>& ci) const {
-        const double px = ci.p1[0], py = ci.p1[1], pz = ci.p1[2];
+        return fan_within_limits(mesh, ci.v0, ci.p1, ci.fl, ci.fr);
+    }
+
+    // Moving v to `to` keeps every triangle around it within the limits (the same test for
+    // a vertex that moves instead of one that merges).
+    bool allow_move(const OmMesh& mesh, OmMesh::VertexHandle v, const OmMesh::Point& to) const {
+        return fan_within_limits(mesh, v, to, OmMesh::FaceHandle(), OmMesh::FaceHandle());
+    }
+
+  private:
+    // Every face around v, with v moved to `to` (faces `skip_a` and `skip_b`, which a
+    // collapse removes, left out), keeps a non-sliver area and turns its normal by no more
+    // than the limit.
+    bool fan_within_limits(const OmMesh& mesh, OmMesh::VertexHandle v, const OmMesh::Point& to,
+                           OmMesh::FaceHandle skip_a, OmMesh::FaceHandle skip_b) const {
+        const double px = to[0], py = to[1], pz = to[2];
         const double min_cos2 = min_cos_ * min_cos_;
-        return mesh.all_outgoing(ci.v0, [&](OmMesh::HalfedgeHandle h) {
+        return mesh.all_outgoing(v, [&](OmMesh::HalfedgeHandle h) {
             const auto fh = mesh.face_handle(h);
-            if (!fh.is_valid() || fh == ci.fl || fh == ci.fr) return true;
+            if (!fh.is_valid() || fh == skip_a || fh == skip_b) return true;
             const auto& a = mesh.point(mesh.to_vertex_handle(h));
             const auto& b = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
             const double ax = a[0] - px, ay = a[1] - py, az = a[2] - pz;
@@ -134,29 +149,6 @@ class Guards {
         });
     }
 
-    // Moving v to `to` keeps every triangle around it within the limits (the same test for
-    // a vertex that moves instead of one that merges).
-    bool allow_move(const OmMesh& mesh, OmMesh::VertexHandle v, const OmMesh::Point& to) const {
-        const double px = to[0], py = to[1], pz = to[2];
-        const double min_cos2 = min_cos_ * min_cos_;
-        return mesh.all_outgoing(v, [&](OmMesh::HalfedgeHandle h) {
-            const auto fh = mesh.face_handle(h);
-            if (!fh.is_valid()) return true;
-            const auto& a = mesh.point(mesh.to_vertex_handle(h));
-            const auto& b = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
-            const double ax = a[0] - px, ay = a[1] - py, az = a[2] - pz;
-            const double bx = b[0] - px, by = b[1] - py, bz = b[2] - pz;
-            const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
-            const double n2 = nx * nx + ny * ny + nz * nz;
-            if (n2 <= min_twice_area_squared_) return false;
-            const auto& old = mesh.normal(fh);
-            const double d = nx * old[0] + ny * old[1] + nz * old[2];
-            return min_cos_ >= 0.0 ? (d >= 0.0 && d * d >= min_cos2 * n2)
-                                   : (d >= 0.0 || d * d <= min_cos2 * n2);
-        });
-    }
-
-  private:
     double min_cos_;
     double min_twice_area_squared_;
 };
