@@ -41,20 +41,7 @@ float grid_cell_for(float size) {
     return 10.0f * decade;
 }
 
-GroundGrid::GroundGrid() : program_("ground grid", kVertexShader, kFragmentShader) {
-    glGenVertexArrays(1, &vertex_array_);
-    glGenBuffers(1, &vertex_buffer_);
-    glBindVertexArray(vertex_array_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    glBindVertexArray(0);
-}
-
-GroundGrid::~GroundGrid() {
-    glDeleteBuffers(1, &vertex_buffer_);
-    glDeleteVertexArrays(1, &vertex_array_);
-}
+GroundGrid::GroundGrid() : program_("ground grid", kVertexShader, kFragmentShader) {}
 
 void GroundGrid::layout(glm::vec3 centre, float radius, float cell) {
     assert(radius > 0.0f && cell > 0.0f);
@@ -73,15 +60,11 @@ void GroundGrid::layout(glm::vec3 centre, float radius, float cell) {
         lines.push_back(centre_ + glm::vec3(-extent, 0.0f, offset));
         lines.push_back(centre_ + glm::vec3(extent, 0.0f, offset));
     }
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(glm::vec3)),
-                 lines.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    vertex_count_ = static_cast<GLsizei>(lines.size());
+    lines_.upload(lines);
 }
 
 void GroundGrid::draw(const glm::mat4& view, const glm::mat4& projection) const {
-    if (vertex_count_ == 0) return;
+    if (lines_.count() == 0) return;
     glm::mat4 view_projection = projection * view;
     glUseProgram(program_.id());
     glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE,
@@ -92,9 +75,7 @@ void GroundGrid::draw(const glm::mat4& view, const glm::mat4& projection) const 
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(vertex_array_);
-    glDrawArrays(GL_LINES, 0, vertex_count_);
-    glBindVertexArray(0);
+    lines_.draw(GL_LINES);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 }

@@ -6,15 +6,13 @@
 #include <glm/vec3.hpp>
 
 #include "ui/gl_program.h"
+#include "ui/position_buffer.h"
 
 namespace sylva::studio {
 
 class GroundGrid {
   public:
     GroundGrid();  // needs a current GL 3.3 context
-    ~GroundGrid();
-    GroundGrid(const GroundGrid&) = delete;
-    GroundGrid& operator=(const GroundGrid&) = delete;
 
     // Lays out lines every `cell` meters around `centre` (its y is ignored) out to about
     // `radius` meters. Both must be positive.
@@ -25,9 +23,7 @@ class GroundGrid {
 
   private:
     GlProgram program_;
-    GLuint vertex_array_ = 0;
-    GLuint vertex_buffer_ = 0;
-    GLsizei vertex_count_ = 0;
+    PositionBuffer lines_;
     glm::vec3 centre_{0.0f};
     float radius_ = 1.0f;
 };

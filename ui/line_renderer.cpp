@@ -19,40 +19,20 @@ void main() { frag_color = vec4(u_color, 1.0); }
 
 }  // namespace
 
-LineRenderer::LineRenderer() : program_("lines", kVertexShader, kFragmentShader) {
-    glGenVertexArrays(1, &vertex_array_);
-    glGenBuffers(1, &vertex_buffer_);
-    glBindVertexArray(vertex_array_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    glBindVertexArray(0);
-}
+LineRenderer::LineRenderer() : program_("lines", kVertexShader, kFragmentShader) {}
 
-LineRenderer::~LineRenderer() {
-    glDeleteBuffers(1, &vertex_buffer_);
-    glDeleteVertexArrays(1, &vertex_array_);
-}
-
-void LineRenderer::upload(std::span<const glm::vec3> points) {
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(points.size_bytes()), points.data(),
-                 GL_STATIC_DRAW);
-    vertex_count_ = static_cast<GLsizei>(points.size());
-}
+void LineRenderer::upload(std::span<const glm::vec3> points) { lines_.upload(points); }
 
 void LineRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
                         const glm::vec3& color) const {
-    if (vertex_count_ == 0) return;
+    if (lines_.count() == 0) return;
     glDisable(GL_DEPTH_TEST);
     glUseProgram(program_.id());
     glm::mat4 view_projection = projection * view;
     glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view_projection));
     glUniform3fv(program_.uniform("u_color"), 1, glm::value_ptr(color));
-    glBindVertexArray(vertex_array_);
-    glDrawArrays(GL_LINES, 0, vertex_count_);
-    glBindVertexArray(0);
+    lines_.draw(GL_LINES);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ui/gl_program.h"
+#include "ui/position_buffer.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -14,9 +15,6 @@ namespace sylva::studio {
 class LineRenderer {
 public:
     LineRenderer();  // needs a current GL 3.3 context
-    ~LineRenderer();
-    LineRenderer(const LineRenderer&) = delete;
-    LineRenderer& operator=(const LineRenderer&) = delete;
 
     // Pairs of points: (points[0], points[1]) is the first segment, and so on.
     void upload(std::span<const glm::vec3> points);
@@ -25,9 +23,7 @@ public:
 
 private:
     GlProgram program_;
-    GLuint vertex_array_ = 0;
-    GLuint vertex_buffer_ = 0;
-    GLsizei vertex_count_ = 0;
+    PositionBuffer lines_;
 };
 
 }  // namespace sylva::studio
