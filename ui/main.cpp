@@ -171,6 +171,7 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
 int run(GLFWwindow* window, const StudioOptions& options) {
     Viewport viewport;
     StudioState state;
+    state.view.low_poly = options.low_poly;
     load_template_into(state, sylva::load_template(options.tree_template));
 
     int frames_with_tree = 0;

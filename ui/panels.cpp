@@ -155,6 +155,10 @@ void view_section(StudioState& state) {
     ImGui::Checkbox("leaves", &v.leaves);
     ImGui::Checkbox("wireframe", &v.wireframe);
     ImGui::SameLine();
+    ImGui::Checkbox("low poly", &v.low_poly);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("show trunk and crown reduced to the export budget (the game mesh)");
+    ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
     ImGui::TextDisabled("left drag: orbit   right drag: pan   wheel: zoom");
 }

@@ -24,6 +24,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
             std::string_view name = value();
             if (name.empty()) throw UsageError("--template needs a name or a file");
             options.tree_template = std::string(name);
+        } else if (arg == "--low-poly") {
+            options.low_poly = true;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -45,11 +47,12 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--screenshot PATH [--frames N]]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
            "  -t, --template T   start with a built-in template or a template/grammar file\n"
+           "  --low-poly         show trunk and crown reduced to 800 triangles (the game mesh)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

@@ -12,6 +12,7 @@ struct StudioOptions {
     std::optional<std::string> screenshot_path;  // render, save a PNG, exit
     int screenshot_frames = 5;                   // frames drawn before the capture
     std::string tree_template = "default";       // a built-in name or a template file
+    bool low_poly = false;                       // start with the low-poly preview on
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

@@ -7,6 +7,7 @@
 #include "marching/marching_cubes.h"
 #include "turtle/grammar_error.h"
 
+#include <algorithm>
 #include <exception>
 
 namespace sylva::studio {
@@ -19,6 +20,11 @@ bool ready(const auto& future) {
 
 Edit current_edit(const StudioState& state) {
     return {state.tree_template.grammar, state.tree_template.params};
+}
+
+// The triangle budget the view shows the tree at: 0 for the full marching-cubes meshes.
+int preview_budget(const StudioState& state) {
+    return state.view.low_poly ? std::max(state.export_settings.budget, 0) : 0;
 }
 
 void apply_edit(StudioState& state, const Edit& edit) {
@@ -57,12 +63,22 @@ void start_generation(StudioState& state) {
     job.started = std::chrono::steady_clock::now();
     job.tree_template = state.tree_template;
     // The worker gets its own copies: editing while it runs is safe.
-    job.result = std::async(std::launch::async, [tree_template = state.tree_template,
+    state.requested_budget = preview_budget(state);
+    const auto budget = static_cast<std::size_t>(state.requested_budget);
+    job.result = std::async(std::launch::async, [tree_template = state.tree_template, budget,
                                                  cancel = job.cancel, progress = job.progress] {
         MeshOptions options;
         options.cancel = cancel.get();
         options.progress = [progress](float f) { progress->store(f); };
-        return generate_tree(tree_template, options);
+        Tree tree = generate_tree(tree_template, options);
+        if (budget > 0) {  // the game mesh, as an export with this budget would write it
+            TreeBudget total;
+            total.total = budget;
+            ReducedTree reduced = reduce_tree(tree, total);
+            tree.trunk = std::move(reduced.trunk);
+            tree.crown = std::move(reduced.crown);
+        }
+        return tree;
     });
     state.job = std::move(job);
 }
@@ -119,7 +135,10 @@ void poll_jobs(StudioState& state) {
     }
 }
 
-bool edit_pending(const StudioState& state) { return !(current_edit(state) == state.requested); }
+bool edit_pending(const StudioState& state) {
+    return !(current_edit(state) == state.requested) ||
+           preview_budget(state) != state.requested_budget;
+}
 
 bool commit_edit(StudioState& state) {
     Edit now = current_edit(state);

@@ -39,6 +39,7 @@ struct ViewToggles {
     bool crown = true;
     bool leaves = true;
     bool wireframe = false;
+    bool low_poly = false;  // show trunk and crown reduced to the export budget
 };
 
 struct ExportSettings {
@@ -55,6 +56,7 @@ struct StudioState {
 
     std::optional<GenerationJob> job;  // the generation whose result will be shown
     Edit requested;                    // the edit the last started generation is for
+    int requested_budget = 0;          // ... and the budget it reduces to (0: it does not)
     std::vector<GenerationJob> stale;  // cancelled generations still finishing
     double last_wall_ms = 0;
     bool live = true;  // regenerate on every edit

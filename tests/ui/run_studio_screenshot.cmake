@@ -1,5 +1,5 @@
 # Runs sylva-studio under a virtual X server, saves a screenshot and checks it.
-# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800 [-DTEMPLATE=name] -P this
+# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800 [-DTEMPLATE=name] [-DEXTRA=--flag] -P this
 # Any failure ends in FATAL_ERROR, which makes cmake -P (and so the test) exit non-zero.
 foreach(var STUDIO CHECKER OUTPUT WIDTH HEIGHT)
   if(NOT DEFINED ${var})
@@ -17,6 +17,9 @@ endif()
 set(template_args "")
 if(DEFINED TEMPLATE)
   set(template_args --template "${TEMPLATE}")
+endif()
+if(DEFINED EXTRA)
+  list(APPEND template_args ${EXTRA})
 endif()
 
 file(REMOVE "${OUTPUT}")
