@@ -74,7 +74,9 @@ void start_generation(StudioState& state) {
         if (budget > 0) {  // the game mesh, as an export with this budget would write it
             TreeBudget total;
             total.total = budget;
-            ReducedTree reduced = reduce_tree(tree, total);
+            DecimateSettings settings;
+            settings.cancel = cancel.get();  // a newer edit stops a long reduction too
+            ReducedTree reduced = reduce_tree(tree, total, settings);
             tree.trunk = std::move(reduced.trunk);
             tree.crown = std::move(reduced.crown);
         }
@@ -121,6 +123,7 @@ void poll_jobs(StudioState& state) {
             state.error_line = e.line();
             state.error_column = e.column();
         } catch (const MeshingCancelled&) {
+        } catch (const DecimationCancelled&) {
         } catch (const std::exception& e) {
             state.error = e.what();
             state.error_line = state.error_column = 0;
