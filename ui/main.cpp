@@ -34,8 +34,6 @@ using namespace sylva::studio;
 
 constexpr int kWindowWidth = 1280;
 constexpr int kWindowHeight = 800;
-constexpr int kPanelReserve = 396;  // pixels: the side panel's width and margin
-constexpr int kStatusReserve = 36;  // pixels: the status bar
 constexpr glm::vec3 kSkeletonColor{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
 
@@ -45,6 +43,18 @@ std::string g_last_glfw_error;
 
 void remember_glfw_error(int /*code*/, const char* description) {
     g_last_glfw_error = description ? description : "unknown GLFW error";
+}
+
+// Keys pressed since the last frame, with their modifiers, recorded by GLFW's key callback
+// (ImGui's backend chains it): ImGui 1.86 samples key state once per frame, so a tap shorter
+// than a frame would be lost to a shortcut that asked ImGui.
+struct KeyPress {
+    int key, mods;
+};
+std::vector<KeyPress> g_key_presses;
+
+void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
+    if (action != GLFW_RELEASE) g_key_presses.push_back({key, mods});
 }
 
 // The GL objects of the 3D view. Destroyed before the context that owns them.
@@ -71,24 +81,51 @@ GLFWwindow* create_window() {
     return window;
 }
 
-// Every vertex of the visible parts: what "frame tree" fits into the view.
+// The meshes on screen: trunk and crown reduced when the low-poly view made them so.
+struct ShownMeshes {
+    const sylva::Mesh& trunk;
+    const sylva::Mesh& crown;
+    const sylva::Mesh& leaves;
+};
+
+ShownMeshes shown_meshes(const GeneratedTree& generated) {
+    const sylva::Tree& tree = generated.tree;
+    if (generated.reduced) return {generated.reduced->trunk, generated.reduced->crown, tree.leaves};
+    return {tree.trunk, tree.crown, tree.leaves};
+}
+
+// The turtle graphic: every segment, and the outline of every polygon ({ . } leaves).
+std::vector<glm::vec3> skeleton_lines(const sylva::Skeleton& skeleton) {
+    std::vector<glm::vec3> lines;
+    lines.reserve(2 * skeleton.segments.size());
+    for (const sylva::Segment& s : skeleton.segments) lines.insert(lines.end(), {s.a, s.b});
+    for (const std::vector<glm::vec3>& polygon : skeleton.polygons)
+        for (std::size_t i = 0; i < polygon.size(); ++i)
+            lines.insert(lines.end(), {polygon[i], polygon[(i + 1) % polygon.size()]});
+    return lines;
+}
+
+// Every vertex of the parts switched on (the skeleton when none is): what "frame tree" fits.
 std::vector<glm::vec3> visible_points(const StudioState& state) {
     std::vector<glm::vec3> points;
-    const sylva::Tree& tree = *state.tree;
-    for (const sylva::Mesh* mesh : {&tree.trunk, &tree.crown, &tree.leaves})
-        points.insert(points.end(), mesh->positions.begin(), mesh->positions.end());
-    for (const sylva::Segment& s : tree.skeleton.segments) points.insert(points.end(), {s.a, s.b});
+    const ShownMeshes meshes = shown_meshes(*state.tree);
+    const ViewToggles& show = state.view;
+    for (auto [on, mesh] : {std::pair{show.trunk, &meshes.trunk}, std::pair{show.crown, &meshes.crown},
+                            std::pair{show.leaves, &meshes.leaves}})
+        if (on) points.insert(points.end(), mesh->positions.begin(), mesh->positions.end());
+    if (points.empty() || show.skeleton)
+        for (const sylva::Segment& s : state.tree->tree.skeleton.segments)
+            points.insert(points.end(), {s.a, s.b});
     return points;
 }
 
 // A freshly generated tree: upload its parts and skeleton.
-void upload_tree(Viewport& viewport, const sylva::Tree& tree) {
-    viewport.trunk.upload(tree.trunk);
-    viewport.crown.upload(tree.crown);
-    viewport.leaves.upload(tree.leaves);
-    std::vector<glm::vec3> lines;
-    for (const sylva::Segment& s : tree.skeleton.segments) lines.insert(lines.end(), {s.a, s.b});
-    viewport.skeleton.upload(lines);
+void upload_tree(Viewport& viewport, const GeneratedTree& generated) {
+    const ShownMeshes meshes = shown_meshes(generated);
+    viewport.trunk.upload(meshes.trunk);
+    viewport.crown.upload(meshes.crown);
+    viewport.leaves.upload(meshes.leaves);
+    viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
 }
 
 // Fits the camera to the tree and lays the ground grid under it.
@@ -104,47 +141,76 @@ void frame_tree(Viewport& viewport, StudioState& state, float aspect) {
 }
 
 // The 3D view takes the mouse only when ImGui does not want it (not over or dragging a panel).
-void handle_camera_input(StudioState& state) {
+// A drag moves the camera from the frame after the press on, so the jump of a pointer that
+// arrives and presses within one frame does not spin the view.
+void handle_camera_input(StudioState& state, float view_height) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
+    auto dragging = [&io](ImGuiMouseButton button) {
+        return io.MouseDown[button] && io.MouseDownDuration[button] > 0.0f;
+    };
     glm::vec2 delta{io.MouseDelta.x, io.MouseDelta.y};
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) orbit(state.camera, delta);
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
-        pan(state.camera, delta, io.DisplaySize.y);
+    if (dragging(ImGuiMouseButton_Left)) orbit(state.camera, delta);
+    if (dragging(ImGuiMouseButton_Right) || dragging(ImGuiMouseButton_Middle))
+        pan(state.camera, delta, view_height);
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
 }
 
-// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame. (ImGui 1.86 indexes keys
-// by the platform backend's codes, GLFW's here.)
+// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame. While a text field has
+// the keyboard, Ctrl+Z / Ctrl+Y are its own undo of the typing, and F is a letter.
 void handle_shortcuts(StudioState& state) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_E)) start_export(state);
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) io.KeyShift ? redo(state) : undo(state);
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) redo(state);
-    if (!io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_F))
-        state.frame_requested = true;
+    const bool typing = ImGui::GetIO().WantTextInput;
+    for (const KeyPress& press : g_key_presses) {
+        const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
+        if (ctrl && press.key == GLFW_KEY_E) start_export(state);
+        if (typing) continue;
+        if (ctrl && press.key == GLFW_KEY_Z) shift ? redo(state) : undo(state);
+        if (ctrl && press.key == GLFW_KEY_Y) redo(state);
+        if (!ctrl && press.key == GLFW_KEY_F) state.frame_requested = true;
+    }
+    g_key_presses.clear();
 }
 
-// The part of the window the tree is drawn in: right of the side panel, above the status
-// bar, so "frame tree" centres it where the artist can see it.
+// Frames per second while the window draws continuously (idle, it sleeps between events,
+// and a rate then would only measure the sleep). Smoothed, for the status bar.
+class FrameRate {
+  public:
+    void tick(double now, bool continuous) {
+        const double seconds = now - last_;
+        last_ = now;
+        if (continuous && was_continuous_ && seconds > 0.0)
+            fps_ = fps_ > 0.0 ? 0.9 * fps_ + 0.1 / seconds : 1.0 / seconds;
+        was_continuous_ = continuous;
+    }
+    // Negative when idle.
+    float shown() const { return was_continuous_ ? static_cast<float>(fps_) : -1.0f; }
+
+  private:
+    double last_ = 0.0, fps_ = 0.0;
+    bool was_continuous_ = false;
+};
+
+// The part of the window the tree is drawn in: between the docked panels, above the status
+// bar, so "frame tree" centres it where the artist can see it. GL pixels, origin bottom left.
 struct ViewRect {
     int x, y, width, height;
     float aspect() const { return static_cast<float>(width) / static_cast<float>(std::max(height, 1)); }
 };
 
-ViewRect view_rect(int width, int height) {
-    const int left = std::min(kPanelReserve, width / 2);
-    const int bottom = std::min(kStatusReserve, height / 4);
-    return {left, bottom, std::max(width - left, 1), std::max(height - bottom, 1)};
+ViewRect view_rect(const PanelLayout& layout) {
+    const int left = static_cast<int>(layout.left), right = static_cast<int>(layout.right);
+    const int bottom = static_cast<int>(layout.bottom);
+    const int width = static_cast<int>(layout.width), height = static_cast<int>(layout.height);
+    return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom, 1)};
 }
 
-void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height) {
+void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
+                     const ViewRect& rect) {
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    viewport.backdrop.draw();
-    const ViewRect rect = view_rect(width, height);
     glViewport(rect.x, rect.y, rect.width, rect.height);
+    viewport.backdrop.draw();
     float aspect = rect.aspect();
     glm::mat4 view = view_matrix(state.camera);
     glm::mat4 projection = projection_matrix(state.camera, aspect);
@@ -171,15 +237,32 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
 int run(GLFWwindow* window, const StudioOptions& options) {
     Viewport viewport;
     StudioState state;
+    RulesEditorState editor;
     state.view.low_poly = options.low_poly;
-    load_template_into(state, sylva::load_template(options.tree_template));
+    state.tree_template = state.committed = sylva::load_template(options.tree_template);
+    start_generation(state);
 
     int frames_with_tree = 0;
+    FrameRate frame_rate;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
-        glfwPollEvents();
+        // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
+        // while anything runs or is being edited it draws every frame.
+        const bool busy = options.screenshot_path || generation_running(state) ||
+                          !state.stale.empty() || state.export_job.valid() ||
+                          ImGui::IsAnyItemActive();
+        if (busy) glfwPollEvents();
+        else glfwWaitEventsTimeout(0.25);
+        frame_rate.tick(glfwGetTime(), busy);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
-        float aspect = view_rect(width, height).aspect();
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        // The panels are laid out in ImGui's units, which are framebuffer pixels here (no
+        // content scaling on X11).
+        const PanelLayout layout = panel_layout(static_cast<float>(width), static_cast<float>(height));
+        const ViewRect rect = view_rect(layout);
+        const float aspect = rect.aspect();
 
         poll_jobs(state);
         if (state.tree_changed) {
@@ -194,15 +277,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         if (options.screenshot_path && !state.error.empty()) {
             std::fprintf(stderr, "sylva-studio: %s\n", state.error.c_str());
+            ImGui::EndFrame();
             return 1;
         }
 
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        draw_sylva_panel(state);
-        draw_status_bar(state, static_cast<float>(width), static_cast<float>(height));
-        handle_camera_input(state);
+        draw_tree_panel(state, layout);
+        draw_rules_panel(state, editor, layout);
+        draw_status_bar(state, layout, frame_rate.shown());
+        handle_camera_input(state, static_cast<float>(rect.height));
         handle_shortcuts(state);
         ImGui::Render();
 
@@ -211,7 +293,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
-        render_viewport(viewport, state, width, height);
+        render_viewport(viewport, state, width, height, rect);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         if (options.screenshot_path && state.tree && !generation_running(state) &&
@@ -221,7 +303,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         glfwSwapBuffers(window);
     }
-    cancel_generations(state);  // do not keep the window waiting for stale work on exit
+    // Cancelled workers stop at their next check; the window goes away meanwhile.
+    glfwHideWindow(window);
+    cancel_generations(state);
     return 0;
 }
 
@@ -264,6 +348,7 @@ int main(int argc, char** argv) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini dropped into the working directory
     ImGui::StyleColorsDark();
+    glfwSetKeyCallback(window, remember_key);  // before ImGui's backend, which chains it
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -271,6 +356,9 @@ int main(int argc, char** argv) {
     int exit_code = 0;
     try {
         exit_code = run(window, options);
+    } catch (const sylva::InputError& e) {  // --template names no template
+        std::fprintf(stderr, "sylva-studio: %s\n", e.what());
+        exit_code = 3;
     } catch (const sylva::IoError& e) {
         std::fprintf(stderr, "sylva-studio: %s\n", e.what());
         exit_code = 4;

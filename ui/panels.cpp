@@ -1,19 +1,25 @@
 #include "ui/panels.h"
 
+#include "app/export.h"
 #include "app/template_library.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <random>
 #include <string>
 
 namespace sylva::studio {
 namespace {
 
-constexpr float kPanelWidth = 380.0f;
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.4f, 1.0f);
+// Panels sit at fixed places along the window's edges; their sections carry the titles.
+constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
+                                     ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                     ImGuiWindowFlags_NoSavedSettings;
 
 // Slider ends for parameters whose valid range is far wider than a useful drag; typed
 // values (Ctrl+click) may still go to the full range.
@@ -30,123 +36,171 @@ double slider_min(const ParamInfo& info) {
     return std::string(info.key) == "crown_offset" ? -2 : info.min;
 }
 
-void wrapped_error(const std::string& text) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+void wrapped_text(const std::string& text, bool failed) {
+    if (text.empty()) return;
+    if (failed) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(text.c_str());
     ImGui::PopTextWrapPos();
-    ImGui::PopStyleColor();
+    if (failed) ImGui::PopStyleColor();
+}
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void section(const char* title) {
+    ImGui::Spacing();
+    ImGui::TextDisabled("%s", title);
+    ImGui::Separator();
+}
+
+void actions_row(StudioState& state) {
+    ImGui::BeginDisabled(state.live);
+    if (ImGui::Button("Generate")) start_generation(state);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Checkbox("live", &state.live);
+    tooltip("regenerate on every change");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(state.undo.empty() && same_template(state.tree_template, state.committed));
+    if (ImGui::Button("undo")) undo(state);
+    tooltip("Ctrl+Z");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(state.redo.empty());
+    if (ImGui::Button("redo")) redo(state);
+    tooltip("Ctrl+Y or Ctrl+Shift+Z");
+    ImGui::EndDisabled();
 }
 
 void template_section(StudioState& state) {
-    const auto& all = builtin_templates();
-    if (ImGui::BeginCombo("template", state.tree_template.name.c_str())) {
-        for (const TreeTemplate* t : all) {
-            bool selected = t->name == state.tree_template.name;
-            if (ImGui::Selectable(t->name.c_str(), selected)) load_template_into(state, *t);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t->description.c_str());
+    section("Template");
+    if (ImGui::BeginCombo("template", state.tree_template.name.c_str(), ImGuiComboFlags_HeightLargest)) {
+        for (const TreeTemplate* t : builtin_templates()) {
+            if (ImGui::Selectable(t->name.c_str(), t->name == state.tree_template.name))
+                load_template_into(state, *t);
+            tooltip(t->description.c_str());
         }
         ImGui::EndCombo();
     }
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", state.tree_template.description.c_str());
     ImGui::PopTextWrapPos();
-    ImGui::InputText("file", &state.template_path);
+    const float buttons = ImGui::CalcTextSize("OpenSave as").x +
+                          4.0f * ImGui::GetStyle().FramePadding.x +
+                          2.0f * ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttons);
+    ImGui::InputText("##file", &state.template_path);
+    tooltip("a template file (.toml), or a grammar file (.lsys, .txt: the rules alone)");
+    ImGui::SameLine();
     if (ImGui::Button("Open")) open_template_file(state);
+    tooltip("open the template or grammar file named on the left");
     ImGui::SameLine();
     if (ImGui::Button("Save as")) save_template_to_file(state);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the rules and parameters as a template file (.toml)");
-    if (!state.file_message.empty()) {
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled("%s", state.file_message.c_str());
-        ImGui::PopTextWrapPos();
+    tooltip("the rules, parameters and colours as a template file (.toml)");
+    wrapped_text(state.file_message, state.file_failed);
+}
+
+template <class Enum>
+void enum_combo(const char* label, Enum& value, std::initializer_list<const char*> names,
+                const char* help) {
+    int index = static_cast<int>(value);
+    if (ImGui::BeginCombo(label, *(names.begin() + index))) {
+        int i = 0;
+        for (const char* name : names) {
+            if (ImGui::Selectable(name, i == index)) value = static_cast<Enum>(i);
+            ++i;
+        }
+        ImGui::EndCombo();
     }
+    tooltip(help);
+}
+
+// One parameter's widget: a list for choices, a checkbox for 0/1, else a slider.
+bool parameter_widget(const ParamInfo& info, double& value) {
+    const std::string key(info.key);
+    if (!info.choices.empty()) {
+        int index = static_cast<int>(value);
+        bool changed = false;
+        if (ImGui::BeginCombo(key.c_str(), std::string(info.choices[static_cast<size_t>(index)]).c_str())) {
+            for (size_t i = 0; i < info.choices.size(); ++i)
+                if (ImGui::Selectable(std::string(info.choices[i]).c_str(), static_cast<int>(i) == index)) {
+                    value = static_cast<double>(i);
+                    changed = true;
+                }
+            ImGui::EndCombo();
+        }
+        return changed;
+    }
+    if (info.integer && info.min == 0 && info.max == 1) {
+        bool on = value != 0.0;
+        bool changed = ImGui::Checkbox(key.c_str(), &on);
+        value = on ? 1.0 : 0.0;
+        return changed;
+    }
+    if (info.integer) {
+        int v = static_cast<int>(value);
+        bool changed = ImGui::SliderInt(key.c_str(), &v, static_cast<int>(slider_min(info)),
+                                        static_cast<int>(slider_max(info)));
+        value = v;
+        return changed;
+    }
+    float v = static_cast<float>(value);
+    bool changed = ImGui::SliderFloat(key.c_str(), &v, static_cast<float>(slider_min(info)),
+                                      static_cast<float>(slider_max(info)), "%.3f");
+    value = v;
+    return changed;
 }
 
 void parameter_section(StudioState& state) {
-    TreeParams& params = state.tree_template.params;
-    int seed = static_cast<int>(params.seed % 1000000);
-    if (ImGui::InputInt("seed", &seed)) params.seed = static_cast<std::uint64_t>(std::max(seed, 0));
+    section("Parameters");
+    TreeTemplate& t = state.tree_template;
+    enum_combo("turtle", t.mode, {"abop", "lptg"},
+               "abop: ABOP's H, L, U turtle; lptg: seed 001's elevation / azimuth turtle");
+    enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
+               "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
+               "pipe: Murray's pipe model from tip_width");
+    TreeParams& params = t.params;
+    const std::uint64_t step = 1;
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step);
+    tooltip("the random choices of stochastic rules and rand(); same seed, same tree");
     ImGui::SameLine();
     if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
+    tooltip("a new random seed");
     for (const ParamInfo& info : param_infos()) {
-        const std::string key(info.key);
         double value = *get_param(params, info.key);
-        bool changed = false;
-        if (!info.choices.empty()) {
-            int index = static_cast<int>(value);
-            std::string name(info.choices[static_cast<size_t>(index)]);
-            if (ImGui::BeginCombo(key.c_str(), name.c_str())) {
-                for (size_t i = 0; i < info.choices.size(); ++i)
-                    if (ImGui::Selectable(std::string(info.choices[i]).c_str(), int(i) == index)) {
-                        index = static_cast<int>(i);
-                        changed = true;
-                    }
-                ImGui::EndCombo();
-            }
-            value = index;
-        } else if (info.integer) {
-            int v = static_cast<int>(value);
-            changed = ImGui::SliderInt(key.c_str(), &v, static_cast<int>(slider_min(info)),
-                                       static_cast<int>(slider_max(info)));
-            value = v;
-        } else {
-            float v = static_cast<float>(value);
-            changed = ImGui::SliderFloat(key.c_str(), &v, static_cast<float>(slider_min(info)),
-                                         static_cast<float>(slider_max(info)), "%.3f");
-            value = v;
+        const bool changed = parameter_widget(info, value);
+        if (ImGui::IsItemHovered()) {
+            if (info.choices.empty())
+                ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)",
+                                  std::string(info.help).c_str(), info.min, info.max);
+            else
+                ImGui::SetTooltip("%s", std::string(info.help).c_str());
         }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\nrange %g to %g", std::string(info.help).c_str(), info.min, info.max);
-        if (changed) {
-            value = std::clamp(value, info.min, info.max);
-            set_param(params, info.key, value);
-        }
+        if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
     }
 }
 
-// Puts the cursor on the error's line and selects it, once, when asked.
-struct JumpRequest {
-    int line = 0;
-};
-
-int select_line(ImGuiInputTextCallbackData* data) {
-    auto* jump = static_cast<JumpRequest*>(data->UserData);
-    if (jump->line <= 0) return 0;
-    int line = 1, start = 0;
-    for (int i = 0; i < data->BufTextLen && line < jump->line; ++i)
-        if (data->Buf[i] == '\n') ++line, start = i + 1;
-    int end = start;
-    while (end < data->BufTextLen && data->Buf[end] != '\n') ++end;
-    data->SelectionStart = start;
-    data->SelectionEnd = end;
-    data->CursorPos = end;
-    jump->line = 0;
-    return 0;
-}
-
-void rules_section(StudioState& state) {
-    static JumpRequest jump;
-    ImGui::InputTextMultiline("##rules", &state.tree_template.grammar,
-                              ImVec2(-1.0f, ImGui::GetTextLineHeight() * 14),
-                              ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways,
-                              select_line, &jump);
+void rules_section(StudioState& state, RulesEditorState& editor, float height) {
+    section("Rules");
+    const TextMark mark{state.error_line, state.error_column};
+    rules_editor("rules", state.tree_template.grammar, mark, editor, height);
     if (state.error_line > 0) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-        ImGui::Text("error at line %d, column %d", state.error_line, state.error_column);
-        ImGui::PopStyleColor();
+        ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
         ImGui::SameLine();
-        if (ImGui::SmallButton("show")) {
-            jump.line = state.error_line;
-            ImGui::SetKeyboardFocusHere(-1);
-        }
+        if (ImGui::SmallButton("show")) reveal(editor, mark);
+        tooltip("put the cursor there");
     }
-    if (!state.error.empty()) wrapped_error(state.error);
+    wrapped_text(state.error, true);
+    if (!state.error.empty()) ImGui::TextDisabled("(the tree on screen is the last one that worked)");
 }
 
 void view_section(StudioState& state) {
+    section("View");
     ViewToggles& v = state.view;
     ImGui::Checkbox("skeleton", &v.skeleton);
+    tooltip("the turtle's segments as lines");
     ImGui::SameLine();
     ImGui::Checkbox("trunk", &v.trunk);
     ImGui::SameLine();
@@ -156,96 +210,131 @@ void view_section(StudioState& state) {
     ImGui::Checkbox("wireframe", &v.wireframe);
     ImGui::SameLine();
     ImGui::Checkbox("low poly", &v.low_poly);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("show trunk and crown reduced to the export budget (the game mesh)");
+    tooltip("trunk and crown reduced to triangle_budget: the mesh an export writes");
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
-    ImGui::TextDisabled("left drag: orbit   right drag: pan   wheel: zoom");
+    ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
 }
 
 void export_section(StudioState& state) {
+    section("Export");
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip(".obj (+ .mtl), .glb or .ply");
-    ImGui::SliderInt("budget", &e.budget, 0, 5000);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("trunk + crown triangles (0 = keep all)");
+    tooltip("the extension picks the format: .obj (+ .mtl), .glb or .ply");
+    const std::optional<ExportFormat> format = format_from_extension(e.path);
+    const char* names[] = {"obj", "glb", "ply"};
+    if (ImGui::BeginCombo("format", format ? names[static_cast<int>(*format)] : "(extension?)")) {
+        for (ExportFormat f : {ExportFormat::Obj, ExportFormat::Glb, ExportFormat::Ply})
+            if (ImGui::Selectable(names[static_cast<int>(f)], format == f))
+                e.path = std::filesystem::path(e.path).replace_extension(format_extension(f)).string();
+        ImGui::EndCombo();
+    }
+    int& budget = state.tree_template.params.triangle_budget;
+    if (ImGui::InputInt("budget", &budget, 100, 1000)) budget = std::max(budget, 0);
+    tooltip("trunk + crown triangles after reduction (0 keeps every triangle); the "
+            "template's triangle_budget");
     ImGui::Checkbox("LOD chain", &e.lod);
+    tooltip("four levels: budget, 1/2, 1/4, 1/8 (one .glb, or a file per level)");
     ImGui::SameLine();
     ImGui::BeginDisabled(state.export_job.valid() || !state.tree);
     if (ImGui::Button("Export (Ctrl+E)")) start_export(state);
     ImGui::EndDisabled();
-    if (!state.export_message.empty()) {
-        ImGui::PushTextWrapPos(0.0f);
-        bool failed = state.export_message.rfind("export failed", 0) == 0;
-        if (failed) wrapped_error(state.export_message);
-        else ImGui::TextUnformatted(state.export_message.c_str());
-        ImGui::PopTextWrapPos();
+    wrapped_text(state.export_message, state.export_failed);
+}
+
+const char* stage_name(int stage) {
+    switch (stage) {
+        case JobProgress::Meshing: return "meshing";
+        case JobProgress::Reducing: return "reducing";
+        default: return "growing";
     }
 }
 
 }  // namespace
 
-void draw_sylva_panel(StudioState& state) {
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 100.0f),
-                                        ImVec2(kPanelWidth * 2, ImGui::GetIO().DisplaySize.y - 50.0f));
-    ImGui::Begin("Sylva", nullptr);
-    ImGui::PushItemWidth(-140.0f);
+PanelLayout panel_layout(float width, float height) {
+    PanelLayout layout;
+    layout.width = width;
+    layout.height = height;
+    layout.left = std::min(370.0f, 0.3f * width);
+    layout.right = std::min(430.0f, 0.34f * width);
+    layout.bottom = ImGui::GetFrameHeightWithSpacing() + 8.0f;
+    return layout;
+}
 
-    ImGui::BeginDisabled(state.live);
-    if (ImGui::Button("Generate")) start_generation(state);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::Checkbox("live", &state.live);
-    ImGui::SameLine();
-    ImGui::BeginDisabled(state.undo.empty());
-    if (ImGui::Button("undo")) undo(state);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(state.redo.empty());
-    if (ImGui::Button("redo")) redo(state);
-    ImGui::EndDisabled();
-
-    if (ImGui::CollapsingHeader("Template", ImGuiTreeNodeFlags_DefaultOpen)) template_section(state);
-    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameter_section(state);
-    if (ImGui::CollapsingHeader("Rules", ImGuiTreeNodeFlags_DefaultOpen)) rules_section(state);
-    else if (!state.error.empty()) wrapped_error(state.error);
-    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) view_section(state);
-    if (ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) export_section(state);
-
+void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(layout.left, layout.height - layout.bottom));
+    ImGui::Begin("Tree", nullptr, kDocked);
+    ImGui::PushItemWidth(-130.0f);
+    actions_row(state);
+    template_section(state);
+    parameter_section(state);
     ImGui::PopItemWidth();
     ImGui::End();
 }
 
-void draw_status_bar(StudioState& state, float width, float height) {
-    const float bar = ImGui::GetFrameHeightWithSpacing() + 8.0f;
-    ImGui::SetNextWindowPos(ImVec2(0.0f, height - bar));
-    ImGui::SetNextWindowSize(ImVec2(width, bar));
-    ImGui::Begin("status", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-    if (generation_running(state)) {
-        ImGui::ProgressBar(generation_progress(state), ImVec2(160.0f, 0.0f), "generating");
+void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout) {
+    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(layout.right, layout.height - layout.bottom));
+    ImGui::Begin("Rules and export", nullptr, kDocked);
+    ImGui::PushItemWidth(-80.0f);
+    // The editor takes what the other sections leave.
+    const float below = 15.0f * ImGui::GetFrameHeightWithSpacing();
+    rules_section(state, editor, std::max(ImGui::GetContentRegionAvail().y - below, 120.0f));
+    view_section(state);
+    export_section(state);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps) {
+    ImGui::SetNextWindowPos(ImVec2(0.0f, layout.height - layout.bottom));
+    ImGui::SetNextWindowSize(ImVec2(layout.width, layout.bottom));
+    ImGui::Begin("status", nullptr, ImGuiWindowFlags_NoDecoration | kDocked |
+                                        ImGuiWindowFlags_NoFocusOnAppearing);
+    if (state.job) {
+        const JobProgress& p = *state.job->progress;
+        const int stage = p.stage.load();
+        char label[32];
+        std::snprintf(label, sizeof label, "%s %.0f%%", stage_name(stage), 100.0f * p.fraction.load());
+        ImGui::ProgressBar(stage == JobProgress::Growing ? 0.0f : p.fraction.load(),
+                           ImVec2(150.0f, 0.0f), label);
+        ImGui::SameLine();
+    } else if (generation_running(state)) {
+        ImGui::ProgressBar(0.0f, ImVec2(150.0f, 0.0f), "waiting");
         ImGui::SameLine();
     }
     if (state.tree) {
-        const Tree& t = *state.tree;
-        ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles   |   derive %.1f  turtle %.1f  "
-                    "trunk %.1f  crown %.1f  leaves %.1f ms   (%.0f ms in all)",
-                    state.shown_template.name.c_str(), t.trunk.triangles.size(),
-                    t.crown.triangles.size(), t.leaves.triangles.size(), t.times.derive_ms,
-                    t.times.turtle_ms, t.times.trunk_mesh_ms, t.times.crown_mesh_ms,
-                    t.times.leaves_ms, state.last_wall_ms);
+        const Tree& t = state.tree->tree;
+        const bool reduced = state.tree->reduced.has_value();
+        const Mesh& trunk = reduced ? state.tree->reduced->trunk : t.trunk;
+        const Mesh& crown = reduced ? state.tree->reduced->crown : t.crown;
+        ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |   derive %.1f  turtle %.1f  "
+                    "trunk %.1f  crown %.1f  leaves %.1f",
+                    state.shown_template.name.c_str(), trunk.triangles.size(), crown.triangles.size(),
+                    t.leaves.triangles.size(), reduced ? " (low poly)" : "", t.times.derive_ms,
+                    t.times.turtle_ms, t.times.trunk_mesh_ms, t.times.crown_mesh_ms, t.times.leaves_ms);
+        if (reduced) {
+            ImGui::SameLine(0.0f, 0.0f);
+            ImGui::Text("  reduce %.1f", state.tree->reduce_ms);
+        }
+        ImGui::SameLine(0.0f, 0.0f);
+        ImGui::Text(" ms  (%.0f ms in all)", state.last_wall_ms);
     } else if (!generation_running(state)) {
         ImGui::TextUnformatted("no tree yet");
     }
     if (!state.error.empty()) {
         ImGui::SameLine();
-        ImGui::TextColored(kErrorColor, "  (the last edit failed; showing the last good tree)");
+        ImGui::TextColored(kErrorColor, "  the last edit failed (see Rules)");
     }
-    ImGui::SameLine(width - 90.0f);
-    ImGui::TextDisabled("%5.0f fps", ImGui::GetIO().Framerate);
+    if (fps >= 0.0f) {
+        char rate[32];
+        std::snprintf(rate, sizeof rate, "%.0f fps", fps);
+        const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
+        ImGui::SameLine(std::max(text_end + 20.0f, layout.width - ImGui::CalcTextSize(rate).x - 16.0f));
+        ImGui::TextDisabled("%s", rate);
+    }
     ImGui::End();
 }
 

@@ -1,16 +1,29 @@
 // The studio's panels: immediate-mode functions of the state (polyscope / ImGui examples
-// style). Each draws one window and edits StudioState directly; actions that take time go
-// through studio_state.h's background jobs.
+// style). Each draws one window docked to an edge and edits StudioState directly; actions
+// that take time go through studio_state.h's background jobs.
 #pragma once
 
+#include "ui/rules_editor.h"
 #include "ui/studio_state.h"
 
 namespace sylva::studio {
 
-// The side panel: template, parameters, rules, view toggles, export.
-void draw_sylva_panel(StudioState& state);
+// Pixels the docked panels take from each edge of the window; the 3D view gets the rest.
+struct PanelLayout {
+    float width = 0, height = 0;  // the whole window
+    float left = 0, right = 0, bottom = 0;
+};
 
-// The status bar along the bottom: progress, triangles per part, time per stage.
-void draw_status_bar(StudioState& state, float width, float height);
+PanelLayout panel_layout(float width, float height);
+
+// Left: Generate / live / undo / redo, the template picker, open / save, and the parameters.
+void draw_tree_panel(StudioState& state, const PanelLayout& layout);
+
+// Right: the rules editor with the grammar error, the view toggles, and export.
+void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout);
+
+// Along the bottom: progress, triangles per part, time per stage, and the frame rate while the
+// window draws continuously (`fps` < 0: idle, not shown).
+void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps);
 
 }  // namespace sylva::studio

@@ -1,7 +1,7 @@
 #include "ui/studio_state.h"
 
+#include "app/atomic_file.h"
 #include "app/export.h"
-#include "app/lowpoly_tree.h"
 #include "app/template_file.h"
 #include "app/template_library.h"
 #include "marching/marching_cubes.h"
@@ -9,91 +9,178 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
+#include <thread>
 
 namespace sylva::studio {
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 bool ready(const auto& future) {
-    return future.valid() &&
-           future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+    return future.valid() && future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-Edit current_edit(const StudioState& state) {
-    return {state.tree_template.grammar, state.tree_template.params};
+bool same_params(const TreeParams& a, const TreeParams& b) {
+    if (a.seed != b.seed) return false;
+    for (const ParamInfo& info : param_infos())
+        if (*get_param(a, info.key) != *get_param(b, info.key)) return false;
+    return true;
 }
 
-// The triangle budget the view shows the tree at: 0 for the full marching-cubes meshes.
-int preview_budget(const StudioState& state) {
-    return state.view.low_poly ? std::max(state.export_settings.budget, 0) : 0;
+// What shapes the tree: a change here needs a new generation (a colour change does not).
+bool same_tree_input(const TreeTemplate& a, const TreeTemplate& b) {
+    return a.grammar == b.grammar && a.mode == b.mode && a.width_model == b.width_model &&
+           same_params(a.params, b.params);
 }
 
-void apply_edit(StudioState& state, const Edit& edit) {
-    state.tree_template.grammar = edit.grammar;
-    state.tree_template.params = edit.params;
+// The meshers get all cores but one: the UI thread draws the window (on a software renderer
+// that is CPU work too), so it keeps its frame rate while a big tree builds.
+int worker_threads() {
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency() - 1));
+}
+
+// The worker: the whole pipeline, then the low-poly reduction when a budget is given.
+GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
+                       const std::shared_ptr<JobProgress>& progress) {
+    MeshOptions options;
+    options.threads = worker_threads();
+    options.cancel = &progress->cancel;
+    options.progress = [&progress](float f) {
+        progress->stage = JobProgress::Meshing;
+        progress->fraction = f;
+    };
+    GeneratedTree out;
+    out.tree = generate_tree(tree_template, options);
+    if (budget == 0) return out;
+    progress->stage = JobProgress::Reducing;
+    progress->fraction = 0.0f;
+    const Clock::time_point start = Clock::now();
+    TreeBudget total;
+    total.total = budget;
+    DecimateSettings settings;
+    settings.cancel = &progress->cancel;  // a newer edit stops a long reduction too
+    settings.progress = [&progress](float f) { progress->fraction = f; };
+    out.reduced = reduce_tree(out.tree, total, settings);
+    out.budget = budget;
+    out.reduce_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return out;
+}
+
+void apply_edit(StudioState& state, const TreeTemplate& edit) {
+    const bool other_tree = edit.name != state.tree_template.name;
+    state.tree_template = edit;
     state.committed = edit;
+    state.frame_next_tree |= other_tree;
     start_generation(state);
+}
+
+std::string files_text(const std::vector<std::filesystem::path>& files) {
+    std::string text;
+    for (const auto& file : files) text += (text.empty() ? "" : ", ") + file.string();
+    return text;
+}
+
+// The export, on a worker: trunk and crown reduced to `budget` (0 keeps every triangle),
+// or a LOD chain; returns the message the panel shows. The preview's reduction is reused
+// when it has the same budget.
+std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown,
+                        const TreeTemplate& tmpl, std::size_t budget,
+                        const ExportSettings& settings) {
+    const Tree& tree = shown->tree;
+    std::vector<std::filesystem::path> files;
+    if (settings.lod) {
+        std::vector<std::size_t> budgets = lod_budgets(budget > 0 ? budget : 800, 4);
+        std::vector<ReducedTree> levels = make_lod_chain(tree, budgets);
+        std::vector<std::vector<NamedMesh>> named;
+        for (std::size_t i = 0; i < levels.size(); ++i) {
+            named.push_back(tree_parts(levels[i].trunk, levels[i].crown, tree.leaves, tmpl.colors));
+            for (NamedMesh& part : named.back()) part.name += "_LOD" + std::to_string(i);
+        }
+        files = write_lod_chain(settings.path, named);
+        return "wrote " + files_text(files) + ": LOD0-LOD3, " + std::to_string(budgets.front()) +
+               " to " + std::to_string(budgets.back()) + " trunk + crown triangles";
+    }
+    std::optional<ReducedTree> reduced;
+    if (budget > 0) {
+        if (shown->reduced && shown->budget == budget) reduced = shown->reduced;
+        else reduced = reduce_tree(tree, TreeBudget{budget});
+    }
+    const Mesh& trunk = reduced ? reduced->trunk : tree.trunk;
+    const Mesh& crown = reduced ? reduced->crown : tree.crown;
+    files = write_model(settings.path, tree_parts(trunk, crown, tree.leaves, tmpl.colors));
+    std::string text = "wrote " + files_text(files) + ": trunk " +
+                       std::to_string(trunk.triangles.size()) + ", crown " +
+                       std::to_string(crown.triangles.size()) + ", leaves " +
+                       std::to_string(tree.leaves.triangles.size()) + " triangles";
+    if (reduced && !reduced->note.empty()) text += " (" + reduced->note + ")";
+    return text;
+}
+
+// Template files are TOML (app/template_file.h); a .lsys or .txt name saves the grammar
+// alone, which `-t` and Open read back as a bare grammar with default parameters.
+void write_template(const std::filesystem::path& path, const TreeTemplate& tree) {
+    const std::string ext = path.extension().string();
+    if (ext == ".lsys" || ext == ".txt")
+        write_file_atomically(path, [&](std::ostream& out) { out << tree.grammar; });
+    else
+        save_template_file(path, tree);
 }
 
 }  // namespace
 
-bool Edit::operator==(const Edit& other) const {
-    if (grammar != other.grammar || params.seed != other.params.seed) return false;
-    for (const ParamInfo& info : param_infos())
-        if (*get_param(params, info.key) != *get_param(other.params, info.key)) return false;
-    return true;
+bool same_template(const TreeTemplate& a, const TreeTemplate& b) {
+    return same_tree_input(a, b) && a.name == b.name && a.description == b.description &&
+           a.colors.trunk == b.colors.trunk && a.colors.crown == b.colors.crown &&
+           a.colors.leaves == b.colors.leaves;
+}
+
+std::size_t preview_budget(const StudioState& state) {
+    return state.view.low_poly
+               ? static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0))
+               : 0;
 }
 
 void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
+    commit_edit(state);
     state.tree_template = tree_template;
-    state.undo.clear();
-    state.redo.clear();
-    state.committed = current_edit(state);
+    commit_edit(state);  // picking a template is an edit: undo brings the old one back
     state.frame_next_tree = true;
     start_generation(state);
 }
 
 void start_generation(StudioState& state) {
     if (state.job) {
-        state.job->cancel->store(true);
+        state.job->progress->cancel = true;
         state.stale.push_back(std::move(*state.job));
         state.job.reset();
     }
-    state.requested = current_edit(state);
-    GenerationJob job;
-    job.started = std::chrono::steady_clock::now();
-    job.tree_template = state.tree_template;
-    // The worker gets its own copies: editing while it runs is safe.
+    state.requested = state.tree_template;
     state.requested_budget = preview_budget(state);
-    const auto budget = static_cast<std::size_t>(state.requested_budget);
-    job.result = std::async(std::launch::async, [tree_template = state.tree_template, budget,
-                                                 cancel = job.cancel, progress = job.progress] {
-        MeshOptions options;
-        options.cancel = cancel.get();
-        options.progress = [progress](float f) { progress->store(f); };
-        Tree tree = generate_tree(tree_template, options);
-        if (budget > 0) {  // the game mesh, as an export with this budget would write it
-            TreeBudget total;
-            total.total = budget;
-            DecimateSettings settings;
-            settings.cancel = cancel.get();  // a newer edit stops a long reduction too
-            ReducedTree reduced = reduce_tree(tree, total, settings);
-            tree.trunk = std::move(reduced.trunk);
-            tree.crown = std::move(reduced.crown);
-        }
-        return tree;
-    });
+    // A cancelled job stops at its next check, which in some meshing phases is a second
+    // away. The new job starts at once beside one or two winding down; past that it waits
+    // (poll_jobs starts it), so a slider drag keeps at most three workers alive.
+    constexpr std::size_t kMaxStale = 2;
+    state.generate_wanted = state.stale.size() >= kMaxStale;
+    if (state.generate_wanted) return;
+
+    GenerationJob job;
+    job.started = Clock::now();
+    job.tree_template = state.tree_template;
+    job.budget = state.requested_budget;
+    // The worker gets its own copies: editing while it runs is safe.
+    job.result = std::async(std::launch::async, generate, job.tree_template, job.budget,
+                            job.progress);
     state.job = std::move(job);
 }
 
-bool generation_running(const StudioState& state) { return state.job.has_value(); }
-
-void cancel_generations(StudioState& state) {
-    if (state.job) state.job->cancel->store(true);
-    for (GenerationJob& job : state.stale) job.cancel->store(true);
+bool generation_running(const StudioState& state) {
+    return state.job.has_value() || state.generate_wanted;
 }
 
-float generation_progress(const StudioState& state) {
-    return state.job ? state.job->progress->load() : 1.0f;
+void cancel_generations(StudioState& state) {
+    if (state.job) state.job->progress->cancel = true;
+    for (GenerationJob& job : state.stale) job.progress->cancel = true;
 }
 
 void poll_jobs(StudioState& state) {
@@ -105,14 +192,18 @@ void poll_jobs(StudioState& state) {
         }
         return true;
     });
+    if (state.generate_wanted && state.stale.empty()) {
+        // The edit may have moved on while the worker wound down: generate the newest.
+        state.generate_wanted = false;
+        start_generation(state);
+    }
     if (state.job && ready(state.job->result)) {
         GenerationJob job = std::move(*state.job);
         state.job.reset();
-        state.last_wall_ms = std::chrono::duration<double, std::milli>(
-                                 std::chrono::steady_clock::now() - job.started)
-                                 .count();
+        state.last_wall_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - job.started).count();
         try {
-            state.tree = job.result.get();
+            state.tree = std::make_shared<const GeneratedTree>(job.result.get());
             state.shown_template = std::move(job.tree_template);
             state.tree_changed = true;
             state.error.clear();
@@ -132,39 +223,42 @@ void poll_jobs(StudioState& state) {
     if (ready(state.export_job)) {
         try {
             state.export_message = state.export_job.get();
+            state.export_failed = false;
         } catch (const std::exception& e) {
             state.export_message = std::string("export failed: ") + e.what();
+            state.export_failed = true;
         }
     }
 }
 
 bool edit_pending(const StudioState& state) {
-    return !(current_edit(state) == state.requested) ||
+    return !same_tree_input(state.tree_template, state.requested) ||
            preview_budget(state) != state.requested_budget;
 }
 
 bool commit_edit(StudioState& state) {
-    Edit now = current_edit(state);
-    if (now == state.committed) return false;
+    if (same_template(state.tree_template, state.committed)) return false;
     state.undo.push_back(std::move(state.committed));
     state.redo.clear();
-    state.committed = std::move(now);
+    state.committed = state.tree_template;
+    constexpr std::size_t kMaxUndo = 200;  // each step holds a grammar: keep memory bounded
+    if (state.undo.size() > kMaxUndo) state.undo.erase(state.undo.begin());
     return true;
 }
 
 void undo(StudioState& state) {
     commit_edit(state);
     if (state.undo.empty()) return;
-    state.redo.push_back(current_edit(state));
-    Edit previous = std::move(state.undo.back());
+    state.redo.push_back(state.tree_template);
+    TreeTemplate previous = std::move(state.undo.back());
     state.undo.pop_back();
     apply_edit(state, previous);
 }
 
 void redo(StudioState& state) {
     if (state.redo.empty()) return;
-    state.undo.push_back(current_edit(state));
-    Edit next = std::move(state.redo.back());
+    state.undo.push_back(state.tree_template);
+    TreeTemplate next = std::move(state.redo.back());
     state.redo.pop_back();
     apply_edit(state, next);
 }
@@ -172,50 +266,26 @@ void redo(StudioState& state) {
 void start_export(StudioState& state) {
     if (!state.tree) {
         state.export_message = "nothing to export yet";
+        state.export_failed = true;
         return;
     }
     if (state.export_job.valid()) return;  // one export at a time
     state.export_message = "exporting...";
-    state.export_job = std::async(std::launch::async, [tree = *state.tree,
-                                                       tmpl = state.shown_template,
-                                                       settings = state.export_settings] {
-        std::string message;
-        std::vector<std::filesystem::path> files;
-        if (settings.lod) {
-            std::vector<ReducedTree> levels =
-                make_lod_chain(tree, lod_budgets(settings.budget > 0 ? settings.budget : 800, 4));
-            std::vector<std::vector<NamedMesh>> named;
-            for (size_t i = 0; i < levels.size(); ++i) {
-                named.push_back(tree_parts(levels[i].trunk, levels[i].crown, tree.leaves, tmpl.colors));
-                for (NamedMesh& part : named.back()) part.name += "_LOD" + std::to_string(i);
-            }
-            files = write_lod_chain(settings.path, named);
-            message = "LOD0-LOD3, ";
-        } else if (settings.budget > 0) {
-            TreeBudget budget;
-            budget.total = static_cast<std::size_t>(settings.budget);
-            ReducedTree reduced = reduce_tree(tree, budget);
-            files = write_model(settings.path,
-                                tree_parts(reduced.trunk, reduced.crown, tree.leaves, tmpl.colors));
-            message = std::to_string(reduced.triangles) + " trunk + crown triangles, ";
-        } else {
-            files = write_model(settings.path,
-                                tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors));
-            message = std::to_string(tree.trunk.triangles.size() + tree.crown.triangles.size()) +
-                      " trunk + crown triangles, ";
-        }
-        message += "wrote";
-        for (const auto& file : files) message += " " + file.string();
-        return message;
-    });
+    state.export_failed = false;
+    const auto budget =
+        static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0));
+    state.export_job = std::async(std::launch::async, export_tree, state.tree,
+                                  state.shown_template, budget, state.export_settings);
 }
 
 void save_template_to_file(StudioState& state) {
     try {
-        save_template_file(state.template_path, state.tree_template);
+        write_template(state.template_path, state.tree_template);
         state.file_message = "saved " + state.template_path;
+        state.file_failed = false;
     } catch (const std::exception& e) {
         state.file_message = e.what();
+        state.file_failed = true;
     }
 }
 
@@ -223,8 +293,10 @@ void open_template_file(StudioState& state) {
     try {
         load_template_into(state, load_template(state.template_path));
         state.file_message = "opened " + state.template_path;
+        state.file_failed = false;
     } catch (const std::exception& e) {
         state.file_message = e.what();
+        state.file_failed = true;
     }
 }
 

@@ -2,18 +2,22 @@
 //
 // usage: check_screenshot IMAGE.png WIDTH HEIGHT
 //
-// The criterion relies only on colours the studio guarantees: the background and the ground
-// grid are grey-blue (blue >= red) and the ImGui theme is blue-grey, while lit or shadowed
-// bark is warm (red clearly above blue). So a "bark pixel" is one with red > blue + 20 and
-// red >= green and red > 40. The image passes when
+// The criterion relies only on colours the studio guarantees: the background, the ground
+// grid and the ImGui panels are grey or grey-blue (blue >= green, blue >= red), while a tree
+// is bark (warm: red clearly above blue) or foliage (green clearly above red and blue). So a
+// "tree pixel" is one with
+//   bark:    red > blue + 20 and red >= green and red > 40, or
+//   foliage: green > red + 8 and green > blue + 8 and green > 40.
+// The image passes when
 //   - it has the expected size,
-//   - bark pixels cover between 0.5% and 60% of it: a bare tree of thin branches fills only
-//     1-3% of a 1280x800 frame (about 25,000 pixels), a blank or tree-less frame has none,
-//     and a frame filled by a too-close camera has more than 60%,
-//   - all four corners are dark grey-blue backdrop (not a uniform fill, not a tree filling
-//     the window, not a black or white frame),
-//   - the bark pixels' centroid lies in the middle half of the width (the tree is framed).
-// Any uniform image fails: without bark on the coverage test, with bark on the corner test.
+//   - tree pixels cover between 0.5% and 60% of it: a bare tree of thin branches fills
+//     only 1-3% of a 1280x800 frame, a blank or tree-less frame has none, and a frame
+//     filled by a too-close camera has more than 60%,
+//   - all four corners are dark grey or grey-blue (backdrop or panels: not a uniform fill,
+//     not a tree filling the window, not a black or white frame),
+//   - the tree pixels' centroid lies in the middle half of the width (the tree is framed).
+// Any uniform image fails: without tree pixels on the coverage test, with them on the
+// corner test.
 //
 // The implementation comes from libstb (pkg-config stb), so STB_IMAGE_IMPLEMENTATION is not
 // defined here: it would duplicate the symbols libstb exports.
@@ -33,7 +37,16 @@ bool is_bark(Rgb c) {
     return c.r > c.b + 20 && c.r >= c.g && c.r > 40;
 }
 
-// The backdrop is dark grey-blue: every channel low, blue not below red.
+bool is_foliage(Rgb c) {
+    return c.g > c.r + 8 && c.g > c.b + 8 && c.g > 40;
+}
+
+bool is_tree(Rgb c) {
+    return is_bark(c) || is_foliage(c);
+}
+
+// The backdrop and the panels are dark grey or grey-blue: every channel low, blue not below
+// red.
 bool is_backdrop_like(Rgb c) {
     return c.r < 90 && c.g < 90 && c.b < 100 && c.b >= c.r;
 }
@@ -68,46 +81,48 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    long bark = 0;
+    long tree = 0, bark = 0;
     double sum_x = 0, sum_y = 0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            if (is_bark(at(x, y))) {
-                ++bark;
+            if (is_bark(at(x, y))) ++bark;
+            if (is_tree(at(x, y))) {
+                ++tree;
                 sum_x += x;
                 sum_y += y;
             }
         }
     }
     const double total = static_cast<double>(width) * height;
-    const double fraction = bark / total;
-    std::printf("%s: %dx%d, bark pixels %.2f%%", path, width, height, 100.0 * fraction);
-    if (bark > 0) {
-        std::printf(", centroid (%.0f, %.0f)", sum_x / bark, sum_y / bark);
+    const double fraction = tree / total;
+    std::printf("%s: %dx%d, tree pixels %.2f%% (bark %.2f%%)", path, width, height,
+                100.0 * fraction, 100.0 * bark / total);
+    if (tree > 0) {
+        std::printf(", centroid (%.0f, %.0f)", sum_x / tree, sum_y / tree);
     }
     std::printf("\n");
 
     if (fraction < 0.005) {
-        std::fprintf(stderr, "FAIL: bark colour covers %.2f%% of the image, expected > 0.5%%\n",
+        std::fprintf(stderr, "FAIL: tree colours cover %.2f%% of the image, expected > 0.5%%\n",
                      100.0 * fraction);
         ok = false;
     }
     if (fraction > 0.60) {
-        std::fprintf(stderr, "FAIL: bark colour covers %.2f%% of the image, expected < 60%%\n",
+        std::fprintf(stderr, "FAIL: tree colours cover %.2f%% of the image, expected < 60%%\n",
                      100.0 * fraction);
         ok = false;
     }
     const Rgb corners[] = {at(0, 0), at(width - 1, 0), at(0, height - 1),
                            at(width - 1, height - 1)};
     for (const Rgb& c : corners) {
-        if (is_bark(c) || !is_backdrop_like(c)) {
+        if (is_tree(c) || !is_backdrop_like(c)) {
             std::fprintf(stderr, "FAIL: corner pixel (%d, %d, %d) is not backdrop grey-blue\n", c.r,
                          c.g, c.b);
             ok = false;
         }
     }
-    if (bark > 0) {
-        const double cx = sum_x / bark;
+    if (tree > 0) {
+        const double cx = sum_x / tree;
         if (cx < 0.25 * width || cx > 0.75 * width) {
             std::fprintf(stderr, "FAIL: the tree's centroid x = %.0f is outside the middle half\n",
                          cx);

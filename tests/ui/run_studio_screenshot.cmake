@@ -1,5 +1,6 @@
 # Runs sylva-studio under a virtual X server, saves a screenshot and checks it.
-# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800 [-DTEMPLATE=name] [-DEXTRA=--flag] -P this
+# cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800
+#       [-DARGS=arg|arg...] -P this
 # Any failure ends in FATAL_ERROR, which makes cmake -P (and so the test) exit non-zero.
 foreach(var STUDIO CHECKER OUTPUT WIDTH HEIGHT)
   if(NOT DEFINED ${var})
@@ -14,23 +15,20 @@ if(NOT XVFB_RUN)
     "(Debian: apt-get install xvfb)")
 endif()
 
-set(template_args "")
-if(DEFINED TEMPLATE)
-  set(template_args --template "${TEMPLATE}")
-endif()
-if(DEFINED EXTRA)
-  list(APPEND template_args ${EXTRA})
+set(studio_args "")
+if(DEFINED ARGS AND NOT ARGS STREQUAL "")
+  string(REPLACE "|" ";" studio_args "${ARGS}")
 endif()
 
 file(REMOVE "${OUTPUT}")
-# -a picks a free display number so parallel runs do not collide; 24-bit depth for GLX.
+# -a picks a free display number; 24-bit depth for GLX.
 execute_process(
   COMMAND "${XVFB_RUN}" -a -s "-screen 0 1600x1200x24"
-          "${STUDIO}" ${template_args} --screenshot "${OUTPUT}" --frames 5
+          "${STUDIO}" ${studio_args} --screenshot "${OUTPUT}" --frames 5
   RESULT_VARIABLE studio_result
   TIMEOUT 120)
 if(NOT studio_result EQUAL 0)
-  message(FATAL_ERROR "sylva-studio --screenshot failed: ${studio_result}")
+  message(FATAL_ERROR "sylva-studio ${studio_args} --screenshot failed: ${studio_result}")
 endif()
 if(NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "sylva-studio exited 0 but wrote no ${OUTPUT}")

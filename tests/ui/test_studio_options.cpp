@@ -1,0 +1,42 @@
+// sylva-studio's command line: the screenshot mode scripts and tests rely on.
+#include "ui/studio_options.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace sylva::studio {
+namespace {
+
+StudioOptions parse(std::vector<const char*> args) {
+    args.insert(args.begin(), "sylva-studio");
+    return parse_studio_options(static_cast<int>(args.size()), args.data());
+}
+
+TEST(StudioOptions, DefaultsOpenTheDefaultTreeInAWindow) {
+    StudioOptions o = parse({});
+    EXPECT_FALSE(o.screenshot_path);
+    EXPECT_EQ(o.tree_template, "default");
+    EXPECT_FALSE(o.low_poly);
+}
+
+TEST(StudioOptions, ScreenshotWithTemplateAndFrames) {
+    StudioOptions o = parse({"--screenshot", "out.png", "--template", "spruce", "--frames", "3"});
+    ASSERT_TRUE(o.screenshot_path);
+    EXPECT_EQ(*o.screenshot_path, "out.png");
+    EXPECT_EQ(o.tree_template, "spruce");
+    EXPECT_EQ(o.screenshot_frames, 3);
+    EXPECT_EQ(parse({"-t", "my.toml"}).tree_template, "my.toml");
+}
+
+TEST(StudioOptions, RejectsMistakesWithAUsageError) {
+    EXPECT_THROW(parse({"--frames", "3"}), UsageError);  // without --screenshot
+    EXPECT_THROW(parse({"--screenshot", "a.png", "--frames", "0"}), UsageError);
+    EXPECT_THROW(parse({"--screenshot", "a.png", "--frames", "x"}), UsageError);
+    EXPECT_THROW(parse({"--screenshot"}), UsageError);
+    EXPECT_THROW(parse({"--template"}), UsageError);
+    EXPECT_THROW(parse({"--bogus"}), UsageError);
+}
+
+}  // namespace
+}  // namespace sylva::studio

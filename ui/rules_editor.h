@@ -1,0 +1,29 @@
+// The rules editor: a multi-line text field for the grammar with line numbers, which marks a
+// grammar error in place: a red band on its line and a red bar under its column.
+#pragma once
+
+#include <string>
+
+namespace sylva::studio {
+
+// The editor's memory between frames (ImGui keeps the text's own undo and selection).
+struct RulesEditorState {
+    // When set, the next frame focuses the editor and puts the cursor here (1-based).
+    int select_line = 0, select_column = 1;
+    int cursor = -1;      // the text cursor's byte offset while the editor is active
+};
+
+struct TextMark {
+    int line = 0;    // 1-based; 0: no mark
+    int column = 0;  // 1-based; 0: the whole line
+};
+
+// Draws the editor `height` pixels tall and as wide as the panel; it scrolls both ways, and
+// follows the cursor while typing. Returns true when the text was edited.
+bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorState& editor,
+                  float height);
+
+// Scrolls to `mark` and puts the cursor there on the next frame.
+void reveal(RulesEditorState& editor, TextMark mark);
+
+}  // namespace sylva::studio
