@@ -1,13 +1,14 @@
 // sylva: the headless command-line interface (SPEC section 8).
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
-#include "app/errors.h"
-#include "app/export.h"
-#include "app/lowpoly_tree.h"
-#include "app/pipeline.h"
-#include "app/skeleton_json.h"
-#include "app/template_library.h"
+#include "core/errors.h"
+#include "core/stopwatch.h"
+#include "export/export_tree.h"
+#include "export/skeleton_json.h"
 #include "marching/mesh_checks.h"
-#include "turtle/grammar_error.h"
+#include "tree/growth.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
+#include "turtle/lsystem_growth.h"
 
 #include <charconv>
 #include <chrono>
@@ -78,7 +79,7 @@ struct Options {
     std::optional<std::size_t> budget, budget_trunk, budget_crown;
     bool lod = false;
     bool fidelity = false;
-    std::optional<ExportFormat> format;
+    const ExportFormat* format = nullptr;
     ExportOptions export_options;
 };
 
@@ -184,61 +185,45 @@ void print_parts(const std::vector<NamedMesh>& parts, const char* indent) {
 
 int run_export(const Options& o) {
     if (o.output.empty()) throw UsageError("export needs -o OUT.obj|OUT.glb|OUT.ply");
-    std::optional<ExportFormat> format = o.format ? o.format : format_from_extension(o.output);
+    const ExportFormat* format = o.format ? o.format : format_from_extension(o.output);
     if (!format)
         throw UsageError("cannot tell the format of '" + o.output +
                          "': use .obj, .glb or .ply, or --format");
     TreeTemplate tmpl = configured_template(o);
     Tree tree = generate_tree(tmpl, o.mesh);
 
-    TreeBudget budget;
-    budget.total = o.budget ? *o.budget : static_cast<std::size_t>(tmpl.params.triangle_budget);
-    budget.trunk = o.budget_trunk;
-    budget.crown = o.budget_crown;
-    const bool reduce = budget.total > 0 || budget.trunk || budget.crown;
-    auto start = std::chrono::steady_clock::now();
-    std::vector<std::filesystem::path> files;
-    std::vector<ReducedTree> levels;
-    if (o.lod) {
-        std::size_t finest = budget.total > 0 ? budget.total : 800;
-        std::vector<std::size_t> budgets = lod_budgets(finest, 4);
-        levels = make_lod_chain(tree, budgets);
-        std::vector<std::vector<NamedMesh>> named;
-        for (size_t i = 0; i < levels.size(); ++i) {
-            named.push_back(tree_parts(levels[i].trunk, levels[i].crown, tree.leaves, tmpl.colors));
-            for (NamedMesh& part : named.back()) part.name += "_LOD" + std::to_string(i);
-        }
-        files = write_lod_chain(o.output, named, o.export_options, format);
-    } else if (reduce) {
-        levels.push_back(reduce_tree(tree, budget));
-        files = write_model(o.output, tree_parts(levels[0].trunk, levels[0].crown, tree.leaves, tmpl.colors),
-                            o.export_options, format);
-    } else {
-        files = write_model(o.output, tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors),
-                            o.export_options, format);
-    }
-    double reduce_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    FinishSettings finish;
+    finish.budget.total =
+        o.budget ? *o.budget : static_cast<std::size_t>(tmpl.params.triangle_budget);
+    finish.budget.trunk = o.budget_trunk;
+    finish.budget.crown = o.budget_crown;
+    finish.lod = o.lod;
+    Stopwatch clock;
+    const FinishedTree finished = finish_tree(tree, finish);
+    const std::vector<std::filesystem::path> files =
+        write_tree(o.output, tree, finished, tmpl.colors, o.export_options, format);
+    tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
     std::printf("  marching cubes:\n");
     print_parts(tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors), "    ");
-    for (size_t i = 0; i < levels.size(); ++i) {
-        if (o.lod) std::printf("  LOD%zu (budget %zu):\n", i, lod_budgets(budget.total > 0 ? budget.total : 800, 4)[i]);
-        else std::printf("  reduced (budget %zu):\n", budget.total);
-        print_parts(tree_parts(levels[i].trunk, levels[i].crown, {}, tmpl.colors), "    ");
-        if (!levels[i].note.empty()) std::printf("    note: %s\n", levels[i].note.c_str());
+    for (size_t i = 0; i < finished.levels.size(); ++i) {
+        const ReducedTree& level = finished.levels[i];
+        if (finished.lod) std::printf("  LOD%zu (budget %zu):\n", i, finished.budgets[i]);
+        else std::printf("  reduced (budget %zu):\n", finished.budgets[i]);
+        print_parts(tree_parts(level.trunk, level.crown, {}, tmpl.colors), "    ");
+        if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
-    std::printf("  skeleton: %zu segments, %zu tips\n"
-                "  time: derive %.1f ms, turtle %.1f ms, trunk mesh %.1f ms, crown mesh %.1f ms, "
-                "leaves %.1f ms, reduce + write %.1f ms\n",
-                tree.skeleton.segments.size(), tips(tree.skeleton).size(), tree.times.derive_ms,
-                tree.times.turtle_ms, tree.times.trunk_mesh_ms, tree.times.crown_mesh_ms,
-                tree.times.leaves_ms, reduce_ms);
+    std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),
+                tips(tree.skeleton).size());
+    for (size_t i = 0; i < tree.times.size(); ++i)
+        std::printf("%s %s %.1f ms", i ? "," : "", tree.times[i].name.c_str(), tree.times[i].ms);
+    std::printf("\n");
     if (o.fidelity) {
         Mesh reference = reference_surface(tmpl, 200, o.mesh);
-        const Mesh& trunk = levels.empty() ? tree.trunk : levels[0].trunk;
-        const Mesh& crown = levels.empty() ? tree.crown : levels[0].crown;
+        const bool reduced = !finished.levels.empty();
+        const Mesh& trunk = reduced ? finished.levels[0].trunk : tree.trunk;
+        const Mesh& crown = reduced ? finished.levels[0].crown : tree.crown;
         Fidelity f = measure_tree_fidelity(trunk, crown, reference);
         std::printf("  fidelity to the resolution-200 surface: mean %.3f %% max %.3f %% of the "
                     "height %.2f m (%zu samples)\n",
@@ -248,7 +233,11 @@ int run_export(const Options& o) {
 }
 
 int run_derive(const Options& o) {
-    std::string text = derive_word(configured_template(o)).to_string();
+    const TreeTemplate tree = configured_template(o);
+    if (tree.growth != lsystem_growth.name)
+        throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
+                         tree.growth);
+    std::string text = derive_word(tree).to_string();
     text.push_back('\n');
     std::fwrite(text.data(), 1, text.size(), stdout);
     return kOk;
@@ -257,7 +246,7 @@ int run_derive(const Options& o) {
 int run_skeleton(const Options& o) {
     if (o.output.empty()) throw UsageError("skeleton needs -o skeleton.json");
     TreeTemplate tree = configured_template(o);
-    Skeleton skeleton = grow_skeleton(tree);
+    Skeleton skeleton = grow(tree);
     write_skeleton_json(o.output, skeleton, tree.params);
     std::printf("wrote %s: %zu segments, %zu tips\n", o.output.c_str(), skeleton.segments.size(),
                 tips(skeleton).size());

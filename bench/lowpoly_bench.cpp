@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "app/lowpoly_tree.h"
-#include "app/template_library.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/template_library.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"

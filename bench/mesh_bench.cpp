@@ -7,8 +7,9 @@
 // Peak memory is measured in a forked child per configuration (ru_maxrss).
 //
 // Usage: sylva-bench-mesh [--quick]      (--quick: resolutions up to 100, one repetition)
-#include "app/pipeline.h"
-#include "app/template_library.h"
+#include "tree/growth.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
@@ -182,7 +183,7 @@ int main(int argc, char** argv) {
     if (quick) resolutions = {25, 50, 100};
 
     TreeTemplate spruce = load_template("spruce");
-    Skeleton skeleton = grow_skeleton(spruce);
+    Skeleton skeleton = grow(spruce);
     std::printf("Seed 001 spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "
                 "times best of %d, seconds\n\n",
                 skeleton.segments.size(), tips(skeleton).size(),
@@ -234,7 +235,7 @@ int main(int argc, char** argv) {
 
     TreeTemplate tree = default_template();
     tree.params.trunk_resolution = tree.params.crown_resolution = 64;
-    Skeleton default_skeleton = grow_skeleton(tree);
+    Skeleton default_skeleton = grow(tree);
     TreeFields fields = tree_fields(default_skeleton, tree.params);
     double total = 0;
     for (const Part& part : tree_parts(fields))

@@ -452,7 +452,7 @@ std::vector<Mesh> reduce(std::span<const Mesh* const> parts, std::size_t target,
     decimater.set_observer(&observer);
     decimater.decimate_to_faces(target);
     if (settings.relocate_vertices) decimater.relocate();
-    if (settings.cancel && settings.cancel->load()) throw DecimationCancelled();
+    if (settings.cancel && settings.cancel->load()) throw Cancelled();
     if (settings.progress) settings.progress(1.0f);
     return extract(om, part_of, parts.size());
 }

@@ -18,7 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "marching/mesh.h"
+#include "core/cancel.h"
+#include "core/mesh.h"
 
 namespace sylva {
 
@@ -43,12 +44,8 @@ struct DecimateSettings {
     // Called with the finished fraction (0..1) from the calling thread.
     std::function<void(float)> progress;
     // Polled every few hundred collapses; when it becomes true, decimate() throws
-    // DecimationCancelled.
-    const std::atomic<bool>* cancel = nullptr;
-};
-
-struct DecimationCancelled : std::runtime_error {
-    DecimationCancelled() : std::runtime_error("decimation cancelled") {}
+    // Cancelled.
+    CancelFlag cancel = nullptr;
 };
 
 struct DecimateResult {

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 
 namespace sylva {
 

@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 
 namespace sylva {
 

@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 
 namespace sylva {
 

@@ -1,27 +1,12 @@
 #include "lowpoly/surface_sampling.h"
 
+#include "core/random.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
 namespace sylva {
-namespace {
-
-// SplitMix64: tiny, and the same sequence everywhere (std:: distributions are not).
-struct SplitMix64 {
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    // Uniform in [0, 1).
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-};
-
-}  // namespace
-
 std::vector<glm::vec3> sample_surface(const Mesh& mesh, std::size_t count, std::uint64_t seed) {
     std::vector<double> cumulative;
     cumulative.reserve(mesh.triangles.size());
@@ -34,7 +19,7 @@ std::vector<glm::vec3> sample_surface(const Mesh& mesh, std::size_t count, std::
     std::vector<glm::vec3> points;
     if (!(total > 0.0)) return points;
     points.reserve(count);
-    SplitMix64 rng{seed};
+    Random rng(seed);
     for (std::size_t i = 0; i < count; ++i) {
         const double pick = rng.uniform() * total;
         std::size_t k = static_cast<std::size_t>(

@@ -6,7 +6,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 
 namespace sylva {
 

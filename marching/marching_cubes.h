@@ -6,7 +6,9 @@
 // welded by global edge id; a sample counts as inside only when strictly negative.
 #pragma once
 
-#include "marching/mesh.h"
+#include "core/box.h"
+#include "core/cancel.h"
+#include "core/mesh.h"
 
 #include <atomic>
 #include <cstddef>
@@ -27,8 +29,6 @@ using ScalarField = std::function<float(const glm::vec3&)>;
 using BatchField = std::function<void(std::span<const glm::vec3> points, std::span<float> values)>;
 
 // Thrown by the meshers when MarchingCubesSettings::cancel became true.
-struct MeshingCancelled {};
-
 enum class Mesher {
     Dense,   // every grid node evaluated, in parallel slabs
     Sparse,  // blocks that provably hold no surface are skipped (needs a distance bound)
@@ -56,8 +56,8 @@ struct MarchingCubesSettings {
     std::function<void(float)> progress;
     // Polled between small pieces of work (a batch of a few thousand nodes, or a few
     // blocks); once it is true the mesher lets the running pieces finish, drops its work
-    // and throws MeshingCancelled.
-    const std::atomic<bool>* cancel = nullptr;
+    // and throws Cancelled.
+    CancelFlag cancel = nullptr;
     // Overwritten when not null (and the run completes).
     MeshingStats* stats = nullptr;
 };

@@ -2,7 +2,7 @@
 // oriented; its area and enclosed volume. Used by tests, the CLI summary and benchmarks.
 #pragma once
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 
 #include <cstddef>
 #include <string>

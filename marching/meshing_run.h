@@ -33,7 +33,7 @@ class MeshingRun {
 
     // Calls item(i) for every i in [0, n), in parallel unless serial. The cancel flag is
     // polled before each item, so items should be a few tens of microseconds or more;
-    // throws MeshingCancelled once it is seen, after the running items have finished.
+    // throws Cancelled once it is seen, after the running items have finished.
     template <class Item>
     void for_each(std::size_t n, Item&& item) {
         if (serial_) {
@@ -72,7 +72,7 @@ class MeshingRun {
     }
 
     void throw_if_cancelled() const {
-        if (cancelled()) throw MeshingCancelled{};
+        if (cancelled()) throw Cancelled{};
     }
 
     // Progress runs through phases: phase fraction done/units maps to [start, start + weight].

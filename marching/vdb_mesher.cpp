@@ -354,7 +354,7 @@ Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings&
     const float band = float(vdb.band_voxels * grid.h);
     const float background = band;
     Progress progress(settings.progress);
-    if (cancelled(settings)) throw MeshingCancelled{};
+    if (cancelled(settings)) throw Cancelled{};
 
     // Sampling: blocks are independent and their results land in fixed slots, so the tree
     // built from them does not depend on the schedule.
@@ -377,7 +377,7 @@ Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings&
             progress.report(kSampledFraction * float(finished) / float(block_count));
         },
         tbb::simple_partitioner());
-    if (stop || cancelled(settings)) throw MeshingCancelled{};
+    if (stop || cancelled(settings)) throw Cancelled{};
 
     openvdb::FloatGrid::Ptr level_set = openvdb::FloatGrid::create(background);
     openvdb::math::Transform::Ptr transform =
@@ -399,7 +399,7 @@ Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings&
     // Merges the inside tiles (and leaves with nothing active) into coarser tiles.
     openvdb::tools::pruneLevelSet(tree);
     progress.report_blocking(kSampledFraction);
-    if (cancelled(settings)) throw MeshingCancelled{};
+    if (cancelled(settings)) throw Cancelled{};
 
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
@@ -407,7 +407,7 @@ Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings&
     openvdb::tools::volumeToMesh(*level_set, points, triangles, quads, 0.0, vdb.adaptivity);
     level_set.reset();
     progress.report_blocking(kMeshedFraction);
-    if (cancelled(settings)) throw MeshingCancelled{};
+    if (cancelled(settings)) throw Cancelled{};
 
     Mesh mesh = to_mesh(points, triangles, quads);
     drop_unused_vertices(mesh);

@@ -53,7 +53,7 @@ struct VdbSettings {
 // order included, whatever the thread count. Exceptions the field throws reach the caller.
 //
 // Throws std::invalid_argument as marching_cubes() does, and when adaptivity is outside
-// [0, 1] or band_voxels below 1; MeshingCancelled when cancelled.
+// [0, 1] or band_voxels below 1; Cancelled when cancelled.
 Mesh vdb_mesh(const BatchField& field, const Box& box, const MarchingCubesSettings& settings,
               const VdbSettings& vdb = {});
 

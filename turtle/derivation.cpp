@@ -1,6 +1,6 @@
 #include "turtle/derivation.h"
 
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 
 #include <array>
 #include <string>
@@ -24,8 +24,7 @@ public:
         Word word = axiom_word(system_, random_);
         Word next;
         for (int step = 1; step <= settings_.steps; ++step) {
-            if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
-                throw DerivationCancelled{};
+            throw_if_cancelled(settings_.cancel);
             if (has_context_) match_brackets(word);
             next.clear();
             next.reserve(word.size() * 2, word.param_count() * 2);

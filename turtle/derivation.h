@@ -2,6 +2,7 @@
 // order, arity matching, ABOP contexts, seeded stochastic choice, and a cap on word size.
 #pragma once
 
+#include "core/cancel.h"
 #include "turtle/lsystem.h"
 #include "turtle/word.h"
 
@@ -16,10 +17,10 @@ struct DeriveSettings {
     std::uint64_t seed = 1;
     // Derivation fails with a GrammarError naming the step once the word grows past this.
     std::size_t max_modules = 4'000'000;
-    const std::atomic<bool>* cancel = nullptr;  // checked between steps; throws DerivationCancelled
+    CancelFlag cancel = nullptr;  // checked between steps; throws Cancelled
 };
 
-struct DerivationCancelled {};
+
 
 // The axiom as a word (its expressions evaluated; rand() draws from `random`).
 Word axiom_word(const LSystem& system, Random& random);

@@ -1,6 +1,6 @@
 #include "turtle/expression.h"
 
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <array>
@@ -10,15 +10,6 @@
 #include <numbers>
 
 namespace sylva {
-
-std::uint64_t Random::next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-double Random::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 // Recursive descent over the grammar in expression.h, emitting postfix code.
 class ExpressionParser {

@@ -6,6 +6,8 @@
 // rand(a,b). Booleans are 1 and 0.
 #pragma once
 
+#include "core/random.h"
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -15,18 +17,6 @@
 #include <vector>
 
 namespace sylva {
-
-// The deterministic generator behind rand(a,b) and stochastic rules: splitmix64, so the
-// same seed gives the same numbers on every machine and standard library.
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next();
-    double uniform();  // in [0, 1)
-
-private:
-    std::uint64_t state_;
-};
 
 class Expression {
 public:

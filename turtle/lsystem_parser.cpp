@@ -1,6 +1,6 @@
 #include "turtle/lsystem_parser.h"
 
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <cctype>

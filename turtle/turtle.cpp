@@ -1,7 +1,7 @@
 #include "turtle/turtle.h"
 
-#include "turtle/grammar_error.h"
-#include "turtle/pipe_model.h"
+#include "core/errors.h"
+#include "core/pipe_model.h"
 
 #include <glm/geometric.hpp>
 
@@ -58,6 +58,7 @@ public:
 
     Skeleton run() {
         for (size_t i = 0; i < word_.size(); ++i) {
+            if (i % 4096 == 0) throw_if_cancelled(settings_.cancel);
             std::span<const double> a = word_.args(i);
             auto arg = [&](double fallback) { return a.empty() ? fallback : a[0]; };
             switch (word_.symbol(i)) {

@@ -5,21 +5,14 @@
 // azimuth a; F moves along (cos e cos a, sin e, cos e sin a).
 #pragma once
 
-#include "turtle/skeleton.h"
+#include "core/cancel.h"
+#include "core/skeleton.h"
+#include "core/tree_template.h"  // TurtleMode, WidthModel
 #include "turtle/word.h"
 
 #include <glm/vec3.hpp>
 
 namespace sylva {
-
-enum class TurtleMode { Abop, Lptg };
-
-enum class WidthModel {
-    Explicit,  // widths change only through '!'
-    Taper,     // seed 001, 5.3-5.5: every F on the trunk level multiplies the width by
-               // trunk_taper, deeper levels by branch_taper; '!' still sets the width
-    Pipe,      // seed 000's pipe model on the finished skeleton (pipe_model.h)
-};
 
 struct TurtleSettings {
     TurtleMode mode = TurtleMode::Abop;
@@ -36,6 +29,7 @@ struct TurtleSettings {
     double pipe_exponent = 2.5;    // WidthModel::Pipe: Murray's g
     glm::dvec3 tropism{0.0, -1.0, 0.0};
     double elasticity = 0.0;      // 0 disables tropism
+    CancelFlag cancel = nullptr;  // polled every few thousand modules; throws Cancelled
 };
 
 // Throws GrammarError for a ']' with no '[' or a '}' with no '{' in the word.

@@ -6,7 +6,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "marching/mesh.h"
+#include "core/mesh.h"
 #include "ui/gl_program.h"
 
 namespace sylva::studio {

@@ -1,7 +1,7 @@
 #include "ui/panels.h"
 
-#include "app/export.h"
-#include "app/template_library.h"
+#include "export/export.h"
+#include "tree/template_library.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -221,12 +221,11 @@ void export_section(StudioState& state) {
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
     tooltip("the extension picks the format: .obj (+ .mtl), .glb or .ply");
-    const std::optional<ExportFormat> format = format_from_extension(e.path);
-    const char* names[] = {"obj", "glb", "ply"};
-    if (ImGui::BeginCombo("format", format ? names[static_cast<int>(*format)] : "(extension?)")) {
-        for (ExportFormat f : {ExportFormat::Obj, ExportFormat::Glb, ExportFormat::Ply})
-            if (ImGui::Selectable(names[static_cast<int>(f)], format == f))
-                e.path = std::filesystem::path(e.path).replace_extension(format_extension(f)).string();
+    const ExportFormat* format = format_from_extension(e.path);
+    if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
+        for (const ExportFormat* f : export_formats())
+            if (ImGui::Selectable(std::string(f->name).c_str(), format == f))
+                e.path = std::filesystem::path(e.path).replace_extension(f->extension).string();
         ImGui::EndCombo();
     }
     int& budget = state.tree_template.params.triangle_budget;
@@ -310,11 +309,13 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
         const bool reduced = state.tree->reduced.has_value();
         const Mesh& trunk = reduced ? state.tree->reduced->trunk : t.trunk;
         const Mesh& crown = reduced ? state.tree->reduced->crown : t.crown;
-        ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |   derive %.1f  turtle %.1f  "
-                    "trunk %.1f  crown %.1f  leaves %.1f",
+        ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |",
                     state.shown_template.name.c_str(), trunk.triangles.size(), crown.triangles.size(),
-                    t.leaves.triangles.size(), reduced ? " (low poly)" : "", t.times.derive_ms,
-                    t.times.turtle_ms, t.times.trunk_mesh_ms, t.times.crown_mesh_ms, t.times.leaves_ms);
+                    t.leaves.triangles.size(), reduced ? " (low poly)" : "");
+        for (const StageTime& stage : t.times) {
+            ImGui::SameLine(0.0f, 0.0f);
+            ImGui::Text("  %s %.1f", stage.name.c_str(), stage.ms);
+        }
         if (reduced) {
             ImGui::SameLine(0.0f, 0.0f);
             ImGui::Text("  reduce %.1f", state.tree->reduce_ms);

@@ -1,6 +1,6 @@
 #include "ui/screenshot.h"
 
-#include "app/errors.h"
+#include "core/errors.h"
 #include "ui/gl.h"
 
 // The implementation comes from libstb (linked through pkg-config), not from a

@@ -1,11 +1,11 @@
 #include "ui/studio_state.h"
 
-#include "app/atomic_file.h"
-#include "app/export.h"
-#include "app/template_file.h"
-#include "app/template_library.h"
+#include "core/atomic_file.h"
+#include "export/export_tree.h"
+#include "tree/template_file.h"
+#include "tree/template_library.h"
 #include "marching/marching_cubes.h"
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <exception>
@@ -30,7 +30,7 @@ bool same_params(const TreeParams& a, const TreeParams& b) {
 
 // What shapes the tree: a change here needs a new generation (a colour change does not).
 bool same_tree_input(const TreeTemplate& a, const TreeTemplate& b) {
-    return a.grammar == b.grammar && a.mode == b.mode && a.width_model == b.width_model &&
+    return a.growth == b.growth && a.grammar == b.grammar && a.mode == b.mode && a.width_model == b.width_model &&
            same_params(a.params, b.params);
 }
 
@@ -88,32 +88,30 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown,
                         const TreeTemplate& tmpl, std::size_t budget,
                         const ExportSettings& settings) {
     const Tree& tree = shown->tree;
-    std::vector<std::filesystem::path> files;
-    if (settings.lod) {
-        std::vector<std::size_t> budgets = lod_budgets(budget > 0 ? budget : 800, 4);
-        std::vector<ReducedTree> levels = make_lod_chain(tree, budgets);
-        std::vector<std::vector<NamedMesh>> named;
-        for (std::size_t i = 0; i < levels.size(); ++i) {
-            named.push_back(tree_parts(levels[i].trunk, levels[i].crown, tree.leaves, tmpl.colors));
-            for (NamedMesh& part : named.back()) part.name += "_LOD" + std::to_string(i);
-        }
-        files = write_lod_chain(settings.path, named);
-        return "wrote " + files_text(files) + ": LOD0-LOD3, " + std::to_string(budgets.front()) +
-               " to " + std::to_string(budgets.back()) + " trunk + crown triangles";
+    FinishedTree finished;
+    if (!settings.lod && budget > 0 && shown->reduced && shown->budget == budget) {
+        finished.levels = {*shown->reduced};
+        finished.budgets = {budget};
+    } else {
+        FinishSettings finish;
+        finish.budget.total = budget;
+        finish.lod = settings.lod;
+        finished = finish_tree(tree, finish);
     }
-    std::optional<ReducedTree> reduced;
-    if (budget > 0) {
-        if (shown->reduced && shown->budget == budget) reduced = shown->reduced;
-        else reduced = reduce_tree(tree, TreeBudget{budget});
-    }
-    const Mesh& trunk = reduced ? reduced->trunk : tree.trunk;
-    const Mesh& crown = reduced ? reduced->crown : tree.crown;
-    files = write_model(settings.path, tree_parts(trunk, crown, tree.leaves, tmpl.colors));
-    std::string text = "wrote " + files_text(files) + ": trunk " +
-                       std::to_string(trunk.triangles.size()) + ", crown " +
-                       std::to_string(crown.triangles.size()) + ", leaves " +
-                       std::to_string(tree.leaves.triangles.size()) + " triangles";
-    if (reduced && !reduced->note.empty()) text += " (" + reduced->note + ")";
+    const auto files = write_tree(settings.path, tree, finished, tmpl.colors);
+    if (finished.lod)
+        return "wrote " + files_text(files) + ": LOD0-LOD" +
+               std::to_string(finished.levels.size() - 1) + ", " +
+               std::to_string(finished.budgets.front()) + " to " +
+               std::to_string(finished.budgets.back()) + " trunk + crown triangles";
+    const ModelParts parts = finished_parts(tree, finished, tmpl.colors).front();
+    std::string text = "wrote " + files_text(files) + ":";
+    for (const NamedMesh& part : parts)
+        text += " " + part.name + " " + std::to_string(part.mesh->triangles.size()) + ",";
+    text.back() = ' ';
+    text += "triangles";
+    if (!finished.levels.empty() && !finished.levels[0].note.empty())
+        text += " (" + finished.levels[0].note + ")";
     return text;
 }
 
@@ -144,6 +142,9 @@ std::size_t preview_budget(const StudioState& state) {
 void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
     commit_edit(state);
     state.tree_template = tree_template;
+    // The editor shows the grammar alone: errors count its lines, not the file's.
+    state.tree_template.source.clear();
+    state.tree_template.grammar_line = 1;
     commit_edit(state);  // picking a template is an edit: undo brings the old one back
     state.frame_next_tree = true;
     start_generation(state);
@@ -213,8 +214,7 @@ void poll_jobs(StudioState& state) {
             state.error = e.what();
             state.error_line = e.line();
             state.error_column = e.column();
-        } catch (const MeshingCancelled&) {
-        } catch (const DecimationCancelled&) {
+        } catch (const Cancelled&) {
         } catch (const std::exception& e) {
             state.error = e.what();
             state.error_line = state.error_column = 0;

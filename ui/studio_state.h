@@ -3,8 +3,8 @@
 // main; panels are functions of this state.
 #pragma once
 
-#include "app/lowpoly_tree.h"
-#include "app/pipeline.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/pipeline.h"
 #include "ui/orbit_camera.h"
 
 #include <atomic>

@@ -62,12 +62,42 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
 }
 
-TEST_F(Cli, BrokenGrammarIsExitCode3WithLineAndNoFile) {
+TEST_F(Cli, BrokenGrammarIsExitCode3NamingFileLineAndColumnAndNoFileIsWritten) {
     { std::ofstream(path("broken.lsys")) << "axiom: F\nF -> F[+F]F\nF FF\n"; }
     Result r = run("export -t " + path("broken.lsys") + " -o " + path("tree.obj"));
     EXPECT_EQ(r.code, 3) << r.output;
-    EXPECT_NE(r.output.find("line 3"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("broken.lsys:3:1: "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("->"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("tree.obj")));
+}
+
+// A grammar inside a template file: errors count the file's lines, not the grammar's.
+TEST_F(Cli, BrokenRuleInATemplateFileNamesTheFilesLine) {
+    {
+        std::ofstream(path("broken.toml")) << "# a comment\n"
+                                              "name = \"broken\"\n"
+                                              "\n"
+                                              "grammar = '''\n"
+                                              "axiom: A\n"
+                                              "A -> F[+A]\n"
+                                              "B FF\n"
+                                              "'''\n";
+    }
+    Result r = run("export -t " + path("broken.toml") + " -o " + path("tree.obj"));
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("broken.toml:7:1: "), std::string::npos) << r.output;
+    // Found while deriving: the rule on the file's line 4 divides by zero.
+    {
+        std::ofstream(path("zero.toml")) << "name = \"zero\"\n"
+                                            "grammar = \"\"\"\n"
+                                            "axiom: A\n"
+                                            "A -> F(1/0)\n"
+                                            "\"\"\"\n";
+    }
+    r = run("export -t " + path("zero.toml") + " -o " + path("tree.obj"));
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("zero.toml:4"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("division by zero"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("tree.obj")));
 }
 

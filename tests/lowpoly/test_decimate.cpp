@@ -153,7 +153,7 @@ TEST(Decimate, ReportsProgressAndCanBeCancelled) {
     std::atomic<bool> cancel{true};
     s.progress = nullptr;
     s.cancel = &cancel;
-    EXPECT_THROW(decimate(input, s), DecimationCancelled);
+    EXPECT_THROW(decimate(input, s), Cancelled);
 }
 
 TEST(Decimate, HarderReductionStraysFurther) {

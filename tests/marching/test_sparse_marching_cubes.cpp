@@ -336,7 +336,7 @@ TEST(SparseMarchingCubes, CancelFromTheProgressCallbackThrows) {
             const BatchField field = cone_cloud(3u, 100, 0.1f);
             EXPECT_THROW(sparse ? sparse_marching_cubes(field, cube(1.0f), s)
                                 : marching_cubes(field, cube(1.0f), s),
-                         MeshingCancelled);
+                         Cancelled);
             // Stopped soon: no report of completion.
             EXPECT_LT(calls_after_cancel.load(), 4);
         }
@@ -352,8 +352,8 @@ TEST(SparseMarchingCubes, CancelledBeforeStartThrowsWithoutEvaluating) {
     };
     MarchingCubesSettings s = settings(50);
     s.cancel = &cancel;
-    EXPECT_THROW(sparse_marching_cubes(counting, cube(1.0f), s), MeshingCancelled);
-    EXPECT_THROW(marching_cubes(counting, cube(1.0f), s), MeshingCancelled);
+    EXPECT_THROW(sparse_marching_cubes(counting, cube(1.0f), s), Cancelled);
+    EXPECT_THROW(marching_cubes(counting, cube(1.0f), s), Cancelled);
     EXPECT_EQ(evaluations.load(), 0u);
 }
 

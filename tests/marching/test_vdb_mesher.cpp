@@ -293,7 +293,7 @@ TEST(VdbMesher, CancelThrows) {
     auto s = settings(64);
     s.cancel = &cancel;
     s.stats = &stats;
-    EXPECT_THROW(vdb_mesh(batch(sphere({}, 1.0f)), cube(1.0f), s), MeshingCancelled);
+    EXPECT_THROW(vdb_mesh(batch(sphere({}, 1.0f)), cube(1.0f), s), Cancelled);
     EXPECT_EQ(stats.evaluations, 12345u);  // only a completed run overwrites the stats
 
     // Cancelled while sampling, from the field itself.
@@ -303,7 +303,7 @@ TEST(VdbMesher, CancelThrows) {
         cancel = true;
         for (std::size_t i = 0; i < points.size(); ++i) values[i] = f(points[i]);
     };
-    EXPECT_THROW(vdb_mesh(cancelling, cube(1.0f), s), MeshingCancelled);
+    EXPECT_THROW(vdb_mesh(cancelling, cube(1.0f), s), Cancelled);
 
     // Cancelled from the progress callback, at each of its calls but the last (1: done).
     auto p = settings(64);
@@ -321,7 +321,7 @@ TEST(VdbMesher, CancelThrows) {
         p.progress = [&](float) {
             if (++calls == at_call) cancel = true;
         };
-        EXPECT_THROW(vdb_mesh(batch(f), cube(1.0f), p), MeshingCancelled) << "call " << at_call;
+        EXPECT_THROW(vdb_mesh(batch(f), cube(1.0f), p), Cancelled) << "call " << at_call;
     }
 }
 

@@ -2,7 +2,7 @@
 // their place, and the size cap.
 #include "derive_text.h"
 #include "turtle/derivation.h"
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 #include "turtle/lsystem_parser.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Turtle interpretation: endpoints follow SPEC section 2's frame and formulas.
 #include "turtle/derivation.h"
-#include "turtle/grammar_error.h"
+#include "core/errors.h"
 #include "turtle/lsystem_parser.h"
 #include "turtle/turtle.h"
 

@@ -3,7 +3,7 @@
 // panels call every frame, so they are tested as the main loop drives them: poll, act, poll.
 #include "ui/studio_state.h"
 
-#include "app/template_library.h"
+#include "tree/template_library.h"
 
 #include <gtest/gtest.h>
 

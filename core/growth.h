@@ -1,0 +1,36 @@
+// The seam between a template and its skeleton: a growth method (SPEC section 3: L-system +
+// turtle, space colonization, ...) turns a template into a Skeleton, which every later stage
+// (fields, meshing, leaves, low poly, export) shares. Each method lives in its own folder
+// and is registered with one line in tree/growth.cpp.
+#pragma once
+
+#include "core/cancel.h"
+#include "core/skeleton.h"
+#include "core/tree_template.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sylva {
+
+// How long one stage of making a tree took, for status lines and benchmarks.
+struct StageTime {
+    std::string name;
+    double ms = 0.0;
+};
+
+struct GrowthContext {
+    CancelFlag cancel = nullptr;           // polled between steps; throws Cancelled
+    std::vector<StageTime>* times = nullptr;  // when set, each method appends its stages
+};
+
+struct GrowthMethod {
+    std::string_view name;         // a template's `growth = "..."`
+    std::string_view description;  // one line, for --help and the studio
+    // Throws InputError (GrammarError for a grammar) on bad input, naming the template's
+    // file and line where it has one; Cancelled when the context's flag is set.
+    Skeleton (*grow)(const TreeTemplate& tree, const GrowthContext& context);
+};
+
+}  // namespace sylva

@@ -1,0 +1,82 @@
+#include "export/export.h"
+
+#include "core/errors.h"
+#include "export/glb_writer.h"
+#include "export/obj_writer.h"
+#include "export/ply_writer.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace sylva {
+namespace {
+
+// The registry: one line per format.
+const ExportFormat* const kFormats[] = {
+    &obj_format,
+    &glb_format,
+    &ply_format,
+};
+
+std::string lower(std::string_view text) {
+    std::string out(text);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return out;
+}
+
+const ExportFormat& resolve(const std::filesystem::path& path, const ExportFormat* format) {
+    if (format) return *format;
+    if (const ExportFormat* by_extension = format_from_extension(path)) return *by_extension;
+    std::string known;
+    for (const ExportFormat* f : kFormats) known += (known.empty() ? "" : ", ") + std::string(f->extension);
+    throw InputError("cannot tell the format of '" + path.string() + "' from its extension '" +
+                     path.extension().string() + "': use " + known);
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& path,
+                                                  std::size_t levels) {
+    std::vector<std::filesystem::path> names;
+    for (std::size_t i = 0; i < levels; ++i) {
+        std::filesystem::path level = path;
+        level.replace_filename(path.stem().string() + "_LOD" + std::to_string(i) +
+                               path.extension().string());
+        names.push_back(level);
+    }
+    return names;
+}
+
+std::span<const ExportFormat* const> export_formats() { return kFormats; }
+
+const ExportFormat* format_from_extension(const std::filesystem::path& path) {
+    const std::string ext = lower(path.extension().string());
+    for (const ExportFormat* f : kFormats)
+        if (f->extension == ext) return f;
+    return nullptr;
+}
+
+const ExportFormat* format_from_name(std::string_view name) {
+    const std::string n = lower(name);
+    for (const ExportFormat* f : kFormats)
+        if (f->name == n) return f;
+    return nullptr;
+}
+
+std::vector<std::filesystem::path> write_model(const std::filesystem::path& path,
+                                               const ModelParts& parts,
+                                               const ExportOptions& options,
+                                               const ExportFormat* format) {
+    return resolve(path, format).write(path, {parts}, options);
+}
+
+std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
+                                                   const std::vector<ModelParts>& levels,
+                                                   const ExportOptions& options,
+                                                   const ExportFormat* format) {
+    return resolve(path, format).write(path, levels, options);
+}
+
+}  // namespace sylva

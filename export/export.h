@@ -1,0 +1,41 @@
+// The export formats Sylva writes, found by name or by a file's extension, and one entry
+// that writes a model or a LOD chain in any of them. Adding a format: a writer file in
+// export/ that defines an ExportFormat, and one line in the table in export.cpp.
+#pragma once
+
+#include "export/export_options.h"
+
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace sylva {
+
+// Every format: obj, glb, ply.
+std::span<const ExportFormat* const> export_formats();
+
+// By extension, any letter case (".OBJ" is obj); nullptr for none of them.
+const ExportFormat* format_from_extension(const std::filesystem::path& path);
+// By name, any letter case ("GLB"), for a --format flag; nullptr otherwise.
+const ExportFormat* format_from_name(std::string_view name);
+
+// Writes the parts to `path` in `format`, or in the format its extension names. Returns
+// every file written (an OBJ comes with its .mtl). Throws InputError when no format is
+// given and the extension is none of the known ones, IoError (naming the path) when a file
+// cannot be written; never leaves a partial file.
+std::vector<std::filesystem::path> write_model(const std::filesystem::path& path,
+                                               const ModelParts& parts,
+                                               const ExportOptions& options = {},
+                                               const ExportFormat* format = nullptr);
+
+// levels[0] is the finest. .glb: one file with a node per level (write_glb_lods); .obj and
+// .ply: one file per level as lod_file_names() says (OBJ: plus one shared `<stem>.mtl`),
+// each level's parts named as given. Returns the files written. Errors as write_model();
+// files of levels already written stay when a later level fails.
+std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
+                                                   const std::vector<ModelParts>& levels,
+                                                   const ExportOptions& options = {},
+                                                   const ExportFormat* format = nullptr);
+
+}  // namespace sylva

@@ -1,0 +1,58 @@
+// Finishing a tree and writing it: the one path from a generated tree to files, used by
+// the CLI's `export` and the studio's Export button alike. Trunk and crown are reduced to
+// the budget (or to a LOD chain of budgets), the parts named and coloured, and the result
+// written in the format the path's extension (or the caller) names.
+#pragma once
+
+#include "export/export.h"
+#include "tree/lowpoly_tree.h"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace sylva {
+
+// The parts as the exporters want them: trunk, crown and leaves with the template's
+// colours, leaves marked open; empty parts left out. The meshes must outlive the result.
+std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Mesh& leaves,
+                                  const PartColors& colors);
+
+struct FinishSettings {
+    // Trunk + crown triangles; total 0 with no part budget keeps every triangle.
+    TreeBudget budget;
+    // LOD0..LOD<lod_levels-1> with budgets total, total/2, ... (lod_budgets()); with a
+    // total of 0 the chain starts at kDefaultTriangleBudget.
+    bool lod = false;
+    std::size_t lod_levels = 4;
+    // Progress and cancel of the reductions (its max_triangles is ignored).
+    DecimateSettings decimate;
+};
+
+// What a tree becomes for export: one reduced tree per level (none: the marching-cubes
+// meshes as they are), with the budget each level was reduced to.
+struct FinishedTree {
+    std::vector<ReducedTree> levels;
+    std::vector<std::size_t> budgets;
+    bool lod = false;  // levels are a LOD chain: parts get a _LOD<i> suffix
+};
+
+// Reduces the tree as `settings` say. Throws what reduce_tree() throws.
+FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
+
+// The parts of each level as the writers want them: trunk and crown of that level (or the
+// tree's own when not reduced) and the leaves, with the template's colours; in a LOD chain
+// every part named `<part>_LOD<i>`. The meshes stay owned by `tree` and `finished`.
+std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
+                                       const PartColors& colors);
+
+// Writes the finished tree to `path` (format: given, or from the extension). Returns every
+// file written. Throws InputError for an unknown extension, IoError when a file cannot be
+// written.
+std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
+                                              const Tree& tree, const FinishedTree& finished,
+                                              const PartColors& colors,
+                                              const ExportOptions& options = {},
+                                              const ExportFormat* format = nullptr);
+
+}  // namespace sylva

@@ -1,0 +1,236 @@
+#include "export/glb_writer.h"
+
+#include <tiny_gltf.h>
+
+#include <cstring>
+#include <glm/common.hpp>
+#include <limits>
+#include <map>
+#include <string>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "export/mesh_normals.h"
+
+namespace sylva {
+namespace {
+
+constexpr int kArrayBuffer = 34962;         // GL_ARRAY_BUFFER
+constexpr int kElementArrayBuffer = 34963;  // GL_ELEMENT_ARRAY_BUFFER
+
+// Builds one glTF model with a single buffer; every part adds its arrays to it.
+class GltfBuilder {
+  public:
+    explicit GltfBuilder(const ExportOptions& options) : options_(options) {
+        model_.asset.version = "2.0";
+        model_.asset.generator = "Sylva";
+        model_.buffers.emplace_back();
+        tinygltf::Node root;
+        root.name = options.model_name;
+        model_.nodes.push_back(root);
+        tinygltf::Scene scene;
+        scene.name = options.model_name;
+        scene.nodes.push_back(0);
+        model_.scenes.push_back(scene);
+        model_.defaultScene = 0;
+    }
+
+    // A node without a mesh under `parent`; returns its index.
+    int add_group(int parent, const std::string& name) {
+        tinygltf::Node node;
+        node.name = name;
+        model_.nodes.push_back(node);
+        const int index = static_cast<int>(model_.nodes.size()) - 1;
+        model_.nodes[static_cast<std::size_t>(parent)].children.push_back(index);
+        return index;
+    }
+
+    // A node with the part's mesh under `parent`, named `name`; empty parts are skipped.
+    // A mesh handed in twice with the same material (leaves in every LOD level) is stored
+    // once and shared by the nodes.
+    void add_part(int parent, const NamedMesh& part, const std::string& name) {
+        if (!part.mesh || part.mesh->triangles.empty()) return;
+        const int mat = material(part);
+        auto [shared, added] =
+            meshes_.try_emplace({part.mesh, mat}, static_cast<int>(model_.meshes.size()));
+        if (added) add_mesh(*part.mesh, mat, name);
+        const int node = add_group(parent, name);
+        model_.nodes[static_cast<std::size_t>(node)].mesh = shared->second;
+    }
+
+    void write(std::ostream& out) {
+        model_.buffers[0].data = std::move(bytes_);
+        tinygltf::TinyGLTF gltf;
+        if (!gltf.WriteGltfSceneToStream(&model_, out, false, true))
+            throw IoError("tinygltf could not write the glTF model");
+    }
+
+  private:
+    void add_mesh(const Mesh& mesh, int mat, const std::string& name) {
+        std::vector<glm::vec3> positions, normals;
+        std::vector<std::uint32_t> indices;
+        if (options_.shading == Shading::Flat) {
+            const std::vector<glm::vec3> face = face_normals(mesh);
+            positions.reserve(3 * mesh.triangles.size());
+            normals.reserve(3 * mesh.triangles.size());
+            for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+                for (std::uint32_t i : mesh.triangles[f]) {
+                    indices.push_back(static_cast<std::uint32_t>(positions.size()));
+                    positions.push_back(mesh.positions[i]);
+                    // A degenerate triangle has no normal; glTF wants unit length.
+                    normals.push_back(face[f] == glm::vec3(0.0f) ? glm::vec3(0, 1, 0) : face[f]);
+                }
+        } else {
+            positions = mesh.positions;
+            normals = vertex_normals(mesh);
+            for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
+        }
+
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        primitive.attributes["POSITION"] = add_vec3(positions, true);
+        primitive.attributes["NORMAL"] = add_vec3(normals, false);
+        primitive.indices = add_indices(indices, positions.size());
+        primitive.material = mat;
+
+        tinygltf::Mesh gltf_mesh;
+        gltf_mesh.name = name;
+        gltf_mesh.primitives.push_back(primitive);
+        model_.meshes.push_back(gltf_mesh);
+    }
+
+    // Appends raw bytes to the buffer as one buffer view (4-byte aligned).
+    int add_view(const void* data, std::size_t size, int target) {
+        while (bytes_.size() % 4 != 0) bytes_.push_back(0);
+        tinygltf::BufferView view;
+        view.buffer = 0;
+        view.byteOffset = bytes_.size();
+        view.byteLength = size;
+        view.target = target;
+        const auto* p = static_cast<const unsigned char*>(data);
+        bytes_.insert(bytes_.end(), p, p + size);
+        model_.bufferViews.push_back(view);
+        return static_cast<int>(model_.bufferViews.size()) - 1;
+    }
+
+    int add_vec3(const std::vector<glm::vec3>& values, bool with_bounds) {
+        static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+        tinygltf::Accessor accessor;
+        accessor.bufferView =
+            add_view(values.data(), values.size() * sizeof(glm::vec3), kArrayBuffer);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.type = TINYGLTF_TYPE_VEC3;
+        accessor.count = values.size();
+        if (with_bounds) {  // required for POSITION
+            glm::vec3 lo(std::numeric_limits<float>::max()),
+                hi(std::numeric_limits<float>::lowest());
+            for (const glm::vec3& v : values) {
+                lo = glm::min(lo, v);
+                hi = glm::max(hi, v);
+            }
+            accessor.minValues = {lo.x, lo.y, lo.z};
+            accessor.maxValues = {hi.x, hi.y, hi.z};
+        }
+        model_.accessors.push_back(accessor);
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    // 16-bit indices when they fit (half the bytes), else 32-bit.
+    int add_indices(const std::vector<std::uint32_t>& indices, std::size_t vertex_count) {
+        tinygltf::Accessor accessor;
+        accessor.type = TINYGLTF_TYPE_SCALAR;
+        accessor.count = indices.size();
+        if (vertex_count <= 65535) {
+            std::vector<std::uint16_t> small(indices.begin(), indices.end());
+            accessor.bufferView = add_view(small.data(), small.size() * 2, kElementArrayBuffer);
+            accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        } else {
+            accessor.bufferView = add_view(indices.data(), indices.size() * 4, kElementArrayBuffer);
+            accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        }
+        model_.accessors.push_back(accessor);
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    // One material per part name, shared by every LOD level.
+    int material(const NamedMesh& part) {
+        auto found = materials_.find(part.name);
+        if (found != materials_.end()) return found->second;
+        tinygltf::Material m;
+        m.name = part.name;
+        m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
+        m.pbrMetallicRoughness.metallicFactor = 0.0;  // bark and leaves are dielectric
+        m.pbrMetallicRoughness.roughnessFactor = 0.9;
+        m.doubleSided = !part.closed;
+        model_.materials.push_back(m);
+        const int index = static_cast<int>(model_.materials.size()) - 1;
+        materials_[part.name] = index;
+        return index;
+    }
+
+    const ExportOptions& options_;
+    tinygltf::Model model_;
+    std::vector<unsigned char> bytes_;
+    std::map<std::string, int> materials_;
+    std::map<std::pair<const Mesh*, int>, int> meshes_;
+};
+
+// IoErrors from serialising, with the path in front.
+template <class F>
+void with_path(const std::filesystem::path& path, F&& f) {
+    try {
+        f();
+    } catch (const IoError& e) {
+        throw IoError("cannot write '" + path.string() + "': " + e.what());
+    }
+}
+
+}  // namespace
+
+void write_glb(std::ostream& out, const std::vector<NamedMesh>& parts,
+               const ExportOptions& options) {
+    GltfBuilder builder(options);
+    for (const NamedMesh& part : parts) builder.add_part(0, part, part.name);
+    builder.write(out);
+}
+
+void write_glb(const std::filesystem::path& path, const std::vector<NamedMesh>& parts,
+               const ExportOptions& options) {
+    write_file_atomically(
+        path, [&](std::ostream& out) { with_path(path, [&] { write_glb(out, parts, options); }); });
+}
+
+void write_glb_lods(std::ostream& out, const std::vector<std::vector<NamedMesh>>& levels,
+                    const ExportOptions& options) {
+    GltfBuilder builder(options);
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        const std::string suffix = "_LOD" + std::to_string(i);
+        const int level = builder.add_group(0, options.model_name + suffix);
+        for (const NamedMesh& part : levels[i]) builder.add_part(level, part, part.name + suffix);
+    }
+    builder.write(out);
+}
+
+void write_glb_lods(const std::filesystem::path& path,
+                    const std::vector<std::vector<NamedMesh>>& levels,
+                    const ExportOptions& options) {
+    write_file_atomically(path, [&](std::ostream& out) {
+        with_path(path, [&] { write_glb_lods(out, levels, options); });
+    });
+}
+
+namespace {
+
+std::vector<std::filesystem::path> write_glb_file(const std::filesystem::path& path,
+                                                  const std::vector<ModelParts>& levels,
+                                                  const ExportOptions& options) {
+    if (levels.size() == 1) write_glb(path, levels[0], options);
+    else write_glb_lods(path, levels, options);
+    return {path};
+}
+
+}  // namespace
+
+const ExportFormat glb_format = {"glb", ".glb", write_glb_file};
+
+}  // namespace sylva

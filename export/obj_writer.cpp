@@ -1,0 +1,172 @@
+#include "export/obj_writer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <system_error>
+
+#include "core/atomic_file.h"
+#include "export/mesh_normals.h"
+
+namespace sylva {
+namespace {
+
+void append_number(std::string& line, float value) {
+    char buffer[32];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    line.push_back(' ');
+    line.append(buffer, result.ptr);
+}
+
+void append_digits(std::string& line, std::size_t value) {
+    char buffer[24];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    line.append(buffer, result.ptr);
+}
+
+void append_index(std::string& line, std::size_t value) {
+    line.push_back(' ');
+    append_digits(line, value);
+}
+
+void append_vector(std::string& line, const char* tag, const glm::vec3& v) {
+    line.assign(tag);
+    append_number(line, v.x);
+    append_number(line, v.y);
+    append_number(line, v.z);
+    line.push_back('\n');
+}
+
+bool has_triangles(const NamedMesh& part) {
+    return part.mesh && !part.mesh->triangles.empty();
+}
+
+}  // namespace
+
+void write_obj(std::ostream& out, const std::vector<NamedMesh>& parts) {
+    out << "# Sylva low-poly tree: Y up, meters\n";
+    std::size_t base = 1;  // OBJ indices are 1-based and global across groups
+    std::string line;
+    for (const NamedMesh& part : parts) {
+        const Mesh& mesh = *part.mesh;
+        out << "o " << part.name << "\ng " << part.name << "\n";
+        for (const glm::vec3& p : mesh.positions) {
+            append_vector(line, "v", p);
+            out << line;
+        }
+        for (const auto& t : mesh.triangles) {
+            line.assign("f");
+            for (std::uint32_t i : t) append_index(line, base + i);
+            line.push_back('\n');
+            out << line;
+        }
+        base += mesh.positions.size();
+    }
+}
+
+void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& parts) {
+    write_file_atomically(path, [&](std::ostream& out) { write_obj(out, parts); });
+}
+
+void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
+                        const ExportOptions& options, std::string_view mtl_file_name) {
+    out << "# Sylva low-poly tree: Y up, meters, "
+        << (options.shading == Shading::Flat ? "flat" : "smooth") << " normals\n";
+    out << "mtllib " << mtl_file_name << "\n";
+    std::size_t vertex_base = 1, normal_base = 1;  // 1-based, global across groups
+    std::string line;
+    for (const NamedMesh& part : parts) {
+        if (!has_triangles(part)) continue;
+        const Mesh& mesh = *part.mesh;
+        const bool flat = options.shading == Shading::Flat;
+        out << "o " << part.name << "\ng " << part.name << "\nusemtl " << part.name << "\n"
+            << (flat ? "s off\n" : "s 1\n");
+        for (const glm::vec3& p : mesh.positions) {
+            append_vector(line, "v", p);
+            out << line;
+        }
+        const std::vector<glm::vec3> normals = flat ? face_normals(mesh) : vertex_normals(mesh);
+        for (const glm::vec3& n : normals) {
+            append_vector(line, "vn", n);
+            out << line;
+        }
+        for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+            line.assign("f");
+            for (std::uint32_t i : mesh.triangles[f]) {
+                append_index(line, vertex_base + i);  // " v//vn"
+                line.append("//");
+                append_digits(line, normal_base + (flat ? f : i));
+            }
+            line.push_back('\n');
+            out << line;
+        }
+        vertex_base += mesh.positions.size();
+        normal_base += normals.size();
+    }
+}
+
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts) {
+    out << "# Sylva materials: Kd is the part's base colour, linear RGB\n";
+    std::string line;
+    for (const NamedMesh& part : parts) {
+        if (!has_triangles(part)) continue;
+        out << "\nnewmtl " << part.name << "\n";
+        out << "Ka 0 0 0\n";
+        append_vector(line, "Kd", part.color);
+        out << line;
+        out << "Ks 0 0 0\nNs 10\nd 1\nillum 1\n";
+    }
+}
+
+std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::path& path,
+                                                      const std::vector<NamedMesh>& parts,
+                                                      const ExportOptions& options) {
+    namespace fs = std::filesystem;
+    fs::path mtl = path;
+    mtl.replace_extension(".mtl");
+    std::error_code ec;
+    const bool mtl_existed = fs::exists(mtl, ec);
+    write_file_atomically(mtl, [&](std::ostream& out) { write_mtl(out, parts); });
+    try {
+        write_file_atomically(path, [&](std::ostream& out) {
+            write_obj_with_mtl(out, parts, options, mtl.filename().string());
+        });
+    } catch (...) {
+        if (!mtl_existed) fs::remove(mtl, ec);
+        throw;
+    }
+    return {path, mtl};
+}
+
+namespace {
+
+std::vector<std::filesystem::path> write_obj_files(const std::filesystem::path& path,
+                                                   const std::vector<ModelParts>& levels,
+                                                   const ExportOptions& options) {
+    if (levels.size() == 1) return write_obj_with_mtl(path, levels[0], options);
+    // One material library for all levels: the materials are the same.
+    std::filesystem::path mtl = path;
+    mtl.replace_extension(".mtl");
+    ModelParts all_parts;
+    for (const auto& level : levels)
+        for (const NamedMesh& part : level)
+            if (part.mesh && !part.mesh->triangles.empty() &&
+                std::none_of(all_parts.begin(), all_parts.end(),
+                             [&](const NamedMesh& p) { return p.name == part.name; }))
+                all_parts.push_back(part);
+    write_file_atomically(mtl, [&](std::ostream& out) { write_mtl(out, all_parts); });
+    std::vector<std::filesystem::path> written{mtl};
+    const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        write_file_atomically(names[i], [&](std::ostream& out) {
+            write_obj_with_mtl(out, levels[i], options, mtl.filename().string());
+        });
+        written.push_back(names[i]);
+    }
+    return written;
+}
+
+}  // namespace
+
+const ExportFormat obj_format = {"obj", ".obj", write_obj_files};
+
+}  // namespace sylva

@@ -1,0 +1,48 @@
+// Wavefront OBJ export: one group per part, Y up, meters. Written atomically.
+//
+// Two flavours: write_obj() writes bare geometry (positions and triangles), and
+// write_obj_with_mtl() adds normals (flat or smooth) and a material library beside the
+// file (`tree.obj` -> `tree.mtl`) with one material per part, named like the part, whose
+// Kd is the part's colour.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "export/export_options.h"
+#include "export/named_mesh.h"
+#include "core/mesh.h"
+
+namespace sylva {
+
+void write_obj(std::ostream& out, const std::vector<NamedMesh>& parts);
+
+// Throws IoError naming the path when it cannot be written; never leaves a partial file.
+void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& parts);
+
+// The OBJ text that goes with an MTL file called `mtl_file_name` (written beside it):
+// per part `o`, `g` and `usemtl` with the part's name, `v`, `vn` and `f v//vn` lines.
+// Empty parts are left out.
+void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
+                        const ExportOptions& options, std::string_view mtl_file_name);
+
+// One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
+// baseColorFactor), no specular.
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts);
+
+// Writes `path` and its material library (`path` with the extension .mtl), each
+// atomically. Returns both paths. Throws IoError naming the path that failed; when the
+// OBJ fails after the MTL was written, a new MTL is removed again (an older one was
+// already replaced: the pair is two files, not one transaction).
+std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::path& path,
+                                                      const std::vector<NamedMesh>& parts,
+                                                      const ExportOptions& options = {});
+
+// The registry entry (export/export.h): one level writes `path` and its .mtl; a LOD chain
+// writes `<stem>_LOD<i>.obj` per level and one `<stem>.mtl` that all levels share.
+extern const ExportFormat obj_format;
+
+}  // namespace sylva

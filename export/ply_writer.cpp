@@ -1,0 +1,131 @@
+#include "export/ply_writer.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "core/atomic_file.h"
+#include "export/mesh_normals.h"
+
+namespace sylva {
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "the binary PLY writer copies little-endian values as they are in memory");
+
+std::uint8_t srgb8(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+// Shortest text that reads back to the same float (no locale, no lost digits).
+void put_text(std::string& line, float value) {
+    char buffer[32];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    line.push_back(' ');
+    line.append(buffer, result.ptr);
+}
+
+template <class T>
+void put(std::string& bytes, T value) {
+    char raw[sizeof(T)];
+    std::memcpy(raw, &value, sizeof(T));
+    bytes.append(raw, sizeof(T));
+}
+
+}  // namespace
+
+void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
+               const ExportOptions& options) {
+    std::size_t vertices = 0, faces = 0;
+    std::string names;
+    for (const NamedMesh& part : parts) {
+        if (!part.mesh || part.mesh->triangles.empty()) continue;
+        vertices += part.mesh->positions.size();
+        faces += part.mesh->triangles.size();
+        names += " " + part.name;
+    }
+    const bool smooth = options.shading == Shading::Smooth;
+    out << "ply\nformat " << (options.ply_binary ? "binary_little_endian" : "ascii") << " 1.0\n"
+        << "comment Sylva low-poly tree: Y up, meters; parts in order:" << names << "\n"
+        << "element vertex " << vertices << "\n"
+        << "property float x\nproperty float y\nproperty float z\n"
+        << (smooth ? "property float nx\nproperty float ny\nproperty float nz\n" : "")
+        << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+        << "element face " << faces << "\n"
+        << "property list uchar uint vertex_indices\nend_header\n";
+
+    std::string bytes;
+    std::uint32_t base = 0;
+    // Vertices of every part, then faces of every part (PLY lists elements in blocks).
+    for (const NamedMesh& part : parts) {
+        if (!part.mesh || part.mesh->triangles.empty()) continue;
+        const Mesh& mesh = *part.mesh;
+        const std::array<std::uint8_t, 3> rgb{srgb8(part.color.r), srgb8(part.color.g),
+                                              srgb8(part.color.b)};
+        const std::vector<glm::vec3> normals =
+            smooth ? vertex_normals(mesh) : std::vector<glm::vec3>{};
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::vec3& p = mesh.positions[i];
+            bytes.clear();
+            if (options.ply_binary) {
+                for (float v : {p.x, p.y, p.z}) put(bytes, v);
+                if (smooth)
+                    for (float v : {normals[i].x, normals[i].y, normals[i].z}) put(bytes, v);
+                for (std::uint8_t c : rgb) put(bytes, c);
+            } else {
+                for (float v : {p.x, p.y, p.z}) put_text(bytes, v);
+                if (smooth)
+                    for (float v : {normals[i].x, normals[i].y, normals[i].z}) put_text(bytes, v);
+                for (std::uint8_t c : rgb) bytes += " " + std::to_string(c);
+                bytes.erase(0, 1);  // no leading space
+                bytes.push_back('\n');
+            }
+            out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        }
+    }
+    for (const NamedMesh& part : parts) {
+        if (!part.mesh || part.mesh->triangles.empty()) continue;
+        for (const auto& t : part.mesh->triangles) {
+            if (options.ply_binary) {
+                bytes.clear();
+                put(bytes, std::uint8_t{3});
+                for (std::uint32_t i : t) put(bytes, base + i);
+                out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+            } else {
+                out << "3 " << base + t[0] << ' ' << base + t[1] << ' ' << base + t[2] << '\n';
+            }
+        }
+        base += static_cast<std::uint32_t>(part.mesh->positions.size());
+    }
+}
+
+void write_ply(const std::filesystem::path& path, const std::vector<NamedMesh>& parts,
+               const ExportOptions& options) {
+    write_file_atomically(path, [&](std::ostream& out) { write_ply(out, parts, options); });
+}
+
+namespace {
+
+std::vector<std::filesystem::path> write_ply_files(const std::filesystem::path& path,
+                                                   const std::vector<ModelParts>& levels,
+                                                   const ExportOptions& options) {
+    if (levels.size() == 1) {
+        write_ply(path, levels[0], options);
+        return {path};
+    }
+    const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) write_ply(names[i], levels[i], options);
+    return names;
+}
+
+}  // namespace
+
+const ExportFormat ply_format = {"ply", ".ply", write_ply_files};
+
+}  // namespace sylva

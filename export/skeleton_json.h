@@ -1,0 +1,19 @@
+// skeleton.json (SPEC section 8): the skeleton with the parameters in effect, for other tools
+// and for checking. Positions and radii are exactly those the SDF stage uses.
+#pragma once
+
+#include "core/tree_params.h"
+#include "core/skeleton.h"
+
+#include <filesystem>
+#include <string>
+
+namespace sylva {
+
+std::string skeleton_json(const Skeleton& skeleton, const TreeParams& params);
+
+// Throws IoError naming the path; never leaves a partial file.
+void write_skeleton_json(const std::filesystem::path& path, const Skeleton& skeleton,
+                         const TreeParams& params);
+
+}  // namespace sylva

@@ -1,0 +1,148 @@
+// The low-poly stage on real trees: the default tree reduced to game budgets stays closed
+// and manifold part by part, hits the budget where its topology allows, says why where it
+// does not, and strays further from the fine surface the harder it is reduced.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "export/export_tree.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/template_library.h"
+#include "marching/mesh_checks.h"
+
+namespace sylva {
+namespace {
+
+// Coarse meshing keeps the test fast; the shapes are the default tree's.
+TreeTemplate coarse_default() {
+    TreeTemplate t = default_template();
+    t.params.trunk_resolution = 48;
+    t.params.crown_resolution = 32;
+    return t;
+}
+
+TreeBudget total(std::size_t triangles) {
+    TreeBudget b;
+    b.total = triangles;
+    return b;
+}
+
+const Tree& coarse_tree() {
+    static const Tree tree = generate_tree(coarse_default());
+    return tree;
+}
+
+void expect_closed(const Mesh& mesh, const char* part) {
+    if (mesh.triangles.empty()) return;
+    const MeshTopology t = check_topology(mesh);
+    EXPECT_TRUE(t.is_closed_manifold())
+        << part << ": boundary " << t.boundary_edges << ", non-manifold edges "
+        << t.non_manifold_edges << ", misoriented " << t.misoriented_edges << ", degenerate "
+        << t.degenerate_triangles << ", non-manifold vertices " << t.non_manifold_vertices;
+    EXPECT_GT(enclosed_volume(mesh), 0.0) << part;
+}
+
+TEST(TreeReduction, ClosedAtEveryBudgetAndOnBudgetAboveTheFloor) {
+    const Tree& tree = coarse_tree();
+    ASSERT_FALSE(tree.crown.triangles.empty());
+    // The fewest triangles this tree's topology allows (its trunk has handles where
+    // branches cross): what an impossible budget gives.
+    const ReducedTree floor = reduce_tree(tree, total(4));
+    EXPECT_FALSE(floor.within_budget);
+    EXPECT_FALSE(floor.note.empty());
+    expect_closed(floor.trunk, "trunk");
+    expect_closed(floor.crown, "crown");
+
+    for (std::size_t budget : {50u, 100u, 200u, 400u, 800u}) {
+        SCOPED_TRACE(budget);
+        const ReducedTree r = reduce_tree(tree, total(budget));
+        expect_closed(r.trunk, "trunk");
+        expect_closed(r.crown, "crown");
+        EXPECT_EQ(r.triangles, r.trunk.triangles.size() + r.crown.triangles.size());
+        EXPECT_FALSE(r.crown.triangles.empty()) << "no part vanishes";
+        EXPECT_EQ(r.backoffs, 0) << r.note;
+        if (budget >= floor.triangles + 2) {
+            EXPECT_TRUE(r.within_budget) << r.note;
+            EXPECT_LE(r.triangles, budget);
+            EXPECT_GE(r.triangles, budget - 2);  // a collapse removes two triangles
+        } else {
+            EXPECT_FALSE(r.within_budget);
+            EXPECT_FALSE(r.note.empty());
+            EXPECT_LE(r.triangles, floor.triangles + 8);
+        }
+    }
+}
+
+TEST(TreeReduction, BudgetPerPart) {
+    const Tree& tree = coarse_tree();
+    TreeBudget budget;
+    budget.total = 900;
+    budget.crown = 200;  // the trunk gets the remaining 700
+    const ReducedTree r = reduce_tree(tree, budget);
+    EXPECT_LE(r.crown.triangles.size(), 200u);
+    EXPECT_GE(r.crown.triangles.size(), 198u);
+    EXPECT_LE(r.trunk.triangles.size(), 700u);
+    EXPECT_GE(r.trunk.triangles.size(), 698u);
+    expect_closed(r.trunk, "trunk");
+    expect_closed(r.crown, "crown");
+}
+
+TEST(TreeReduction, FidelityGrowsWithReduction) {
+    const Tree& tree = coarse_tree();
+    // The reference here is the tree's own coarse surface (the benchmark uses the
+    // resolution-200 one): then every error comes from the reduction alone.
+    const Mesh* parts[] = {&tree.trunk, &tree.crown};
+    Mesh reference;
+    for (const Mesh* m : parts) {
+        const auto base = static_cast<std::uint32_t>(reference.positions.size());
+        reference.positions.insert(reference.positions.end(), m->positions.begin(),
+                                   m->positions.end());
+        for (const auto& t : m->triangles)
+            reference.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    float lo = 1e30f, hi = -1e30f;
+    for (const glm::vec3& p : reference.positions) {
+        lo = std::min(lo, p.y);
+        hi = std::max(hi, p.y);
+    }
+    const Fidelity identical = measure_tree_fidelity(tree.trunk, tree.crown, reference);
+    EXPECT_LT(identical.mean_percent, 1e-4);
+    double previous = identical.mean_percent, at_game_budget = 0.0;
+    for (std::size_t budget : {3000u, 800u, 300u}) {
+        const ReducedTree r = reduce_tree(tree, total(budget));
+        const Fidelity f = measure_tree_fidelity(r.trunk, r.crown, reference);
+        EXPECT_GT(f.mean_percent, previous) << budget;
+        EXPECT_GE(f.max_percent, f.mean_percent);
+        EXPECT_NEAR(f.height, hi - lo, 1e-5);
+        previous = f.mean_percent;
+        if (budget == 800) at_game_budget = f.mean_percent;
+    }
+    // A game budget stays close to the surface it came from.
+    EXPECT_LT(at_game_budget, 1.0);
+}
+
+TEST(TreeReduction, ReferenceSurfaceIsFinerAndClosed) {
+    TreeTemplate tmpl = coarse_default();
+    const Mesh fine = reference_surface(tmpl, 64);
+    EXPECT_GT(fine.triangles.size(), coarse_tree().trunk.triangles.size());
+    expect_closed(fine, "reference");
+}
+
+TEST(TreeReduction, PartsForExport) {
+    const Tree& tree = coarse_tree();
+    const PartColors colors;
+    const auto parts = tree_parts(tree.trunk, tree.crown, tree.leaves, colors);
+    ASSERT_EQ(parts.size(), tree.leaves.triangles.empty() ? 2u : 3u);
+    EXPECT_EQ(parts[0].name, "trunk");
+    EXPECT_EQ(parts[0].color, colors.trunk);
+    EXPECT_TRUE(parts[0].closed);
+    EXPECT_EQ(parts[1].name, "crown");
+    if (parts.size() == 3) {
+        EXPECT_EQ(parts[2].name, "leaves");
+        EXPECT_FALSE(parts[2].closed);
+    }
+    EXPECT_EQ(tree_parts(tree.trunk, Mesh{}, Mesh{}, colors).size(), 1u);
+}
+
+}  // namespace
+}  // namespace sylva

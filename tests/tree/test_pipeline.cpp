@@ -1,0 +1,179 @@
+// The pipeline end to end: the default tree becomes a closed mesh, its OBJ reads back as
+// the same closed mesh, parameters are validated, and failed writes leave nothing behind.
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "export/obj_writer.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
+#include "marching/mesh_checks.h"
+#include "core/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/vector_relational.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace sylva {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A deliberately independent, minimal OBJ reader: "v x y z" and "f a b c" lines.
+Mesh read_obj(const fs::path& path) {
+    Mesh mesh;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        std::string tag;
+        s >> tag;
+        if (tag == "v") {
+            glm::vec3 p;
+            s >> p.x >> p.y >> p.z;
+            mesh.positions.push_back(p);
+        } else if (tag == "f") {
+            std::array<std::uint32_t, 3> t;
+            s >> t[0] >> t[1] >> t[2];
+            for (auto& i : t) --i;
+            mesh.triangles.push_back(t);
+        }
+    }
+    return mesh;
+}
+
+fs::path temp_dir() {
+    fs::path dir = fs::temp_directory_path() / ("sylva_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(Pipeline, DefaultTreeIsAClosedMeshThatSurvivesTheObjRoundTrip) {
+    Tree tree = generate_tree(default_template());
+    EXPECT_GT(tree.skeleton.segments.size(), 100u);
+    EXPECT_GT(tree.trunk.triangles.size(), 1000u);
+    MeshTopology topology = check_topology(tree.trunk);
+    EXPECT_TRUE(topology.is_closed_manifold())
+        << "boundary " << topology.boundary_edges << ", non-manifold "
+        << topology.non_manifold_edges << ", misoriented " << topology.misoriented_edges
+        << ", degenerate " << topology.degenerate_triangles;
+    EXPECT_GT(enclosed_volume(tree.trunk), 0.0);
+
+    fs::path path = temp_dir() / "default.obj";
+    write_obj(path, {{"trunk", &tree.trunk}});
+    Mesh back = read_obj(path);
+    EXPECT_EQ(back.triangles.size(), tree.trunk.triangles.size());
+    EXPECT_EQ(back.positions.size(), tree.trunk.positions.size());
+    EXPECT_TRUE(check_topology(back).is_closed_manifold());
+    fs::remove_all(path.parent_path());
+}
+
+TEST(Pipeline, TheMeshHugsTheSkeleton) {
+    // The mesh stays within a cell or two of the skeleton's box and starts at the trunk's base:
+    // no stray geometry, nothing clipped at the bottom.
+    Tree tree = generate_tree(default_template());
+    Box box = skeleton_bounds(tree.skeleton);
+    glm::vec3 extent = box.max - box.min;
+    float cell = std::max({extent.x, extent.y, extent.z}) /
+                 static_cast<float>(default_template().params.trunk_resolution);
+    float lowest = std::numeric_limits<float>::max();
+    for (const glm::vec3& p : tree.trunk.positions) {
+        lowest = std::min(lowest, p.y);
+        EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, box.min - glm::vec3(2 * cell))));
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(p, box.max + glm::vec3(2 * cell))));
+    }
+    EXPECT_NEAR(lowest, tree.skeleton.segments.front().a.y, cell);  // the trunk's base
+}
+
+TEST(Pipeline, SameInputsGiveTheSameBytes) {
+    Tree a = generate_tree(default_template()), b = generate_tree(default_template());
+    std::ostringstream oa, ob;
+    write_obj(oa, {{"trunk", &a.trunk}});
+    write_obj(ob, {{"trunk", &b.trunk}});
+    EXPECT_EQ(oa.str(), ob.str());
+}
+
+TEST(Pipeline, ParametersChangeTheTree) {
+    TreeTemplate t = default_template();
+    t.params.generations = 3;
+    t.params.trunk_resolution = 32;
+    Tree small = generate_tree(t);
+    t.params.generations = 4;
+    Tree bigger = generate_tree(t);
+    EXPECT_GT(bigger.skeleton.segments.size(), small.skeleton.segments.size());
+}
+
+TEST(Pipeline, AGrammarThatDrawsNothingIsAnInputError) {
+    TreeTemplate t = default_template();
+    t.grammar = "axiom: A\nA -> B\n";
+    EXPECT_THROW(generate_tree(t), InputError);
+    t.grammar = "axiom: F\nF -> F[+F\n";
+    EXPECT_THROW(generate_tree(t), GrammarError);
+}
+
+TEST(Params, BadValuesAreRejectedNamingKeyAndRange) {
+    TreeParams p;
+    for (const char* bad : {"nan", "inf", "-1", "abc", "", "1e9"}) {
+        try {
+            set_param(p, "trunk_taper", bad);
+            ADD_FAILURE() << bad;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("trunk_taper"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("0 to 1"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(set_param(p, "generations", "2.5"), InputError);
+    EXPECT_THROW(set_param(p, "no_such_key", "1"), InputError);
+    set_param(p, "trunk_taper", "0.5");
+    EXPECT_EQ(p.trunk_taper, 0.5);
+    EXPECT_EQ(*get_param(p, "trunk_taper"), 0.5);
+}
+
+TEST(Export, UnwritablePathIsAnIoErrorAndLeavesNoFile) {
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    fs::path missing_dir = temp_dir() / "no" / "such" / "dir" / "tree.obj";
+    EXPECT_THROW(write_obj(missing_dir, {{"trunk", &mesh}}), IoError);
+    EXPECT_FALSE(fs::exists(missing_dir.parent_path()));
+    fs::remove_all(temp_dir());
+}
+
+TEST(Export, AFailedWriteKeepsThePreviousFile) {
+    fs::path dir = temp_dir();
+    fs::path path = dir / "tree.obj";
+    { std::ofstream(path) << "previous\n"; }
+    auto fails_midway = [](std::ostream& out) {
+        out << "half a file";
+        throw IoError("disk full (simulated)");
+    };
+    EXPECT_THROW(write_file_atomically(path, fails_midway), IoError);
+    std::ifstream in(path);
+    std::string first;
+    std::getline(in, first);
+    EXPECT_EQ(first, "previous");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
+        << "no temporary file is left behind";
+    fs::remove_all(dir);
+}
+
+TEST(Templates, NamesFilesAndUnknowns) {
+    EXPECT_EQ(load_template("default").name, default_template().name);
+    EXPECT_EQ(load_template("spruce").name, "spruce");
+    EXPECT_THROW(load_template("no-such-tree"), InputError);
+    fs::path dir = temp_dir();
+    fs::path grammar = dir / "bush.lsys";
+    { std::ofstream(grammar) << "axiom: F\nF -> F[+F]F\n"; }
+    TreeTemplate t = load_template(grammar.string());
+    EXPECT_EQ(t.grammar, "axiom: F\nF -> F[+F]F\n");
+    EXPECT_THROW(load_template(dir.string()), IoError);
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sylva

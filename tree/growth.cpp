@@ -1,0 +1,35 @@
+#include "tree/growth.h"
+
+#include "core/errors.h"
+#include "turtle/lsystem_growth.h"
+
+namespace sylva {
+namespace {
+
+// The registry: one line per growth method.
+const GrowthMethod* const kMethods[] = {
+    &lsystem_growth,
+};
+
+}  // namespace
+
+std::span<const GrowthMethod* const> growth_methods() { return kMethods; }
+
+const GrowthMethod* find_growth_method(std::string_view name) {
+    for (const GrowthMethod* method : kMethods)
+        if (method->name == name) return method;
+    return nullptr;
+}
+
+Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
+    const GrowthMethod* method = find_growth_method(tree.growth);
+    if (!method) {
+        std::string known;
+        for (const GrowthMethod* m : kMethods) known += (known.empty() ? "" : ", ") + std::string(m->name);
+        throw InputError("unknown growth method '" + tree.growth + "' (known: " + known + ")",
+                         {tree.source});
+    }
+    return method->grow(tree, context);
+}
+
+}  // namespace sylva

@@ -1,0 +1,23 @@
+// The growth methods a template can name (`growth = "..."`), and the one entry the pipeline
+// calls. Adding a method: its own folder with a GrowthMethod (core/growth.h), one line in
+// the table in growth.cpp, and its library linked to sylva_tree.
+#pragma once
+
+#include "core/growth.h"
+
+#include <span>
+#include <string_view>
+
+namespace sylva {
+
+// Every registered method, the default ("lsystem") first.
+std::span<const GrowthMethod* const> growth_methods();
+
+// nullptr for an unknown name.
+const GrowthMethod* find_growth_method(std::string_view name);
+
+// The template's skeleton, grown by the method it names. Throws InputError for an unknown
+// method (naming the known ones) and whatever the method throws.
+Skeleton grow(const TreeTemplate& tree, const GrowthContext& context = {});
+
+}  // namespace sylva

@@ -1,0 +1,111 @@
+#include "tree/leaves.h"
+
+#include "core/random.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace sylva {
+
+const std::vector<glm::vec2>& leaf_outline(LeafShape shape) {
+    static const std::vector<glm::vec2> round = {{0, 0}, {0.5f, -0.35f}, {1, 0}, {0.5f, 0.35f}};
+    static const std::vector<glm::vec2> needle = {{0, 0}, {0.5f, -0.05f}, {1, 0}, {0.5f, 0.05f}};
+    // Three rounded lobes a side.
+    static const std::vector<glm::vec2> oak = {
+        {0, 0},          {0.15f, -0.12f}, {0.25f, -0.08f}, {0.38f, -0.22f}, {0.5f, -0.12f},
+        {0.62f, -0.24f}, {0.75f, -0.1f},  {0.88f, -0.14f}, {1, 0},          {0.88f, 0.14f},
+        {0.75f, 0.1f},   {0.62f, 0.24f},  {0.5f, 0.12f},   {0.38f, 0.22f},  {0.25f, 0.08f},
+        {0.15f, 0.12f}};
+    // A long blade cut into leaflets.
+    static const std::vector<glm::vec2> frond = {
+        {0, 0},          {0.2f, -0.16f}, {0.3f, -0.04f}, {0.45f, -0.18f}, {0.55f, -0.04f},
+        {0.7f, -0.15f},  {0.78f, -0.03f}, {1, 0},        {0.78f, 0.03f},  {0.7f, 0.15f},
+        {0.55f, 0.04f},  {0.45f, 0.18f}, {0.3f, 0.04f},  {0.2f, 0.16f}};
+    switch (shape) {
+        case LeafShape::Oak: return oak;
+        case LeafShape::Needle: return needle;
+        case LeafShape::Frond: return frond;
+        case LeafShape::Round: break;
+    }
+    return round;
+}
+
+namespace {
+
+// Appends one leaf: the outline fanned from its centre, once facing up, once facing down.
+void add_leaf(Mesh& mesh, const std::vector<glm::vec2>& outline, const glm::vec3& base,
+              const glm::vec3& along, const glm::vec3& across, float length) {
+    const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+    const bool simple = outline.size() == 4;  // the seed's quad: two triangles, no centre
+    if (!simple) mesh.positions.push_back(base + along * (0.5f * length));
+    const std::uint32_t ring = simple ? first : first + 1;
+    for (const glm::vec2& p : outline) mesh.positions.push_back(base + (along * p.x + across * p.y) * length);
+    const auto n = static_cast<std::uint32_t>(outline.size());
+    auto face = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        mesh.triangles.push_back({a, b, c});  // up
+        mesh.triangles.push_back({a, c, b});  // down
+    };
+    if (simple) {
+        face(ring, ring + 1, ring + 2);
+        face(ring, ring + 2, ring + 3);
+        return;
+    }
+    for (std::uint32_t i = 0; i < n; ++i) face(first, ring + i, ring + (i + 1) % n);
+}
+
+}  // namespace
+
+void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>& polygons) {
+    for (const auto& polygon : polygons) {
+        if (polygon.size() < 3) continue;
+        const auto first = static_cast<std::uint32_t>(leaves.positions.size());
+        leaves.positions.insert(leaves.positions.end(), polygon.begin(), polygon.end());
+        for (std::uint32_t i = 1; i + 1 < polygon.size(); ++i) {
+            leaves.triangles.push_back({first, first + i, first + i + 1});
+            leaves.triangles.push_back({first, first + i + 1, first + i});
+        }
+    }
+}
+
+Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const Box& box,
+                    const LeafSettings& settings) {
+    Mesh mesh;
+    if (!(settings.density > 0.0) || !(settings.size > 0.0)) return mesh;
+    glm::vec3 extent = box.max - box.min;
+    double volume = double(extent.x) * extent.y * extent.z;
+    if (!(volume > 0.0)) return mesh;
+    // One candidate point per grid cell; the box's volume bounds the crown's, so a grid of
+    // at most max_leaves cells keeps the count below the cap.
+    double cell_volume = std::max(1.0 / settings.density, volume / double(settings.max_leaves));
+    float spacing = static_cast<float>(std::cbrt(cell_volume));
+    glm::ivec3 cells = glm::max(glm::ivec3(glm::ceil(extent / spacing)), glm::ivec3(1));
+
+    Random random(settings.seed ^ 0x1eaf5eedULL);
+    const std::vector<glm::vec2>& outline = leaf_outline(settings.shape);
+    for (int k = 0; k < cells.z; ++k)
+        for (int j = 0; j < cells.y; ++j)
+            for (int i = 0; i < cells.x; ++i) {
+                // Draw every number whether or not the leaf lands, so one leaf's fate never
+                // shifts the next one's randomness.
+                glm::vec3 jitter(random.uniform(), random.uniform(), random.uniform());
+                double yaw = random.uniform() * 2.0 * std::numbers::pi;
+                double tilt = (random.uniform() - 0.5) * std::numbers::pi * 0.6;  // +-54 degrees
+                double roll = (random.uniform() - 0.5) * std::numbers::pi * 0.5;
+                float scale = static_cast<float>(0.8 + 0.4 * random.uniform());
+                glm::vec3 p = box.min + (glm::vec3(i, j, k) + jitter) * spacing;
+                if (!(inside(p) < 0.0f)) continue;
+                glm::vec3 along(std::cos(yaw) * std::cos(tilt), std::sin(tilt),
+                                std::sin(yaw) * std::cos(tilt));
+                glm::vec3 side = glm::normalize(glm::cross(glm::vec3(0, 1, 0), along));
+                glm::vec3 normal = glm::cross(along, side);
+                glm::vec3 across = side * float(std::cos(roll)) + normal * float(std::sin(roll));
+                add_leaf(mesh, outline, p, along, across,
+                         static_cast<float>(settings.size) * scale);
+            }
+    return mesh;
+}
+
+}  // namespace sylva

@@ -1,0 +1,40 @@
+// Leaves (seed 001, 5.5): walk a grid over the crown's box and, at every (jittered) grid
+// point inside the crown field, place a small flat leaf with a random orientation and size.
+// Each leaf is its outline fanned into triangles facing up plus the same triangles facing
+// down ("two triangles up, two down" for the simplest shape), so it shows from both sides.
+// Leaves are open surfaces by design.
+#pragma once
+
+#include "core/tree_params.h"
+#include "core/box.h"
+#include "core/mesh.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace sylva {
+
+struct LeafSettings {
+    double density = 60.0;  // leaves per cubic meter of crown
+    double size = 0.25;     // leaf length, meters (each leaf varies by +-20%)
+    LeafShape shape = LeafShape::Round;
+    std::uint64_t seed = 1;
+    std::size_t max_leaves = 200'000;  // the grid is coarsened to stay below this
+};
+
+// The outline of a leaf shape in its own plane: x along the leaf from its base (0) to its
+// tip (1), y across. Star-shaped around (0.5, 0), so a fan from there covers it.
+const std::vector<glm::vec2>& leaf_outline(LeafShape shape);
+
+// The turtle's polygons ({ . }), fanned into triangles facing both ways (at least three
+// vertices each), appended to `leaves`.
+void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>& polygons);
+
+// `inside` is negative inside the crown. Same inputs, same leaves.
+Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const Box& box,
+                    const LeafSettings& settings);
+
+}  // namespace sylva

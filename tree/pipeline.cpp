@@ -1,0 +1,183 @@
+#include "tree/pipeline.h"
+
+#include "core/errors.h"
+#include "tree/leaves.h"
+#include "marching/marching_cubes.h"
+#include "marching/vdb_mesher.h"
+#include "sdf/cone_field.h"
+#include "core/stopwatch.h"
+#include "tree/growth.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+namespace sylva {
+namespace {
+
+// One capped cone per segment with a width. Branches thinner than the grid can sample
+// would break into disconnected crumbs, so radii are raised to kMinRadiusInCells cells:
+// a ball that wide always holds a grid node (the cubic lattice's covering radius is
+// sqrt(3)/2 = 0.87 cells), which keeps every branch in one piece. Finer twigs need a
+// higher trunk_resolution.
+constexpr float kMinRadiusInCells = 0.9f;
+
+std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
+    const float min_radius = kMinRadiusInCells * cell;
+    std::vector<CappedCone> cones;
+    cones.reserve(skeleton.segments.size());
+    for (const Segment& s : skeleton.segments)
+        if (std::max(s.ra, s.rb) > 0.0f)
+            cones.push_back({s.a, s.b, std::max(s.ra, min_radius), std::max(s.rb, min_radius)});
+    return cones;
+}
+
+// The culled fields are exact within this many cells of the surface (all marching cubes
+// interpolates) and a lower bound of the distance beyond it, which is all the sparse mesher
+// needs to skip empty blocks: |f(centre)| above a block's half-diagonal proves it empty.
+constexpr float kFieldMarginInCells = 3.0f;
+
+float cell_size(const Box& box, int resolution) {
+    glm::vec3 extent = box.max - box.min;
+    return std::max({extent.x, extent.y, extent.z}) / static_cast<float>(resolution);
+}
+
+// Meshes a point-wise field with the chosen mesher; this part reports its progress as the
+// slice [progress_begin, progress_end] of the whole meshing stage.
+template <class Field>
+Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOptions& options,
+                float progress_begin, float progress_end) {
+    BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
+        for (size_t i = 0; i < points.size(); ++i) values[i] = field(points[i]);
+    };
+    MarchingCubesSettings settings;
+    settings.resolution = resolution;
+    settings.threads = options.threads;
+    settings.cancel = options.cancel;
+    if (options.progress)
+        settings.progress = [&options, progress_begin, progress_end](float f) {
+            options.progress(progress_begin + (progress_end - progress_begin) * f);
+        };
+    switch (options.mesher) {
+        case Mesher::Dense: return marching_cubes(batch, box, settings);
+        case Mesher::Sparse: return sparse_marching_cubes(batch, box, settings);
+        case Mesher::Vdb: return vdb_mesh(batch, box, settings, {options.vdb_adaptivity});
+    }
+    return {};
+}
+
+Box crown_bounds(const std::vector<Ball>& balls) {
+    Box box{glm::vec3(std::numeric_limits<float>::max()),
+            glm::vec3(std::numeric_limits<float>::lowest())};
+    for (const Ball& b : balls) {
+        box.min = glm::min(box.min, b.center - glm::vec3(b.radius));
+        box.max = glm::max(box.max, b.center + glm::vec3(b.radius));
+    }
+    return box;
+}
+
+}  // namespace
+
+std::optional<Mesher> mesher_from_name(std::string_view name) {
+    if (name == "dense") return Mesher::Dense;
+    if (name == "sparse") return Mesher::Sparse;
+    if (name == "vdb") return Mesher::Vdb;
+    return std::nullopt;
+}
+
+std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {
+    std::vector<Ball> out;
+    for (int tip : tips(skeleton)) {
+        const Segment& s = skeleton.segments[static_cast<size_t>(tip)];
+        out.push_back({s.b + glm::vec3(0.0f, static_cast<float>(params.crown_offset), 0.0f),
+                       static_cast<float>(params.sphere_diameter * 0.5)});
+    }
+    return out;
+}
+
+Box skeleton_bounds(const Skeleton& skeleton) {
+    Box box{glm::vec3(std::numeric_limits<float>::max()),
+            glm::vec3(std::numeric_limits<float>::lowest())};
+    for (const Segment& s : skeleton.segments) {
+        float r = std::max(s.ra, s.rb);
+        box.min = glm::min(box.min, glm::min(s.a, s.b) - glm::vec3(r));
+        box.max = glm::max(box.max, glm::max(s.a, s.b) + glm::vec3(r));
+    }
+    return box;
+}
+
+TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p) {
+    TreeFields fields;
+    // The joint blend swells the union by up to joint_blend / 4 where cones meet.
+    float joint_blend = static_cast<float>(p.joint_blend);
+    fields.trunk_box = skeleton_bounds(skeleton);
+    fields.trunk_box.min -= glm::vec3(joint_blend);
+    fields.trunk_box.max += glm::vec3(joint_blend);
+    float trunk_cell = cell_size(fields.trunk_box, p.trunk_resolution);
+    std::vector<CappedCone> cones = resolvable_cones(skeleton, trunk_cell);
+    if (!cones.empty())
+        fields.trunk.emplace(std::move(cones), kFieldMarginInCells * trunk_cell + joint_blend,
+                             joint_blend);
+
+    std::vector<Ball> balls = crown_spheres(skeleton, p);
+    if (!balls.empty() && p.sphere_diameter > 0.0) {
+        float fusion = static_cast<float>(p.crown_fusion);
+        // The root smooth min swells the union by up to fusion / 2 where spheres meet.
+        fields.crown_box = crown_bounds(balls);
+        fields.crown_box.min -= glm::vec3(fusion);
+        fields.crown_box.max += glm::vec3(fusion);
+        float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
+        float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
+        if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
+            // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
+            float alpha = std::clamp(1.0f - 10.0f * fusion, 0.0f, 1.0f);
+            fields.crown.emplace(std::move(balls), alpha, margin, SphereBlend::PaskoSavchenko);
+        } else {
+            fields.crown.emplace(std::move(balls), fusion, margin);
+        }
+    }
+    return fields;
+}
+
+Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
+    Tree out;
+    out.skeleton = grow(tree, {options.cancel, &out.times});
+    const TreeParams& p = tree.params;
+
+    Stopwatch clock;
+    TreeFields fields = tree_fields(out.skeleton, p);
+    if (!fields.trunk)
+        throw InputError("the tree has no trunk: the derived word draws no segment with a "
+                         "width above zero (it needs F, and a width from branch_width or !)");
+    const bool mesh_crown = fields.crown && p.crown_mesh != 0;
+    const float trunk_share = mesh_crown ? 0.5f : 1.0f;
+    out.trunk = mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f,
+                           trunk_share);
+    out.times.push_back({"trunk mesh", clock.lap_ms()});
+    if (mesh_crown) {
+        MeshOptions crown_options = options;
+        // Skipping empty space needs a distance bound; the Pasko-Savchenko blend is not one.
+        if (!fields.crown->is_distance_bound() && options.mesher != Mesher::Dense)
+            crown_options.mesher = Mesher::Dense;
+        out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution,
+                               crown_options, trunk_share, 1.0f);
+        out.times.push_back({"crown mesh", clock.lap_ms()});
+    }
+    if (fields.crown && p.leaf_density > 0.0) {
+        LeafSettings leaves;
+        leaves.density = p.leaf_density;
+        leaves.size = p.leaf_size;
+        leaves.shape = static_cast<LeafShape>(p.leaf_shape);
+        leaves.seed = p.seed;
+        const SphereField& crown = *fields.crown;
+        out.leaves = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
+                                    fields.crown_box, leaves);
+    }
+    add_polygon_leaves(out.leaves, out.skeleton.polygons);
+    out.times.push_back({"leaves", clock.lap_ms()});
+    return out;
+}
+
+}  // namespace sylva

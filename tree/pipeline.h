@@ -1,0 +1,70 @@
+// The pipeline, read top to bottom in one place: template -> word -> skeleton -> trunk and
+// crown fields -> meshes. Each stage lives in its own module; this file only wires them.
+#pragma once
+
+#include "core/tree_params.h"
+#include "marching/marching_cubes.h"
+#include "core/box.h"
+#include "core/mesh.h"
+#include "sdf/cone_field.h"
+#include "sdf/sphere_field.h"
+#include "core/growth.h"
+#include "core/skeleton.h"
+#include "core/tree_template.h"
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sylva {
+
+struct Tree {
+    Skeleton skeleton;
+    Mesh trunk;
+    Mesh crown;   // empty without tips, with sphere_diameter 0 or crown_mesh 0
+    Mesh leaves;  // open quads by design (two triangles up, two down per leaf); may be empty
+    std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
+};
+
+// How the fields become meshes; none of this changes the tree's shape beyond the mesher's
+// own sampling (all meshers share one grid).
+struct MeshOptions {
+    Mesher mesher = Mesher::Sparse;
+    double vdb_adaptivity = 0.0;
+    int threads = 0;  // 0 = all cores
+    // Called with the finished fraction of the whole meshing stage, from any thread.
+    std::function<void(float)> progress;
+    // Reaches every stage (growth, meshing, leaves); once it is true, generate_tree throws
+    // Cancelled.
+    CancelFlag cancel = nullptr;
+};
+
+// Runs the whole pipeline on a template (its params as the caller set them).
+// Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.
+Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options = {});
+
+// "dense", "sparse" or "vdb"; nullopt otherwise.
+std::optional<Mesher> mesher_from_name(std::string_view name);
+
+// The trunk's and the crown's fields with the boxes they are meshed in: what the meshers
+// see (exposed for benchmarks and tests).
+struct TreeFields {
+    Box trunk_box;
+    std::optional<ConeField> trunk;   // empty when no segment has a width
+    Box crown_box;
+    std::optional<SphereField> crown; // empty without tips or with sphere_diameter 0
+};
+TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params);
+
+// Seed 001's crown primitives: a sphere of diameter sphere_diameter at every tip's end,
+// raised by crown_offset on Y.
+std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params);
+
+// The box around the skeleton's segments, radii included (the trunk is meshed in it,
+// grown by the mesher's padding).
+Box skeleton_bounds(const Skeleton& skeleton);
+
+}  // namespace sylva

@@ -1,0 +1,210 @@
+#include "tree/template_file.h"
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "tree/growth.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace sylva {
+namespace {
+
+struct Named {
+    std::string_view name;
+    int value;
+};
+constexpr Named kModes[] = {{"abop", int(TurtleMode::Abop)}, {"lptg", int(TurtleMode::Lptg)}};
+constexpr Named kWidths[] = {{"explicit", int(WidthModel::Explicit)},
+                             {"taper", int(WidthModel::Taper)},
+                             {"pipe", int(WidthModel::Pipe)}};
+
+class Reader {
+public:
+    explicit Reader(const std::string& source) : source_(source) {}
+
+    [[noreturn]] void fail(const toml::node* node, const std::string& message) const {
+        SourceLocation where{source_};
+        if (node && node->source().begin.line > 0) where.line = int(node->source().begin.line);
+        throw InputError(message, where);
+    }
+
+    std::string string(const toml::table& table, std::string_view key, bool required) const {
+        const toml::node* node = table.get(key);
+        if (!node) {
+            if (required) fail(&table, "missing key '" + std::string(key) + "'");
+            return {};
+        }
+        if (!node->is_string()) fail(node, "'" + std::string(key) + "' must be a string");
+        return std::string(*node->value<std::string_view>());
+    }
+
+    template <size_t N>
+    int named(const toml::table& table, std::string_view key, const Named (&names)[N],
+              int fallback) const {
+        std::string text = string(table, key, false);
+        if (text.empty()) return fallback;
+        std::string known;
+        for (const Named& n : names) {
+            if (n.name == text) return n.value;
+            known += (known.empty() ? "" : ", ") + std::string(n.name);
+        }
+        fail(table.get(key), "'" + std::string(key) + "' must be one of " + known + ", not '" + text + "'");
+    }
+
+    void params(const toml::node* node, TreeParams& params) const {
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table) fail(node, "'params' must be a table");
+        for (const auto& [key, value] : *table) {
+            if (key.str() == "seed") {
+                std::optional<int64_t> seed = value.value<int64_t>();
+                if (!value.is_integer() || !seed || *seed < 0)
+                    fail(&value, "[params] seed must be a whole number, 0 or more");
+                params.seed = static_cast<std::uint64_t>(*seed);
+                continue;
+            }
+            try {
+                if (value.is_string()) set_param(params, key.str(), *value.value<std::string_view>());
+                else if (value.is_number()) set_param(params, key.str(), *value.value<double>());
+                else throw InputError("parameter " + std::string(key.str()) + " must be a number");
+            } catch (const InputError& e) {
+                fail(&value, std::string("[params] ") + e.reason());
+            }
+        }
+    }
+
+    void colors(const toml::node* node, PartColors& colors) const {
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table) fail(node, "'colors' must be a table");
+        for (const auto& [key, value] : *table) {
+            glm::vec3* target = key.str() == "trunk"    ? &colors.trunk
+                                : key.str() == "crown"  ? &colors.crown
+                                : key.str() == "leaves" ? &colors.leaves
+                                                        : nullptr;
+            if (!target) fail(&value, "[colors] unknown part '" + std::string(key.str()) + "' (trunk, crown, leaves)");
+            const toml::array* rgb = value.as_array();
+            if (!rgb || rgb->size() != 3)
+                fail(&value, "[colors] " + std::string(key.str()) + " must be [r, g, b]");
+            for (size_t i = 0; i < 3; ++i) {
+                std::optional<double> c = (*rgb)[i].value<double>();
+                if (!c || !(*c >= 0.0 && *c <= 1.0))
+                    fail(&value, "[colors] " + std::string(key.str()) + ": each component must be a number from 0 to 1");
+                (*target)[static_cast<int>(i)] = static_cast<float>(*c);
+            }
+        }
+    }
+
+private:
+    const std::string& source_;
+};
+
+// The file's line of the grammar's first line: a multi-line string drops a newline right
+// after its opening quotes, so its text then starts on the next line.
+int grammar_first_line(std::string_view text, const toml::node* grammar) {
+    const toml::source_region& where = grammar->source();
+    std::size_t start = 0;
+    for (std::size_t line = 1; line < where.begin.line && start != std::string_view::npos; ++line) {
+        start = text.find('\n', start);
+        if (start != std::string_view::npos) ++start;
+    }
+    if (start == std::string_view::npos) return int(where.begin.line);
+    std::string_view rest = text.substr(start + where.begin.column - 1);
+    const bool multi_line = rest.starts_with("'''") || rest.starts_with("\"\"\"");
+    const bool newline_after = multi_line && (rest.substr(3).starts_with('\n') ||
+                                              rest.substr(3).starts_with("\r\n"));
+    return int(where.begin.line) + (newline_after ? 1 : 0);
+}
+
+}  // namespace
+
+TreeTemplate parse_template_file(std::string_view text, const std::string& source) {
+    toml::table doc;
+    try {
+        doc = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw InputError(std::string(e.description()),
+                         {source, int(e.source().begin.line), int(e.source().begin.column)});
+    }
+    Reader read(source);
+    for (const auto& [key, value] : doc) {
+        static constexpr std::string_view known[] = {"name",    "description", "growth", "turtle",
+                                                     "widths",  "grammar",     "params", "colors"};
+        if (std::find(std::begin(known), std::end(known), key.str()) == std::end(known))
+            read.fail(&value, "unknown key '" + std::string(key.str()) +
+                                  "' (name, description, growth, turtle, widths, grammar, params, colors)");
+    }
+    TreeTemplate tree;
+    tree.name = read.string(doc, "name", true);
+    tree.description = read.string(doc, "description", false);
+    tree.grammar = read.string(doc, "grammar", true);
+    tree.source = source;
+    tree.grammar_line = grammar_first_line(text, doc.get("grammar"));
+    if (std::string growth = read.string(doc, "growth", false); !growth.empty()) {
+        if (!find_growth_method(growth)) {
+            std::string known;
+            for (const GrowthMethod* m : growth_methods())
+                known += (known.empty() ? "" : ", ") + std::string(m->name);
+            read.fail(doc.get("growth"), "'growth' must be one of " + known + ", not '" + growth + "'");
+        }
+        tree.growth = growth;
+    }
+    tree.mode = static_cast<TurtleMode>(read.named(doc, "turtle", kModes, int(TurtleMode::Abop)));
+    tree.width_model =
+        static_cast<WidthModel>(read.named(doc, "widths", kWidths, int(WidthModel::Taper)));
+    read.params(doc.get("params"), tree.params);
+    read.colors(doc.get("colors"), tree.colors);
+    return tree;
+}
+
+std::string template_file_text(const TreeTemplate& tree) {
+    auto name_of = [](const auto& names, int value) {
+        for (const Named& n : names)
+            if (n.value == value) return n.name;
+        return std::string_view{};
+    };
+    toml::table params;
+    for (const ParamInfo& info : param_infos()) {
+        double value = *get_param(tree.params, info.key);
+        if (!info.choices.empty()) params.insert(info.key, param_text(tree.params, info));
+        else if (info.integer) params.insert(info.key, static_cast<int64_t>(value));
+        else params.insert(info.key, value);
+    }
+    params.insert("seed", static_cast<int64_t>(tree.params.seed));
+    auto rgb = [](const glm::vec3& c) { return toml::array{double(c.r), double(c.g), double(c.b)}; };
+    toml::table colors{{"trunk", rgb(tree.colors.trunk)},
+                       {"crown", rgb(tree.colors.crown)},
+                       {"leaves", rgb(tree.colors.leaves)}};
+    // Written by hand around the tables so the grammar stays a readable multi-line string.
+    std::ostringstream out;
+    out << "# Sylva tree template\n";
+    out << "name = " << toml::value<std::string>(tree.name) << "\n";
+    out << "description = " << toml::value<std::string>(tree.description) << "\n";
+    if (tree.growth != "lsystem") out << "growth = \"" << tree.growth << "\"\n";
+    out << "turtle = \"" << name_of(kModes, int(tree.mode)) << "\"\n";
+    out << "widths = \"" << name_of(kWidths, int(tree.width_model)) << "\"\n";
+    std::string grammar = tree.grammar;
+    if (grammar.find("'''") == std::string::npos) {
+        out << "grammar = '''\n" << grammar << (grammar.ends_with('\n') ? "" : "\n") << "'''\n";
+    } else {
+        // A grammar that itself holds three quotes goes into a basic string, escaped.
+        std::string escaped;
+        for (char c : grammar) {
+            if (c == '\\' || c == '"') escaped.push_back('\\');
+            escaped.push_back(c);
+        }
+        out << "grammar = \"\"\"\n" << escaped << (grammar.ends_with('\n') ? "" : "\n") << "\"\"\"\n";
+    }
+    out << "\n[params]\n" << params << "\n\n[colors]\n" << colors << "\n";
+    return out.str();
+}
+
+void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree) {
+    std::string text = template_file_text(tree);
+    write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace sylva

@@ -1,0 +1,73 @@
+#include "turtle/lsystem_growth.h"
+
+#include "core/errors.h"
+#include "core/stopwatch.h"
+#include "turtle/derivation.h"
+
+namespace sylva {
+namespace {
+
+// Runs `stage`; an input error it raises names the template's file and the file's line.
+template <class Stage>
+auto located(const TreeTemplate& tree, Stage&& stage) {
+    try {
+        return stage();
+    } catch (InputError& e) {
+        if (!tree.source.empty()) e.relocate(tree.source, tree.grammar_line);
+        throw;
+    }
+}
+
+Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
+    Stopwatch clock;
+    Word word = derive_word(tree, context.cancel);
+    if (context.times) context.times->push_back({"derive", clock.lap_ms()});
+    TurtleSettings settings = turtle_settings(tree);
+    settings.cancel = context.cancel;
+    Skeleton skeleton = located(tree, [&] { return interpret(word, settings); });
+    if (context.times) context.times->push_back({"turtle", clock.lap_ms()});
+    return skeleton;
+}
+
+}  // namespace
+
+const GrowthMethod lsystem_growth = {
+    "lsystem", "an L-system grammar derived and read by a turtle (SPEC sections 1-2)", grow};
+
+Constants param_constants(const TreeParams& params) {
+    Constants constants;
+    for (const ParamInfo& info : param_infos())
+        constants[std::string(info.key)] = *get_param(params, info.key);
+    return constants;
+}
+
+TurtleSettings turtle_settings(const TreeTemplate& tree) {
+    const TreeParams& p = tree.params;
+    TurtleSettings s;
+    s.mode = tree.mode;
+    s.width_model = tree.width_model;
+    s.step = p.branch_length;
+    s.turn_angle = p.yaw_angle;
+    s.roll_angle = p.yaw_angle;
+    s.pitch_angle = p.pitch_angle;
+    s.initial_width = p.branch_width;
+    s.trunk_taper = p.trunk_taper;
+    s.branch_taper = p.branch_taper;
+    s.elasticity = p.tropism;
+    s.pipe_tip_width = p.tip_width;
+    s.pipe_exponent = p.pipe_exponent;
+    return s;
+}
+
+Word derive_word(const TreeTemplate& tree, CancelFlag cancel) {
+    return located(tree, [&] {
+        LSystem system = parse_lsystem(tree.grammar, param_constants(tree.params));
+        DeriveSettings settings;
+        settings.steps = tree.params.generations;
+        settings.seed = tree.params.seed;
+        settings.cancel = cancel;
+        return derive(system, settings);
+    });
+}
+
+}  // namespace sylva

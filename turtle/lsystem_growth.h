@@ -1,0 +1,24 @@
+// Growth method "lsystem": the template's grammar derived `generations` steps (SPEC section
+// 1), the word read by the turtle (section 2). Registered in tree/growth.cpp.
+#pragma once
+
+#include "core/growth.h"
+#include "turtle/lsystem_parser.h"
+#include "turtle/turtle.h"
+#include "turtle/word.h"
+
+namespace sylva {
+
+extern const GrowthMethod lsystem_growth;
+
+// Every parameter of SPEC section 7, by its key: the constants the grammar's expressions see.
+Constants param_constants(const TreeParams& params);
+
+// The turtle as the template's parameters and modes set it.
+TurtleSettings turtle_settings(const TreeTemplate& tree);
+
+// The first stage alone: the template's grammar derived `generations` steps. Errors name
+// the template's file and line when it was read from one.
+Word derive_word(const TreeTemplate& tree, CancelFlag cancel = nullptr);
+
+}  // namespace sylva
