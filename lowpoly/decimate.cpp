@@ -1,5 +1,7 @@
 #include "lowpoly/decimate.h"
 
+#include "core/errors.h"
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/BaseDecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
@@ -392,7 +394,7 @@ void build(std::span<const Mesh* const> parts, OmMesh& om, OpenMesh::VPropHandle
         for (const auto& t : m.triangles) {
             auto fh = om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
             if (!fh.is_valid())
-                throw std::invalid_argument("decimate: part " + std::to_string(k) +
+                throw InputError("decimate: part " + std::to_string(k) +
                                             " has a triangle OpenMesh cannot add (complex "
                                             "edge or vertex)");
         }
@@ -514,7 +516,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         if (parts[k]->triangles.empty()) continue;
         const MeshTopology topology = check_topology(*parts[k]);
         if (!topology.is_closed_manifold())
-            throw std::invalid_argument("decimate: part " + std::to_string(k) +
+            throw InputError("decimate: part " + std::to_string(k) +
                                         " is not a closed 2-manifold (" + describe(topology) + ")");
     }
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).

@@ -65,7 +65,7 @@ struct DecimateResult {
 // each closed piece needs at least 4 triangles, and handles need more).
 //
 // Preconditions: every non-empty part is a closed 2-manifold by check_topology; otherwise
-// throws std::invalid_argument naming the part and what is wrong. Empty parts stay empty.
+// throws InputError (core/errors.h) naming the part and what is wrong. Empty parts stay empty.
 // Guarantee: every returned part is a closed 2-manifold with the input's orientation
 // (checked with check_topology); when a reduction breaks that, it is redone with fewer
 // collapses, down to returning the input. Connected components never vanish or merge;

@@ -1,5 +1,7 @@
 #include "lowpoly/fidelity.h"
 
+#include "core/errors.h"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -12,7 +14,7 @@ namespace sylva {
 Fidelity measure_fidelity(const Mesh& reduced, const Mesh& reference,
                           const FidelitySettings& settings) {
     if (reference.triangles.empty())
-        throw std::invalid_argument("measure_fidelity: the reference mesh has no triangles");
+        throw InputError("measure_fidelity: the reference mesh has no triangles");
     double height = settings.height;
     if (height == 0.0) {
         float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
@@ -23,7 +25,7 @@ Fidelity measure_fidelity(const Mesh& reduced, const Mesh& reference,
         height = static_cast<double>(hi) - lo;
     }
     if (!(height > 0.0))
-        throw std::invalid_argument("measure_fidelity: the height to compare against is 0");
+        throw InputError("measure_fidelity: the height to compare against is 0");
 
     const TriangleBvh bvh(reference);
     const std::vector<glm::vec3> points = sample_surface(reduced, settings.samples, settings.seed);

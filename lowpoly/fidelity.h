@@ -29,7 +29,7 @@ struct Fidelity {
 
 // One-sided: it sees where `reduced` strays from `reference`, not parts of `reference`
 // that `reduced` lost (swap the arguments for that). 0 for identical meshes.
-// Throws std::invalid_argument when `reference` has no triangles or the height is 0.
+// Throws InputError (core/errors.h) when `reference` has no triangles or the height is 0.
 // Deterministic for a given seed.
 Fidelity measure_fidelity(const Mesh& reduced, const Mesh& reference,
                           const FidelitySettings& settings = {});

@@ -86,7 +86,8 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
     Random random(settings.seed ^ 0x1eaf5eedULL);
     const std::vector<glm::vec2>& outline = leaf_outline(settings.shape);
     for (int k = 0; k < cells.z; ++k)
-        for (int j = 0; j < cells.y; ++j)
+        for (int j = 0; j < cells.y; ++j) {
+            throw_if_cancelled(settings.cancel);
             for (int i = 0; i < cells.x; ++i) {
                 // Draw every number whether or not the leaf lands, so one leaf's fate never
                 // shifts the next one's randomness.
@@ -105,6 +106,7 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
                 add_leaf(mesh, outline, p, along, across,
                          static_cast<float>(settings.size) * scale);
             }
+        }
     return mesh;
 }
 

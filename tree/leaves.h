@@ -7,6 +7,7 @@
 
 #include "core/tree_params.h"
 #include "core/box.h"
+#include "core/cancel.h"
 #include "core/mesh.h"
 
 #include <glm/vec2.hpp>
@@ -23,6 +24,7 @@ struct LeafSettings {
     LeafShape shape = LeafShape::Round;
     std::uint64_t seed = 1;
     std::size_t max_leaves = 200'000;  // the grid is coarsened to stay below this
+    CancelFlag cancel = nullptr;       // polled per grid row; throws Cancelled
 };
 
 // The outline of a leaf shape in its own plane: x along the leaf from its base (0) to its
@@ -33,7 +35,8 @@ const std::vector<glm::vec2>& leaf_outline(LeafShape shape);
 // vertices each), appended to `leaves`.
 void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>& polygons);
 
-// `inside` is negative inside the crown. Same inputs, same leaves.
+// `inside` is negative inside the crown. Same inputs, same leaves. Throws Cancelled when
+// settings.cancel becomes true.
 Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const Box& box,
                     const LeafSettings& settings);
 

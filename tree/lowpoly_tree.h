@@ -41,7 +41,7 @@ struct ReducedTree {
 };
 
 // `settings` supplies the guards, progress and cancel; its max_triangles is ignored.
-// Throws what decimate() throws (std::invalid_argument for an open trunk or crown,
+// Throws what decimate() throws (InputError (core/errors.h) for an open trunk or crown,
 // Cancelled).
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings = {});

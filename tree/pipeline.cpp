@@ -171,6 +171,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         leaves.size = p.leaf_size;
         leaves.shape = static_cast<LeafShape>(p.leaf_shape);
         leaves.seed = p.seed;
+        leaves.cancel = options.cancel;
         const SphereField& crown = *fields.crown;
         out.leaves = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
                                     fields.crown_box, leaves);

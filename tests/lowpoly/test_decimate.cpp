@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "marching/marching_cubes.h"
@@ -122,8 +123,8 @@ TEST(Decimate, RejectsOpenInputNamingThePart) {
     open.triangles.pop_back();
     try {
         decimate(open, budget(50));
-        FAIL() << "expected std::invalid_argument";
-    } catch (const std::invalid_argument& e) {
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("part 0"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("boundary edges"), std::string::npos) << e.what();
     }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/surface_sampling.h"
@@ -145,7 +146,7 @@ TEST(Fidelity, OneSided) {
 }
 
 TEST(Fidelity, RejectsAnEmptyReference) {
-    EXPECT_THROW(measure_fidelity(cube(), Mesh{}), std::invalid_argument);
+    EXPECT_THROW(measure_fidelity(cube(), Mesh{}), InputError);
 }
 
 TEST(MergeMeshes, ShiftsIndices) {
