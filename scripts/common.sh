@@ -27,7 +27,23 @@ ensure_packages() {
         "${missing[@]}" >/dev/null
 }
 
+# Extra arguments go to CMake's configure step (e.g. -DSYLVA_WERROR=ON).
 build_sylva() {
-    cmake -S "$SYLVA_ROOT" -B "$SYLVA_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake -S "$SYLVA_ROOT" -B "$SYLVA_BUILD" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
     cmake --build "$SYLVA_BUILD" --parallel "$(nproc)"
+}
+
+# Fails, listing the files, when a C++ file of the tree differs from what clang-format
+# (the committed .clang-format) makes of it. Fix with: scripts/format
+check_format() {
+    local files
+    mapfile -t files < <(git -C "$SYLVA_ROOT" ls-files '*.cpp' '*.h')
+    if ! (cd "$SYLVA_ROOT" && clang-format --dry-run -Werror "${files[@]}" 2>/tmp/sylva-format.$$); then
+        grep -o '^[^:]*:[0-9]*:[0-9]*: error' /tmp/sylva-format.$$ | cut -d: -f1 | sort -u |
+            sed 's/^/sylva: not formatted: /'
+        rm -f /tmp/sylva-format.$$
+        echo "sylva: run scripts/format and commit the result"
+        return 1
+    fi
+    rm -f /tmp/sylva-format.$$
 }

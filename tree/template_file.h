@@ -3,6 +3,7 @@
 //
 //   name = "oak"
 //   description = "..."
+//   growth = "lsystem"       # the growth method (tree/growth.h); lsystem is the default
 //   turtle = "abop"          # abop | lptg (seed 001's elevation/azimuth turtle)
 //   widths = "explicit"      # explicit | taper | pipe
 //   grammar = '''
