@@ -221,10 +221,8 @@ int run_export(const Options& o) {
     std::printf("\n");
     if (o.fidelity) {
         Mesh reference = reference_surface(tmpl, 200, o.mesh);
-        const bool reduced = !finished.levels.empty();
-        const Mesh& trunk = reduced ? finished.levels[0].trunk : tree.trunk;
-        const Mesh& crown = reduced ? finished.levels[0].crown : tree.crown;
-        Fidelity f = measure_tree_fidelity(trunk, crown, reference);
+        const SolidParts solids = finest_solids(tree, finished);
+        Fidelity f = measure_tree_fidelity(solids.trunk, solids.crown, reference);
         std::printf("  fidelity to the resolution-200 surface: mean %.3f %% max %.3f %% of the "
                     "height %.2f m (%zu samples)\n",
                     f.mean_percent, f.max_percent, f.height, f.samples);

@@ -11,6 +11,11 @@ std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Me
     return parts;
 }
 
+SolidParts finest_solids(const Tree& tree, const FinishedTree& finished) {
+    if (finished.levels.empty()) return {tree.trunk, tree.crown};
+    return {finished.levels[0].trunk, finished.levels[0].crown};
+}
+
 FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings) {
     FinishedTree out;
     const TreeBudget& budget = settings.budget;

@@ -37,6 +37,14 @@ struct FinishedTree {
     bool lod = false;  // levels are a LOD chain: parts get a _LOD<i> suffix
 };
 
+// Trunk and crown of the finest level: reduced, or the tree's own when not reduced. What
+// the studio shows, the status lines count and fidelity is measured on.
+struct SolidParts {
+    const Mesh& trunk;
+    const Mesh& crown;
+};
+SolidParts finest_solids(const Tree& tree, const FinishedTree& finished);
+
 // Reduces the tree as `settings` say. Throws what reduce_tree() throws.
 FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
 

@@ -90,8 +90,8 @@ struct ShownMeshes {
 
 ShownMeshes shown_meshes(const GeneratedTree& generated) {
     const sylva::Tree& tree = generated.tree;
-    if (generated.reduced) return {generated.reduced->trunk, generated.reduced->crown, tree.leaves};
-    return {tree.trunk, tree.crown, tree.leaves};
+    const sylva::SolidParts solids = sylva::finest_solids(tree, generated.finished);
+    return {solids.trunk, solids.crown, tree.leaves};
 }
 
 // The turtle graphic: every segment, and the outline of every polygon ({ . } leaves).

@@ -306,9 +306,10 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
     }
     if (state.tree) {
         const Tree& t = state.tree->tree;
-        const bool reduced = state.tree->reduced.has_value();
-        const Mesh& trunk = reduced ? state.tree->reduced->trunk : t.trunk;
-        const Mesh& crown = reduced ? state.tree->reduced->crown : t.crown;
+        const bool reduced = state.tree->reduced();
+        const SolidParts solids = finest_solids(t, state.tree->finished);
+        const Mesh& trunk = solids.trunk;
+        const Mesh& crown = solids.crown;
         ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |",
                     state.shown_template.name.c_str(), trunk.triangles.size(), crown.triangles.size(),
                     t.leaves.triangles.size(), reduced ? " (low poly)" : "");

@@ -56,12 +56,11 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
     progress->stage = JobProgress::Reducing;
     progress->fraction = 0.0f;
     const Clock::time_point start = Clock::now();
-    TreeBudget total;
-    total.total = budget;
-    DecimateSettings settings;
-    settings.cancel = &progress->cancel;  // a newer edit stops a long reduction too
-    settings.progress = [&progress](float f) { progress->fraction = f; };
-    out.reduced = reduce_tree(out.tree, total, settings);
+    FinishSettings finish;
+    finish.budget.total = budget;
+    finish.decimate.cancel = &progress->cancel;  // a newer edit stops a long reduction too
+    finish.decimate.progress = [&progress](float f) { progress->fraction = f; };
+    out.finished = finish_tree(out.tree, finish);
     out.budget = budget;
     out.reduce_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return out;
@@ -89,9 +88,8 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown,
                         const ExportSettings& settings) {
     const Tree& tree = shown->tree;
     FinishedTree finished;
-    if (!settings.lod && budget > 0 && shown->reduced && shown->budget == budget) {
-        finished.levels = {*shown->reduced};
-        finished.budgets = {budget};
+    if (!settings.lod && budget > 0 && shown->reduced() && shown->budget == budget) {
+        finished = shown->finished;
     } else {
         FinishSettings finish;
         finish.budget.total = budget;

@@ -3,7 +3,7 @@
 // main; panels are functions of this state.
 #pragma once
 
-#include "tree/lowpoly_tree.h"
+#include "export/export_tree.h"
 #include "tree/pipeline.h"
 #include "ui/orbit_camera.h"
 
@@ -25,8 +25,11 @@ bool same_template(const TreeTemplate& a, const TreeTemplate& b);
 // the triangle budget, as an export with that budget writes them.
 struct GeneratedTree {
     Tree tree;
-    std::optional<ReducedTree> reduced;
-    std::size_t budget = 0;  // what `reduced` was reduced to
+    // Trunk and crown as shown, and as an export with `budget` writes them; no levels: the
+    // marching-cubes meshes (the low-poly view is off).
+    FinishedTree finished;
+    std::size_t budget = 0;  // what `finished` was reduced to
+    bool reduced() const { return !finished.levels.empty(); }
     double reduce_ms = 0;
 };
 

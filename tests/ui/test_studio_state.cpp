@@ -50,7 +50,7 @@ TEST(StudioState, GeneratesOnAWorkerAndShowsTheTree) {
     ASSERT_TRUE(state.tree);
     EXPECT_TRUE(state.tree_changed);
     EXPECT_FALSE(state.tree->tree.trunk.triangles.empty());
-    EXPECT_FALSE(state.tree->reduced);  // the low-poly view is off
+    EXPECT_FALSE(state.tree->reduced());  // the low-poly view is off
     EXPECT_TRUE(state.error.empty());
     EXPECT_FALSE(edit_pending(state));
 }
@@ -61,8 +61,8 @@ TEST(StudioState, LowPolyViewReducesToTheBudget) {
     state.tree_template.params.triangle_budget = 300;
     start_generation(state);
     ASSERT_TRUE(wait_for_generations(state));
-    ASSERT_TRUE(state.tree && state.tree->reduced);
-    EXPECT_LE(state.tree->reduced->triangles, 300u);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    EXPECT_LE(state.tree->finished.levels[0].triangles, 300u);
     EXPECT_EQ(state.tree->budget, 300u);
     // Changing the budget is an edit the view must follow.
     state.tree_template.params.triangle_budget = 200;
