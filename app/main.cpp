@@ -1,5 +1,14 @@
 // sylva: the headless command-line interface (SPEC section 8).
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
@@ -9,15 +18,6 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_growth.h"
-
-#include <charconv>
-#include <chrono>
-#include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <optional>
-#include <string>
-#include <vector>
 
 namespace {
 
@@ -107,7 +107,8 @@ Options parse_options(int argc, char** argv) {
         } else if (arg == "--set") {
             std::string kv = value();
             size_t eq = kv.find('=');
-            if (eq == std::string::npos) throw UsageError("--set expects KEY=VALUE, not '" + kv + "'");
+            if (eq == std::string::npos)
+                throw UsageError("--set expects KEY=VALUE, not '" + kv + "'");
             o.sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
         } else if (arg == "--seed") {
             o.seed = parse_integer<std::uint64_t>(arg, value());
@@ -118,7 +119,8 @@ Options parse_options(int argc, char** argv) {
         } else if (arg == "--mesher") {
             std::string name = value();
             std::optional<Mesher> mesher = mesher_from_name(name);
-            if (!mesher) throw UsageError("--mesher expects dense, sparse or vdb, not '" + name + "'");
+            if (!mesher)
+                throw UsageError("--mesher expects dense, sparse or vdb, not '" + name + "'");
             o.mesh.mesher = *mesher;
         } else if (arg == "--adaptivity") {
             std::string text = value();
@@ -175,7 +177,7 @@ void print_help(std::FILE* to) {
 void print_parts(const std::vector<NamedMesh>& parts, const char* indent) {
     for (const NamedMesh& part : parts) {
         // Leaves are open quads by design; the solid parts must be closed.
-        const char* state = !part.closed ? "open by design"
+        const char* state = !part.closed                                      ? "open by design"
                             : check_topology(*part.mesh).is_closed_manifold() ? "closed"
                                                                               : "NOT closed";
         std::printf("%s%-7s %zu triangles, %zu vertices, %s\n", indent, part.name.c_str(),
@@ -209,8 +211,10 @@ int run_export(const Options& o) {
     print_parts(tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors), "    ");
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
-        if (finished.lod) std::printf("  LOD%zu (budget %zu):\n", i, finished.budgets[i]);
-        else std::printf("  reduced (budget %zu):\n", finished.budgets[i]);
+        if (finished.lod)
+            std::printf("  LOD%zu (budget %zu):\n", i, finished.budgets[i]);
+        else
+            std::printf("  reduced (budget %zu):\n", finished.budgets[i]);
         print_parts(tree_parts(level.trunk, level.crown, {}, tmpl.colors), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
@@ -223,9 +227,10 @@ int run_export(const Options& o) {
         Mesh reference = reference_surface(tmpl, 200, o.mesh);
         const SolidParts solids = finest_solids(tree, finished);
         Fidelity f = measure_tree_fidelity(solids.trunk, solids.crown, reference);
-        std::printf("  fidelity to the resolution-200 surface: mean %.3f %% max %.3f %% of the "
-                    "height %.2f m (%zu samples)\n",
-                    f.mean_percent, f.max_percent, f.height, f.samples);
+        std::printf(
+            "  fidelity to the resolution-200 surface: mean %.3f %% max %.3f %% of the "
+            "height %.2f m (%zu samples)\n",
+            f.mean_percent, f.max_percent, f.height, f.samples);
     }
     return kOk;
 }

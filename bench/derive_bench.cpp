@@ -1,14 +1,14 @@
 // Derivation throughput: modules written per second, for a D0L grammar (ABOP Fig. 1.24a)
 // and a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), one thread.
 // Usage: sylva-bench-derive [repetitions]
-#include "turtle/derivation.h"
-#include "turtle/lsystem_parser.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
 
 namespace {
 
@@ -46,7 +46,8 @@ axiom: A(1,10)
 A(l,w) : * -> !(w)F(l)[&(45)B(l*r2,w*wr)]/(d)A(l*r1,w*wr)
 B(l,w) : * -> !(w)F(l)[-(45)$C(l*r2,w*wr)]C(l*r1,w*wr)
 C(l,w) : * -> !(w)F(l)[+(45)$B(l*r2,w*wr)]B(l*r1,w*wr)
-)", 19},
+)",
+         19},
     };
     std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
     std::printf("%-38s %6s %12s %12s %10s\n", "grammar", "steps", "final size", "written",

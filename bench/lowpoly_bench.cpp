@@ -21,12 +21,12 @@
 #include <string>
 #include <vector>
 
-#include "tree/lowpoly_tree.h"
-#include "tree/template_library.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "marching/mesh_checks.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/template_library.h"
 
 namespace {
 

@@ -7,18 +7,8 @@
 // Peak memory is measured in a forked child per configuration (ru_maxrss).
 //
 // Usage: sylva-bench-mesh [--quick]      (--quick: resolutions up to 100, one repetition)
-#include "tree/growth.h"
-#include "tree/pipeline.h"
-#include "tree/template_library.h"
-#include "marching/grid.h"
-#include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
-#include "marching/vdb_mesher.h"
-#include "sdf/capped_cone.h"
-#include "sdf/sphere_field.h"
-
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -34,6 +24,16 @@
 #include <thread>
 #include <vector>
 
+#include "marching/grid.h"
+#include "marching/marching_cubes.h"
+#include "marching/mesh_checks.h"
+#include "marching/vdb_mesher.h"
+#include "sdf/capped_cone.h"
+#include "sdf/sphere_field.h"
+#include "tree/growth.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
+
 namespace {
 
 using namespace sylva;
@@ -44,9 +44,9 @@ struct SeedRow {
     int trunk_triangles, crown_triangles;
 };
 constexpr SeedRow kSeed[] = {
-    {25, 0.05, 0.02, 942, 3848},        {50, 0.4, 0.2, 6452, 15992},
-    {75, 1.1, 0.43, 14196, 36268},      {100, 2.5, 1.0, 27100, 64476},
-    {125, 4.4, 1.9, 40738, 101668},     {150, 7.8, 3.3, 60472, 146604},
+    {25, 0.05, 0.02, 942, 3848},      {50, 0.4, 0.2, 6452, 15992},
+    {75, 1.1, 0.43, 14196, 36268},    {100, 2.5, 1.0, 27100, 64476},
+    {125, 4.4, 1.9, 40738, 101668},   {150, 7.8, 3.3, 60472, 146604},
     {200, 17.9, 7.8, 111026, 259556},
 };
 
@@ -140,9 +140,15 @@ Measure run_mesher(Mesher mesher, const Part& part, int resolution, int repetiti
     m.seconds = best_of(repetitions, [&] {
         stats = {};
         switch (mesher) {
-            case Mesher::Dense: mesh = marching_cubes(field, part.box, settings); break;
-            case Mesher::Sparse: mesh = sparse_marching_cubes(field, part.box, settings); break;
-            case Mesher::Vdb: mesh = vdb_mesh(field, part.box, settings); break;
+            case Mesher::Dense:
+                mesh = marching_cubes(field, part.box, settings);
+                break;
+            case Mesher::Sparse:
+                mesh = sparse_marching_cubes(field, part.box, settings);
+                break;
+            case Mesher::Vdb:
+                mesh = vdb_mesh(field, part.box, settings);
+                break;
         }
     });
     m.triangles = mesh.triangles.size();
@@ -158,7 +164,8 @@ std::vector<Part> tree_parts(const TreeFields& fields) {
                      [&trunk](const glm::vec3& p) { return union_distance(trunk.cones(), p); }});
     if (fields.crown) {
         const SphereField& crown = *fields.crown;
-        parts.push_back({"crown", fields.crown_box, [&crown](const glm::vec3& p) { return crown(p); },
+        parts.push_back({"crown", fields.crown_box,
+                         [&crown](const glm::vec3& p) { return crown(p); },
                          [&crown](const glm::vec3& p) {
                              // The seed folds its root smooth min over every sphere.
                              float d = std::numeric_limits<float>::max();
@@ -184,10 +191,11 @@ int main(int argc, char** argv) {
 
     TreeTemplate spruce = load_template("spruce");
     Skeleton skeleton = grow(spruce);
-    std::printf("Seed 001 spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "
-                "times best of %d, seconds\n\n",
-                skeleton.segments.size(), tips(skeleton).size(),
-                std::max(1u, std::thread::hardware_concurrency()), repetitions);
+    std::printf(
+        "Seed 001 spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "
+        "times best of %d, seconds\n\n",
+        skeleton.segments.size(), tips(skeleton).size(),
+        std::max(1u, std::thread::hardware_concurrency()), repetitions);
     std::printf("%-5s %4s | %8s %8s | %8s %8s %8s | %9s %9s %7s | %8s %8s | %8s %8s | %6s %6s\n",
                 "part", "res", "seed s", "seed tri", "baseline", "dense", "sparse", "triangles",
                 "evals", "ev/tri", "vdb", "vdb tri", "x base", "x seed", "MB", "closed");
@@ -219,19 +227,21 @@ int main(int argc, char** argv) {
                 std::snprintf(base_s, sizeof base_s, "%.3f", base);
                 std::snprintf(x_base, sizeof x_base, "%.0f", base / sparse.seconds);
             }
-            std::printf("%-5s %4d | %8s %8s | %8s %8.4f %8.4f | %9zu %9zu %7.1f | %8.4f %8zu | "
-                        "%8s %8s | %6.0f %6s\n",
-                        part.name, resolution, seed_s, seed_tri, base_s, dense.seconds,
-                        sparse.seconds, sparse.triangles, sparse.evaluations,
-                        double(sparse.evaluations) / double(std::max<size_t>(1, sparse.triangles)),
-                        vdb.seconds, vdb.triangles, x_base, x_seed, mb,
-                        dense.closed && sparse.closed && vdb.closed ? "yes" : "NO");
+            std::printf(
+                "%-5s %4d | %8s %8s | %8s %8.4f %8.4f | %9zu %9zu %7.1f | %8.4f %8zu | "
+                "%8s %8s | %6.0f %6s\n",
+                part.name, resolution, seed_s, seed_tri, base_s, dense.seconds, sparse.seconds,
+                sparse.triangles, sparse.evaluations,
+                double(sparse.evaluations) / double(std::max<size_t>(1, sparse.triangles)),
+                vdb.seconds, vdb.triangles, x_base, x_seed, mb,
+                dense.closed && sparse.closed && vdb.closed ? "yes" : "NO");
         }
     }
     if (!quick)
-        std::printf("\nresolution 200, trunk + crown, sparse: %.1f ms (target < 100 ms; seed 001: "
-                    "25.7 s on 16 threads)\n",
-                    total_200 * 1000);
+        std::printf(
+            "\nresolution 200, trunk + crown, sparse: %.1f ms (target < 100 ms; seed 001: "
+            "25.7 s on 16 threads)\n",
+            total_200 * 1000);
 
     TreeTemplate tree = default_template();
     tree.params.trunk_resolution = tree.params.crown_resolution = 64;
@@ -242,8 +252,9 @@ int main(int argc, char** argv) {
         total += run_mesher(Mesher::Sparse, part, 64, std::max(repetitions, 5)).seconds;
     std::printf("default tree, resolution 64, trunk + crown, sparse: %.1f ms (target < 10 ms)\n",
                 total * 1000);
-    std::printf("\nbaseline = seed's method on this machine; x base / x seed = baseline or seed "
-                "time over Sylva's sparse time; ev/tri = sparse field evaluations per triangle;\n"
-                "MB = peak resident memory of a process meshing that part with the sparse mesher.\n");
+    std::printf(
+        "\nbaseline = seed's method on this machine; x base / x seed = baseline or seed "
+        "time over Sylva's sparse time; ev/tri = sparse field evaluations per triangle;\n"
+        "MB = peak resident memory of a process meshing that part with the sparse mesher.\n");
     return 0;
 }

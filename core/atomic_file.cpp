@@ -1,7 +1,5 @@
 #include "core/atomic_file.h"
 
-#include "core/errors.h"
-
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,6 +7,8 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+
+#include "core/errors.h"
 
 namespace sylva {
 
@@ -23,8 +23,7 @@ void write_file_atomically(const std::filesystem::path& path,
     temp += ".tmp-" + std::to_string(::getpid());
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw IoError("cannot write '" + path.string() + "': " + std::strerror(errno));
+        if (!out) throw IoError("cannot write '" + path.string() + "': " + std::strerror(errno));
         try {
             write(out);
         } catch (...) {

@@ -21,7 +21,7 @@ struct SourceLocation {
 };
 
 class InputError : public std::runtime_error {
-public:
+  public:
     explicit InputError(const std::string& reason, SourceLocation where = {},
                         const std::string& source_line = {});
 
@@ -37,7 +37,7 @@ public:
     // A place-less error gets the source alone. Rethrow with `throw;` to keep the type.
     void relocate(const std::string& source, int first_line);
 
-private:
+  private:
     void format();
 
     std::string reason_;
@@ -48,7 +48,7 @@ private:
 
 // An InputError in the grammar language (SPEC section 1).
 class GrammarError : public InputError {
-public:
+  public:
     explicit GrammarError(const std::string& reason, int line = 0, int column = 0,
                           const std::string& source_line = {})
         : InputError(reason, {{}, line, column}, source_line) {}
@@ -56,12 +56,12 @@ public:
 
 // A file could not be read or written; the message names the path and the reason.
 class IoError : public std::runtime_error {
-public:
+  public:
     explicit IoError(const std::string& message, std::filesystem::path path = {})
         : std::runtime_error(message), path_(std::move(path)) {}
     const std::filesystem::path& path() const { return path_; }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 

@@ -4,13 +4,13 @@
 // and is registered with one line in tree/growth.cpp.
 #pragma once
 
-#include "core/cancel.h"
-#include "core/skeleton.h"
-#include "core/tree_template.h"
-
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/cancel.h"
+#include "core/skeleton.h"
+#include "core/tree_template.h"
 
 namespace sylva {
 
@@ -21,7 +21,7 @@ struct StageTime {
 };
 
 struct GrowthContext {
-    CancelFlag cancel = nullptr;           // polled between steps; throws Cancelled
+    CancelFlag cancel = nullptr;              // polled between steps; throws Cancelled
     std::vector<StageTime>* times = nullptr;  // when set, each method appends its stages
 };
 

@@ -1,10 +1,9 @@
 // Triangle meshes as plain data, the output of every mesher and the input of every writer.
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <array>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
 
 namespace sylva {

@@ -9,7 +9,7 @@ namespace sylva {
 
 void apply_pipe_model(Skeleton& skeleton, float tip_radius, float exponent) {
     const size_t n = skeleton.segments.size();
-    std::vector<double> sum(n, 0.0);          // sum of the children's r^g
+    std::vector<double> sum(n, 0.0);  // sum of the children's r^g
     std::vector<float> largest_child(n, 0.0f);
     std::vector<bool> has_child(n, false);
     // Children come after their parents, so one backward pass sees every child first.

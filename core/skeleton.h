@@ -1,9 +1,8 @@
 // The turtle's output: a tree graph (seed 000, 2.4.1) of tapered segments plus leaf polygons.
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
 
 namespace sylva {

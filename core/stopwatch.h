@@ -6,7 +6,7 @@
 namespace sylva {
 
 class Stopwatch {
-public:
+  public:
     // Milliseconds since construction or the previous lap.
     double lap_ms() {
         auto now = std::chrono::steady_clock::now();
@@ -15,7 +15,7 @@ public:
         return ms;
     }
 
-private:
+  private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 

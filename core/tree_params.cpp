@@ -1,10 +1,10 @@
 #include "core/tree_params.h"
 
-#include "core/errors.h"
-
 #include <charconv>
 #include <cmath>
 #include <sstream>
+
+#include "core/errors.h"
 
 namespace sylva {
 namespace {
@@ -21,28 +21,85 @@ constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
 
 const std::vector<Field>& fields() {
     static const std::vector<Field> table = {
-        {{"trunk_resolution", "P_Tres: marching-cubes cells along the longest side of the trunk box", 4, 2000, true}, nullptr, &TreeParams::trunk_resolution},
-        {{"crown_resolution", "P_Cres: marching-cubes cells along the longest side of the crown box", 4, 2000, true}, nullptr, &TreeParams::crown_resolution},
-        {{"branch_length", "P_Bl: length of F and f without a parameter, meters", 0.001, 100, false}, &TreeParams::branch_length, nullptr},
-        {{"branch_width", "P_Bw: starting trunk width (diameter), meters", 0.0, 10, false}, &TreeParams::branch_width, nullptr},
-        {{"trunk_taper", "P_r1: width factor per trunk segment", 0, 1, false}, &TreeParams::trunk_taper, nullptr},
-        {{"branch_taper", "P_r2: width factor per branch segment", 0, 1, false}, &TreeParams::branch_taper, nullptr},
-        {{"sphere_diameter", "P_Sdia: diameter of the crown spheres at the branch tips, meters", 0, 10, false}, &TreeParams::sphere_diameter, nullptr},
-        {{"crown_offset", "P_Soff: crown spheres raised by this on Y, meters (negative lowers them)", -10, 10, false}, &TreeParams::crown_offset, nullptr},
-        {{"crown_fusion", "P_Cfus: how strongly the crown spheres blend", 1e-3, 1e-1, false}, &TreeParams::crown_fusion, nullptr},
-        {{"generations", "P_Tgen: derivation steps of the grammar", 0, 15, true}, nullptr, &TreeParams::generations},
-        {{"pitch_angle", "P_alpha: default angle of & and ^, degrees", 0, 360, false}, &TreeParams::pitch_angle, nullptr},
-        {{"yaw_angle", "P_beta: default angle of + - \\ /, degrees", 0, 360, false}, &TreeParams::yaw_angle, nullptr},
-        {{"tropism", "elasticity of the bend towards gravity after each F (0 = none, negative bends up)", -1, 1, false}, &TreeParams::tropism, nullptr},
-        {{"tip_width", "pipe width model: diameter at the branch tips, meters", 0, 10, false}, &TreeParams::tip_width, nullptr},
-        {{"pipe_exponent", "pipe width model: Murray's exponent (r^g = sum of the children's r^g)", 1, 4, false}, &TreeParams::pipe_exponent, nullptr},
-        {{"joint_blend", "smooth-union radius at trunk joints, meters (0 = hard union)", 0, 1, false}, &TreeParams::joint_blend, nullptr},
-        {{"crown_blend", "how crown spheres fuse: root (seed 001's root smooth min) or pasko (Pasko-Savchenko)", 0, 1, true, kCrownBlends}, nullptr, &TreeParams::crown_blend},
-        {{"crown_mesh", "1: mesh the crown; 0: leaves only", 0, 1, true}, nullptr, &TreeParams::crown_mesh},
-        {{"leaf_density", "leaves per cubic meter of crown (0 = none)", 0, 20000, false}, &TreeParams::leaf_density, nullptr},
+        {{"trunk_resolution",
+          "P_Tres: marching-cubes cells along the longest side of the trunk box", 4, 2000, true},
+         nullptr,
+         &TreeParams::trunk_resolution},
+        {{"crown_resolution",
+          "P_Cres: marching-cubes cells along the longest side of the crown box", 4, 2000, true},
+         nullptr,
+         &TreeParams::crown_resolution},
+        {{"branch_length", "P_Bl: length of F and f without a parameter, meters", 0.001, 100,
+          false},
+         &TreeParams::branch_length,
+         nullptr},
+        {{"branch_width", "P_Bw: starting trunk width (diameter), meters", 0.0, 10, false},
+         &TreeParams::branch_width,
+         nullptr},
+        {{"trunk_taper", "P_r1: width factor per trunk segment", 0, 1, false},
+         &TreeParams::trunk_taper,
+         nullptr},
+        {{"branch_taper", "P_r2: width factor per branch segment", 0, 1, false},
+         &TreeParams::branch_taper,
+         nullptr},
+        {{"sphere_diameter", "P_Sdia: diameter of the crown spheres at the branch tips, meters", 0,
+          10, false},
+         &TreeParams::sphere_diameter,
+         nullptr},
+        {{"crown_offset",
+          "P_Soff: crown spheres raised by this on Y, meters (negative lowers them)", -10, 10,
+          false},
+         &TreeParams::crown_offset,
+         nullptr},
+        {{"crown_fusion", "P_Cfus: how strongly the crown spheres blend", 1e-3, 1e-1, false},
+         &TreeParams::crown_fusion,
+         nullptr},
+        {{"generations", "P_Tgen: derivation steps of the grammar", 0, 15, true},
+         nullptr,
+         &TreeParams::generations},
+        {{"pitch_angle", "P_alpha: default angle of & and ^, degrees", 0, 360, false},
+         &TreeParams::pitch_angle,
+         nullptr},
+        {{"yaw_angle", "P_beta: default angle of + - \\ /, degrees", 0, 360, false},
+         &TreeParams::yaw_angle,
+         nullptr},
+        {{"tropism",
+          "elasticity of the bend towards gravity after each F (0 = none, negative bends up)", -1,
+          1, false},
+         &TreeParams::tropism,
+         nullptr},
+        {{"tip_width", "pipe width model: diameter at the branch tips, meters", 0, 10, false},
+         &TreeParams::tip_width,
+         nullptr},
+        {{"pipe_exponent", "pipe width model: Murray's exponent (r^g = sum of the children's r^g)",
+          1, 4, false},
+         &TreeParams::pipe_exponent,
+         nullptr},
+        {{"joint_blend", "smooth-union radius at trunk joints, meters (0 = hard union)", 0, 1,
+          false},
+         &TreeParams::joint_blend,
+         nullptr},
+        {{"crown_blend",
+          "how crown spheres fuse: root (seed 001's root smooth min) or pasko (Pasko-Savchenko)", 0,
+          1, true, kCrownBlends},
+         nullptr,
+         &TreeParams::crown_blend},
+        {{"crown_mesh", "1: mesh the crown; 0: leaves only", 0, 1, true},
+         nullptr,
+         &TreeParams::crown_mesh},
+        {{"leaf_density", "leaves per cubic meter of crown (0 = none)", 0, 20000, false},
+         &TreeParams::leaf_density,
+         nullptr},
         {{"leaf_size", "leaf length, meters", 0.01, 2, false}, &TreeParams::leaf_size, nullptr},
-        {{"leaf_shape", "round, oak, needle or frond", 0, 3, true, kLeafShapes}, nullptr, &TreeParams::leaf_shape},
-        {{"triangle_budget", "export: trunk + crown reduced to this many triangles (0 = keep every marching-cubes triangle)", 0, 10000000, true}, nullptr, &TreeParams::triangle_budget},
+        {{"leaf_shape", "round, oak, needle or frond", 0, 3, true, kLeafShapes},
+         nullptr,
+         &TreeParams::leaf_shape},
+        {{"triangle_budget",
+          "export: trunk + crown reduced to this many triangles (0 = keep every marching-cubes "
+          "triangle)",
+          0, 10000000, true},
+         nullptr,
+         &TreeParams::triangle_budget},
     };
     return table;
 }
@@ -84,7 +141,8 @@ const Field& known_field(std::string_view key) {
     const Field* f = find_field(key);
     if (!f) {
         std::string known;
-        for (const Field& g : fields()) known += (known.empty() ? "" : ", ") + std::string(g.info.key);
+        for (const Field& g : fields())
+            known += (known.empty() ? "" : ", ") + std::string(g.info.key);
         throw InputError("unknown parameter '" + std::string(key) + "' (known: " + known + ")");
     }
     return *f;
@@ -115,9 +173,9 @@ void set_param(TreeParams& params, std::string_view key, std::string_view text) 
     double value = 0.0;
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw InputError("parameter " + std::string(key) + ": '" + std::string(text) +
-                         "' is not " + (info.choices.empty() ? "a number" : "one of the choices") +
-                         " (" + range_text(info) + ")");
+        throw InputError("parameter " + std::string(key) + ": '" + std::string(text) + "' is not " +
+                         (info.choices.empty() ? "a number" : "one of the choices") + " (" +
+                         range_text(info) + ")");
     set_param(params, key, value);
 }
 

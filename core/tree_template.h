@@ -2,11 +2,10 @@
 // compiled in (tree/template_library.h), others read from TOML files (tree/template_file.h).
 #pragma once
 
-#include "core/tree_params.h"
-
 #include <glm/vec3.hpp>
-
 #include <string>
+
+#include "core/tree_params.h"
 
 namespace sylva {
 

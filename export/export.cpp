@@ -1,13 +1,13 @@
 #include "export/export.h"
 
+#include <algorithm>
+#include <cctype>
+#include <string>
+
 #include "core/errors.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
-
-#include <algorithm>
-#include <cctype>
-#include <string>
 
 namespace sylva {
 namespace {
@@ -30,7 +30,8 @@ const ExportFormat& resolve(const std::filesystem::path& path, const ExportForma
     if (format) return *format;
     if (const ExportFormat* by_extension = format_from_extension(path)) return *by_extension;
     std::string known;
-    for (const ExportFormat* f : kFormats) known += (known.empty() ? "" : ", ") + std::string(f->extension);
+    for (const ExportFormat* f : kFormats)
+        known += (known.empty() ? "" : ", ") + std::string(f->extension);
     throw InputError("cannot tell the format of '" + path.string() + "' from its extension '" +
                      path.extension().string() + "': use " + known);
 }
@@ -49,7 +50,9 @@ std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& p
     return names;
 }
 
-std::span<const ExportFormat* const> export_formats() { return kFormats; }
+std::span<const ExportFormat* const> export_formats() {
+    return kFormats;
+}
 
 const ExportFormat* format_from_extension(const std::filesystem::path& path) {
     const std::string ext = lower(path.extension().string());

@@ -3,12 +3,12 @@
 // export/ that defines an ExportFormat, and one line in the table in export.cpp.
 #pragma once
 
-#include "export/export_options.h"
-
 #include <filesystem>
 #include <span>
 #include <string_view>
 #include <vector>
+
+#include "export/export_options.h"
 
 namespace sylva {
 

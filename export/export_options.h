@@ -3,12 +3,12 @@
 // Y is up and units are meters in all of them.
 #pragma once
 
-#include "export/named_mesh.h"
-
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "export/named_mesh.h"
 
 namespace sylva {
 

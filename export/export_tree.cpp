@@ -44,8 +44,8 @@ std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& fin
     return levels;
 }
 
-std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
-                                              const Tree& tree, const FinishedTree& finished,
+std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
+                                              const FinishedTree& finished,
                                               const PartColors& colors,
                                               const ExportOptions& options,
                                               const ExportFormat* format) {

@@ -4,12 +4,12 @@
 // written in the format the path's extension (or the caller) names.
 #pragma once
 
-#include "export/export.h"
-#include "tree/lowpoly_tree.h"
-
 #include <filesystem>
 #include <optional>
 #include <vector>
+
+#include "export/export.h"
+#include "tree/lowpoly_tree.h"
 
 namespace sylva {
 
@@ -57,8 +57,8 @@ std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& fin
 // Writes the finished tree to `path` (format: given, or from the extension). Returns every
 // file written. Throws InputError for an unknown extension, IoError when a file cannot be
 // written.
-std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
-                                              const Tree& tree, const FinishedTree& finished,
+std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
+                                              const FinishedTree& finished,
                                               const PartColors& colors,
                                               const ExportOptions& options = {},
                                               const ExportFormat* format = nullptr);

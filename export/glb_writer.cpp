@@ -224,8 +224,10 @@ namespace {
 std::vector<std::filesystem::path> write_glb_file(const std::filesystem::path& path,
                                                   const std::vector<ModelParts>& levels,
                                                   const ExportOptions& options) {
-    if (levels.size() == 1) write_glb(path, levels[0], options);
-    else write_glb_lods(path, levels, options);
+    if (levels.size() == 1)
+        write_glb(path, levels[0], options);
+    else
+        write_glb_lods(path, levels, options);
     return {path};
 }
 

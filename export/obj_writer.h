@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/mesh.h"
 #include "export/export_options.h"
 #include "export/named_mesh.h"
-#include "core/mesh.h"
 
 namespace sylva {
 

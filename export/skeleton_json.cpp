@@ -1,14 +1,16 @@
 #include "export/skeleton_json.h"
 
+#include <nlohmann/json.hpp>
+
 #include "core/atomic_file.h"
 #include "tree/pipeline.h"
-
-#include <nlohmann/json.hpp>
 
 namespace sylva {
 namespace {
 
-nlohmann::json point(const glm::vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); }
+nlohmann::json point(const glm::vec3& p) {
+    return nlohmann::json::array({p.x, p.y, p.z});
+}
 
 }  // namespace
 
@@ -19,14 +21,21 @@ std::string skeleton_json(const Skeleton& skeleton, const TreeParams& params) {
     nlohmann::json& p = doc["params"];
     for (const ParamInfo& info : param_infos()) {
         double value = *get_param(params, info.key);
-        if (info.integer) p[std::string(info.key)] = static_cast<long long>(value);
-        else p[std::string(info.key)] = value;
+        if (info.integer)
+            p[std::string(info.key)] = static_cast<long long>(value);
+        else
+            p[std::string(info.key)] = value;
     }
     p["seed"] = params.seed;
     nlohmann::json& segments = doc["segments"] = nlohmann::json::array();
     for (const Segment& s : skeleton.segments) {
-        segments.push_back({{"a", point(s.a)}, {"b", point(s.b)}, {"ra", s.ra}, {"rb", s.rb},
-                            {"parent", s.parent}, {"depth", s.depth}, {"color", s.color}});
+        segments.push_back({{"a", point(s.a)},
+                            {"b", point(s.b)},
+                            {"ra", s.ra},
+                            {"rb", s.rb},
+                            {"parent", s.parent},
+                            {"depth", s.depth},
+                            {"color", s.color}});
     }
     doc["tips"] = tips(skeleton);
     nlohmann::json& spheres = doc["crown_spheres"] = nlohmann::json::array();

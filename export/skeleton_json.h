@@ -2,11 +2,11 @@
 // and for checking. Positions and radii are exactly those the SDF stage uses.
 #pragma once
 
-#include "core/tree_params.h"
-#include "core/skeleton.h"
-
 #include <filesystem>
 #include <string>
+
+#include "core/skeleton.h"
+#include "core/tree_params.h"
 
 namespace sylva {
 

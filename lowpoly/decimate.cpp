@@ -1,7 +1,5 @@
 #include "lowpoly/decimate.h"
 
-#include "core/errors.h"
-
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/BaseDecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
@@ -12,6 +10,7 @@
 #include <glm/common.hpp>
 #include <limits>
 
+#include "core/errors.h"
 #include "lowpoly/handle_cutting.h"
 #include "marching/mesh_checks.h"
 
@@ -395,8 +394,8 @@ void build(std::span<const Mesh* const> parts, OmMesh& om, OpenMesh::VPropHandle
             auto fh = om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
             if (!fh.is_valid())
                 throw InputError("decimate: part " + std::to_string(k) +
-                                            " has a triangle OpenMesh cannot add (complex "
-                                            "edge or vertex)");
+                                 " has a triangle OpenMesh cannot add (complex "
+                                 "edge or vertex)");
         }
     }
 }
@@ -517,7 +516,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         const MeshTopology topology = check_topology(*parts[k]);
         if (!topology.is_closed_manifold())
             throw InputError("decimate: part " + std::to_string(k) +
-                                        " is not a closed 2-manifold (" + describe(topology) + ")");
+                             " is not a closed 2-manifold (" + describe(topology) + ")");
     }
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
     const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);

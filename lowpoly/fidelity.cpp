@@ -1,11 +1,10 @@
 #include "lowpoly/fidelity.h"
 
-#include "core/errors.h"
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
 
@@ -24,8 +23,7 @@ Fidelity measure_fidelity(const Mesh& reduced, const Mesh& reference,
         }
         height = static_cast<double>(hi) - lo;
     }
-    if (!(height > 0.0))
-        throw InputError("measure_fidelity: the height to compare against is 0");
+    if (!(height > 0.0)) throw InputError("measure_fidelity: the height to compare against is 0");
 
     const TriangleBvh bvh(reference);
     const std::vector<glm::vec3> points = sample_surface(reduced, settings.samples, settings.seed);

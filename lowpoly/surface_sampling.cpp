@@ -1,10 +1,10 @@
 #include "lowpoly/surface_sampling.h"
 
-#include "core/random.h"
-
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+
+#include "core/random.h"
 
 namespace sylva {
 std::vector<glm::vec3> sample_surface(const Mesh& mesh, std::size_t count, std::uint64_t seed) {

@@ -1,13 +1,13 @@
 #include "marching/block_mesher.h"
 
-#include "marching/cube_table.h"
-
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <stdexcept>
+
+#include "marching/cube_table.h"
 
 namespace sylva::detail {
 namespace {
@@ -24,8 +24,14 @@ class BlockMesher {
   public:
     BlockMesher(const BlockGrid& g, const std::array<int, 3>& b, const float* values,
                 std::ptrdiff_t sy, std::ptrdiff_t sz, BlockScratch& scratch, ChunkMesh& out)
-        : g_(g), b_(b), range_(g.block_cells(b)), values_(values), sy_(sy), sz_(sz),
-          scratch_(scratch), out_(out) {
+        : g_(g),
+          b_(b),
+          range_(g.block_cells(b)),
+          values_(values),
+          sy_(sy),
+          sz_(sz),
+          scratch_(scratch),
+          out_(out) {
         for (int a = 0; a < 3; ++a) size_[a] = range_.hi[a] - range_.lo[a];
     }
 
@@ -38,15 +44,15 @@ class BlockMesher {
         for (int k = 0; k < size_[2]; ++k) {
             for (int j = 0; j < size_[1]; ++j) {
                 const std::uint64_t row_bits =
-                    mask >> (kSubBlocksPerSide * (j / kSubBlockCells +
-                                                  kSubBlocksPerSide * (k / kSubBlockCells)));
+                    mask >> (kSubBlocksPerSide *
+                             (j / kSubBlockCells + kSubBlocksPerSide * (k / kSubBlockCells)));
                 const float* row = values_ + j * sy_ + k * sz_;
                 for (int i = 0; i < size_[0]; ++i) {
                     if (!(row_bits >> (i / kSubBlockCells) & 1u)) continue;
                     const float* p = row + i;
-                    const std::array<float, 8> v{p[0],       p[1],           p[sy_],
-                                                 p[sy_ + 1], p[sz_],         p[sz_ + 1],
-                                                 p[sz_ + sy_], p[sz_ + sy_ + 1]};
+                    const std::array<float, 8> v{
+                        p[0],   p[1],       p[sy_],       p[sy_ + 1],
+                        p[sz_], p[sz_ + 1], p[sz_ + sy_], p[sz_ + sy_ + 1]};
                     const unsigned config = corner_config(v);
                     if (config == 0 || config == 255) continue;
                     emit(cube_case(config, v), i, j, k);
@@ -164,8 +170,9 @@ class BlockMesher {
 
 // The chunk holding `block`, or null: chunks are sorted and disjoint.
 const ChunkMesh* chunk_of(const std::vector<ChunkMesh>& chunks, std::uint64_t block) {
-    auto it = std::upper_bound(chunks.begin(), chunks.end(), block,
-                               [](std::uint64_t b, const ChunkMesh& c) { return b < c.first_block; });
+    auto it =
+        std::upper_bound(chunks.begin(), chunks.end(), block,
+                         [](std::uint64_t b, const ChunkMesh& c) { return b < c.first_block; });
     if (it == chunks.begin()) return nullptr;
     --it;
     return block < it->end_block ? &*it : nullptr;
@@ -178,8 +185,8 @@ BlockGrid::BlockGrid(const Grid& g) : grid(g) {
     for (int a = 0; a < 3; ++a) {
         cells[a] = g.nodes[a] - 1;
         blocks[a] = (cells[a] + kBlockCells - 1) / kBlockCells;
-        magnitude = std::max({magnitude, std::abs(g.origin[a]),
-                              std::abs(g.origin[a] + cells[a] * g.h)});
+        magnitude =
+            std::max({magnitude, std::abs(g.origin[a]), std::abs(g.origin[a] + cells[a] * g.h)});
     }
     // Sample points are rounded to float, and a float field's value carries rounding of the
     // order of a few ulps of the coordinates; 1e-5 of their magnitude (about 100 ulps)
@@ -292,8 +299,8 @@ Mesh assemble(std::vector<ChunkMesh>& chunks, MeshingRun& run) {
         for (const auto& t : chunk.triangles) {
             for (int m = 0; m < 3; ++m) {
                 const std::uint32_t ref = t[m];
-                (*out)[m] = ref & ChunkMesh::kForeign ? foreign[ref & ~ChunkMesh::kForeign]
-                                                      : base + ref;
+                (*out)[m] =
+                    ref & ChunkMesh::kForeign ? foreign[ref & ~ChunkMesh::kForeign] : base + ref;
             }
             ++out;
         }

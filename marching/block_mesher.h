@@ -8,16 +8,15 @@
 // empty block.
 #pragma once
 
-#include "marching/grid.h"
-#include "marching/meshing_run.h"
-
-#include <glm/vec3.hpp>
-
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <utility>
 #include <vector>
+
+#include "marching/grid.h"
+#include "marching/meshing_run.h"
 
 namespace sylva::detail {
 

@@ -15,7 +15,9 @@ namespace sylva::detail {
 // Edge e runs along axis e / 4 from its lower corner; its low two bits are the coordinates
 // of the other two axes, lower axis first, so edge 0 is the x edge at y = z = 0 and edge 11
 // the z edge at x = y = 1.
-constexpr int edge_axis(int e) { return e / 4; }
+constexpr int edge_axis(int e) {
+    return e / 4;
+}
 
 // The lower corner of edge e, as (x, y, z) offsets in {0, 1}.
 constexpr std::array<int, 3> edge_origin(int e) {
@@ -39,15 +41,16 @@ struct CubeCase {
 
 // A sample counts as inside only when strictly negative; NaN (the meshers' "no usable
 // value") is outside.
-inline bool inside(float value) { return value < 0.0f; }
+inline bool inside(float value) {
+    return value < 0.0f;
+}
 
 // Bit c set when corner c is inside. Inline: it runs once per cell and decides almost all
 // of them (0 and 255 hold no surface).
 inline unsigned corner_config(const std::array<float, 8>& v) {
     return unsigned(inside(v[0])) | unsigned(inside(v[1])) << 1 | unsigned(inside(v[2])) << 2 |
-           unsigned(inside(v[3])) << 3 | unsigned(inside(v[4])) << 4 |
-           unsigned(inside(v[5])) << 5 | unsigned(inside(v[6])) << 6 |
-           unsigned(inside(v[7])) << 7;
+           unsigned(inside(v[3])) << 3 | unsigned(inside(v[4])) << 4 | unsigned(inside(v[5])) << 5 |
+           unsigned(inside(v[6])) << 6 | unsigned(inside(v[7])) << 7;
 }
 
 // The surface of a cube whose corner samples are v[c], given config = corner_config(v),

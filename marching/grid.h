@@ -2,17 +2,16 @@
 // on the same lattice and their surfaces can be compared cell for cell.
 #pragma once
 
-#include "marching/marching_cubes.h"
-
+#include <array>
 #include <glm/vec3.hpp>
 
-#include <array>
+#include "marching/marching_cubes.h"
 
 namespace sylva {
 
 struct Grid {
-    glm::dvec3 origin{0.0};    // position of node (0, 0, 0)
-    double h = 0.0;            // cell size
+    glm::dvec3 origin{0.0};      // position of node (0, 0, 0)
+    double h = 0.0;              // cell size
     std::array<int, 3> nodes{};  // node count per axis (cells + 1)
 
     glm::dvec3 node(int i, int j, int k) const { return origin + glm::dvec3(i, j, k) * h; }

@@ -3,15 +3,15 @@
 // and stitching shared with the sparse mesher in block_mesher.cpp.
 #include "marching/marching_cubes.h"
 
-#include "marching/block_mesher.h"
-#include "marching/grid.h"
-#include "marching/meshing_run.h"
-
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
 #include <cstring>
 #include <vector>
+
+#include "marching/block_mesher.h"
+#include "marching/grid.h"
+#include "marching/meshing_run.h"
 
 namespace sylva {
 namespace {
@@ -46,7 +46,8 @@ Mesh mesh_dense(const BatchField& field, const Box& box, const MarchingCubesSett
             const int z0 = bz * kBlockCells;
             const int layers = std::min(kBlockCells, g.cells[2] - z0) + 1;
             const int first = bz == 0 ? 0 : 1;
-            if (bz > 0) std::memcpy(slab.data(), slab.data() + kBlockCells * layer, layer * sizeof(float));
+            if (bz > 0)
+                std::memcpy(slab.data(), slab.data() + kBlockCells * layer, layer * sizeof(float));
 
             // Rows (layer, y) are contiguous in the slab, so a run of them is one batch.
             const std::size_t row_begin = std::size_t(first) * ny;
@@ -101,11 +102,13 @@ Mesh mesh_dense(const BatchField& field, const Box& box, const MarchingCubesSett
 
 }  // namespace
 
-Mesh marching_cubes(const BatchField& field, const Box& box, const MarchingCubesSettings& settings) {
+Mesh marching_cubes(const BatchField& field, const Box& box,
+                    const MarchingCubesSettings& settings) {
     return mesh_dense(field, box, settings, false);
 }
 
-Mesh marching_cubes(const ScalarField& field, const Box& box, const MarchingCubesSettings& settings) {
+Mesh marching_cubes(const ScalarField& field, const Box& box,
+                    const MarchingCubesSettings& settings) {
     const BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
         for (std::size_t i = 0; i < points.size(); ++i) values[i] = field(points[i]);
     };

@@ -6,14 +6,14 @@
 // welded by global edge id; a sample counts as inside only when strictly negative.
 #pragma once
 
-#include "core/box.h"
-#include "core/cancel.h"
-#include "core/mesh.h"
-
 #include <atomic>
 #include <cstddef>
 #include <functional>
 #include <span>
+
+#include "core/box.h"
+#include "core/cancel.h"
+#include "core/mesh.h"
 
 namespace sylva {
 
@@ -38,9 +38,9 @@ enum class Mesher {
 // Counters a benchmark or a status bar can show. Both meshers cut the grid into blocks of
 // 8 x 8 x 8 cells (smaller at the far ends of the axes).
 struct MeshingStats {
-    std::size_t evaluations = 0;     // field samples taken, points in all batches
-    std::size_t blocks_total = 0;    // blocks in the grid
-    std::size_t blocks_meshed = 0;   // blocks whose cells were meshed (Dense: all of them)
+    std::size_t evaluations = 0;    // field samples taken, points in all batches
+    std::size_t blocks_total = 0;   // blocks in the grid
+    std::size_t blocks_meshed = 0;  // blocks whose cells were meshed (Dense: all of them)
 };
 
 struct MarchingCubesSettings {
@@ -91,7 +91,8 @@ struct MarchingCubesSettings {
 //
 // Throws std::invalid_argument when resolution < 1, padding_cells < 0, or the box is empty
 // (no positive side) or not finite; std::length_error past 2^32 - 1 vertices.
-Mesh marching_cubes(const ScalarField& field, const Box& box, const MarchingCubesSettings& settings);
+Mesh marching_cubes(const ScalarField& field, const Box& box,
+                    const MarchingCubesSettings& settings);
 Mesh marching_cubes(const BatchField& field, const Box& box, const MarchingCubesSettings& settings);
 
 // The same grid, vertices and triangles as marching_cubes(), but a block of cells is only

@@ -2,18 +2,18 @@
 // oriented; its area and enclosed volume. Used by tests, the CLI summary and benchmarks.
 #pragma once
 
-#include "core/mesh.h"
-
 #include <cstddef>
 #include <string>
+
+#include "core/mesh.h"
 
 namespace sylva {
 
 struct MeshTopology {
-    std::size_t boundary_edges = 0;      // undirected edges used by exactly one triangle
-    std::size_t non_manifold_edges = 0;  // undirected edges used by three or more triangles
-    std::size_t misoriented_edges = 0;   // edges used twice in the same direction
-    std::size_t degenerate_triangles = 0;  // repeated vertex index or zero area
+    std::size_t boundary_edges = 0;         // undirected edges used by exactly one triangle
+    std::size_t non_manifold_edges = 0;     // undirected edges used by three or more triangles
+    std::size_t misoriented_edges = 0;      // edges used twice in the same direction
+    std::size_t degenerate_triangles = 0;   // repeated vertex index or zero area
     std::size_t non_manifold_vertices = 0;  // triangles around a vertex form more than one fan
 
     // Closed 2-manifold with consistent orientation and no degenerate triangle.

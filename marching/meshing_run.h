@@ -3,8 +3,6 @@
 // honour MarchingCubesSettings the same way.
 #pragma once
 
-#include "marching/marching_cubes.h"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -13,6 +11,8 @@
 #include <atomic>
 #include <cstddef>
 #include <mutex>
+
+#include "marching/marching_cubes.h"
 
 namespace sylva::detail {
 

@@ -10,12 +10,6 @@
 // nodes on its upper faces from their owners. So a node is evaluated once (unless its owner
 // was skipped as empty: then each block that needs it evaluates it), and no block waits
 // for another within a phase.
-#include "marching/marching_cubes.h"
-
-#include "marching/block_mesher.h"
-#include "marching/grid.h"
-#include "marching/meshing_run.h"
-
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_sort.h>
 
@@ -25,6 +19,11 @@
 #include <glm/geometric.hpp>
 #include <span>
 #include <vector>
+
+#include "marching/block_mesher.h"
+#include "marching/grid.h"
+#include "marching/marching_cubes.h"
+#include "marching/meshing_run.h"
 
 namespace sylva {
 namespace {
@@ -134,9 +133,9 @@ struct SparseBlocks {
             if (b[a] < 0 || b[a] >= g.blocks[a]) return kNone;
         }
         const std::uint64_t id = g.block_id(b);
-        const auto it = std::lower_bound(
-            blocks.begin(), blocks.end(), id,
-            [](const std::pair<std::uint64_t, Candidate>& c, std::uint64_t v) { return c.first < v; });
+        const auto it = std::lower_bound(blocks.begin(), blocks.end(), id,
+                                         [](const std::pair<std::uint64_t, Candidate>& c,
+                                            std::uint64_t v) { return c.first < v; });
         return it != blocks.end() && it->first == id ? std::size_t(it - blocks.begin()) : kNone;
     }
 };
@@ -149,7 +148,8 @@ void for_masked_nodes(const std::array<int, 3>& size, std::uint64_t mask,
                       const std::array<int, 3>& only, F&& f) {
     for (int b = 0; b < 64; ++b) {
         if (!(mask >> b & 1u)) continue;
-        const std::array<int, 3> cube{b % kSubBlocksPerSide, b / kSubBlocksPerSide % kSubBlocksPerSide,
+        const std::array<int, 3> cube{b % kSubBlocksPerSide,
+                                      b / kSubBlocksPerSide % kSubBlocksPerSide,
                                       b / (kSubBlocksPerSide * kSubBlocksPerSide)};
         std::array<int, 3> lo{}, hi{};
         bool empty = false;
@@ -193,8 +193,8 @@ std::array<int, 3> step(const std::array<int, 3>& b, unsigned axes, int sign) {
 
 // The candidates one step up (sign +1) or down (-1) along each set of axes (index = axis
 // bits; entry 0 is block i itself), looked up once per block rather than once per node.
-std::array<std::size_t, 8> neighbours(const BlockGrid& g, const SparseBlocks& sb,
-                                      std::size_t i, int sign) {
+std::array<std::size_t, 8> neighbours(const BlockGrid& g, const SparseBlocks& sb, std::size_t i,
+                                      int sign) {
     const std::array<int, 3> b = g.block_coords(sb.blocks[i].first);
     std::array<std::size_t, 8> out{};
     out[0] = i;
@@ -318,9 +318,9 @@ void fetch_foreign_nodes(const BlockGrid& g, SparseBlocks& sb, std::size_t i) {
         if (axes == 0) return;
         const std::size_t owner = above[axes];
         if (owner == SparseBlocks::kNone) return;  // evaluated here in phase 3
-        const std::size_t there = local_node(x - int(axes & 1u) * kBlockCells,
-                                             y - int(axes >> 1 & 1u) * kBlockCells,
-                                             z - int(axes >> 2 & 1u) * kBlockCells);
+        const std::size_t there =
+            local_node(x - int(axes & 1u) * kBlockCells, y - int(axes >> 1 & 1u) * kBlockCells,
+                       z - int(axes >> 2 & 1u) * kBlockCells);
         assert(sb.marks_of(owner)[there] == kKnown);
         values[local_node(x, y, z)] = sb.values_of(owner)[there];
     });
@@ -339,7 +339,8 @@ std::vector<std::pair<std::uint64_t, Candidate>> candidate_blocks(
         SparseScratch& s = scratches.local();
         // The whole row as a parent with no value: every coarse range in it is evaluated.
         Candidate whole;
-        whole.cells.lo = {0, int(row % coarse_y) * kCoarseCells, int(row / coarse_y) * kCoarseCells};
+        whole.cells.lo = {0, int(row % coarse_y) * kCoarseCells,
+                          int(row / coarse_y) * kCoarseCells};
         whole.cells.hi = {g.cells[0], std::min(whole.cells.lo[1] + kCoarseCells, g.cells[1]),
                           std::min(whole.cells.lo[2] + kCoarseCells, g.cells[2])};
         whole.value = std::nanf("");
@@ -403,9 +404,9 @@ Mesh sparse_marching_cubes(const BatchField& field, const Box& box,
             chunk.end_block = sb.blocks[i].first + 1;
             if (sb.masks[i] == 0) return;
             fetch_foreign_nodes(g, sb, i);
-            detail::mesh_block(g, g.block_coords(sb.blocks[i].first), sb.values_of(i),
-                               kBlockNodes, std::ptrdiff_t(kBlockNodes) * kBlockNodes,
-                               sb.masks[i], scratches.local().block, chunk);
+            detail::mesh_block(g, g.block_coords(sb.blocks[i].first), sb.values_of(i), kBlockNodes,
+                               std::ptrdiff_t(kBlockNodes) * kBlockNodes, sb.masks[i],
+                               scratches.local().block, chunk);
         });
         meshed = std::size_t(std::count_if(sb.masks.begin(), sb.masks.end(),
                                            [](std::uint64_t m) { return m != 0; }));

@@ -1,11 +1,10 @@
 #include "sdf/bin_grid.h"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
-
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 namespace sylva {
@@ -26,8 +25,10 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     dims_ = glm::max(glm::ivec3(glm::ceil(extent / bin_size_)), glm::ivec3(1));
 
     auto range = [&](const Aabb& b, glm::ivec3& lo, glm::ivec3& hi) {
-        lo = glm::clamp(glm::ivec3(glm::floor((b.min - origin_) / bin_size_)), glm::ivec3(0), dims_ - 1);
-        hi = glm::clamp(glm::ivec3(glm::floor((b.max - origin_) / bin_size_)), glm::ivec3(0), dims_ - 1);
+        lo = glm::clamp(glm::ivec3(glm::floor((b.min - origin_) / bin_size_)), glm::ivec3(0),
+                        dims_ - 1);
+        hi = glm::clamp(glm::ivec3(glm::floor((b.max - origin_) / bin_size_)), glm::ivec3(0),
+                        dims_ - 1);
     };
     auto index = [&](int x, int y, int z) {
         return static_cast<size_t>((z * dims_.y + y) * dims_.x + x);
@@ -79,7 +80,8 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dx = -1; dx <= 1; ++dx) {
                         int nx = x + dx, ny = y + dy, nz = z + dz;
-                        if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_.x || ny >= dims_.y || nz >= dims_.z)
+                        if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_.x || ny >= dims_.y ||
+                            nz >= dims_.z)
                             continue;
                         size_t n = index(nx, ny, nz);
                         if (bins_to_nearest_[n] <= level) continue;
@@ -109,9 +111,9 @@ std::span<const std::uint32_t> BinGrid::candidates(const glm::vec3& p) const {
     if (glm::any(glm::lessThan(cell, glm::vec3(0.0f))) ||
         glm::any(glm::greaterThanEqual(cell, glm::vec3(dims_))))
         return {};
-    auto b = static_cast<size_t>(
-        (static_cast<int>(cell.z) * dims_.y + static_cast<int>(cell.y)) * dims_.x +
-        static_cast<int>(cell.x));
+    auto b = static_cast<size_t>((static_cast<int>(cell.z) * dims_.y + static_cast<int>(cell.y)) *
+                                     dims_.x +
+                                 static_cast<int>(cell.x));
     return {bin_items_.data() + bin_start_[b], bin_start_[b + 1] - bin_start_[b]};
 }
 

@@ -3,11 +3,10 @@
 // The culling structure behind the fast fields (cone_field.h, sphere_field.h).
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <glm/vec3.hpp>
 #include <span>
 #include <vector>
 
@@ -19,7 +18,7 @@ struct Aabb {
 };
 
 class BinGrid {
-public:
+  public:
     BinGrid() = default;
     // About `bins_along_longest` bins along the longest side of all boxes together, but no
     // bin smaller than `min_bin_size` (smaller bins would repeat boxes without culling more).
@@ -38,7 +37,7 @@ public:
     // how far the nearest such bin is at least (from a distance transform over the bins).
     float empty_distance(const glm::vec3& p) const;
 
-private:
+  private:
     glm::vec3 origin_{0.0f};
     float bin_size_ = 1.0f;
     glm::ivec3 dims_{0};

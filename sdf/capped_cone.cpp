@@ -1,9 +1,8 @@
 #include "sdf/capped_cone.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 
 namespace sylva {

@@ -1,10 +1,9 @@
 #include "sdf/cone_field.h"
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace sylva {
 
@@ -19,15 +18,17 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     boxes.reserve(cones_.size());
     bounds_.reserve(cones_.size());
     for (const CappedCone& c : cones_) {
-        bounds_.push_back({0.5f * (c.a + c.b), 0.5f * glm::length(c.b - c.a) + std::max(c.ra, c.rb)});
+        bounds_.push_back(
+            {0.5f * (c.a + c.b), 0.5f * glm::length(c.b - c.a) + std::max(c.ra, c.rb)});
         float r = std::max(c.ra, c.rb) + margin_;
         boxes.push_back({glm::min(c.a, c.b) - glm::vec3(r), glm::max(c.a, c.b) + glm::vec3(r)});
     }
     // A bin lists a cone only if some point of the bin can be within the inflation of it.
     const float inflation = margin_ + joint_blend_;
-    bins_ = BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
-        return distance(cones_[i], centre) < inflation + radius;
-    });
+    bins_ =
+        BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
+            return distance(cones_[i], centre) < inflation + radius;
+        });
 }
 
 float ConeField::operator()(const glm::vec3& p) const {

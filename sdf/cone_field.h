@@ -9,10 +9,10 @@
 // without visiting a single cone.
 #pragma once
 
+#include <vector>
+
 #include "sdf/bin_grid.h"
 #include "sdf/capped_cone.h"
-
-#include <vector>
 
 namespace sylva {
 
@@ -21,7 +21,7 @@ namespace sylva {
 float polynomial_smooth_min(float a, float b, float k);
 
 class ConeField {
-public:
+  public:
     // joint_blend > 0 rounds the joints with polynomial_smooth_min of that radius.
     ConeField(std::vector<CappedCone> cones, float margin, float joint_blend = 0.0f);
 
@@ -29,7 +29,7 @@ public:
 
     const std::vector<CappedCone>& cones() const { return cones_; }
 
-private:
+  private:
     // A bounding sphere per cone (centre, radius): a cheap lower bound on its distance
     // lets a sample skip the exact evaluation of cones that cannot change the result.
     struct Bound {

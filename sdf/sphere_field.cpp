@@ -1,9 +1,8 @@
 #include "sdf/sphere_field.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace sylva {
 
@@ -39,9 +38,10 @@ SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, Sph
         glm::vec3 r(b.radius + margin_);
         boxes.push_back({b.center - r, b.center + r});
     }
-    bins_ = BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
-        return distance(balls_[i], centre) < margin_ + radius;
-    });
+    bins_ =
+        BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
+            return distance(balls_[i], centre) < margin_ + radius;
+        });
 }
 
 float SphereField::operator()(const glm::vec3& p) const {
@@ -60,8 +60,10 @@ float SphereField::operator()(const glm::vec3& p) const {
             glm::dot(offset, offset) >= reach * reach)
             continue;
         float next = std::sqrt(glm::dot(offset, offset)) - ball.radius;
-        if (kind_ == SphereBlend::PaskoSavchenko) d = pasko_savchenko_union(d, next, blend_);
-        else d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
+        if (kind_ == SphereBlend::PaskoSavchenko)
+            d = pasko_savchenko_union(d, next, blend_);
+        else
+            d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
     }
     return std::min(d, margin_);
 }

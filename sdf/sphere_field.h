@@ -10,11 +10,10 @@
 // farther away, still 1-Lipschitz, and spheres beyond the margin cannot matter.
 #pragma once
 
-#include "sdf/bin_grid.h"
-
 #include <glm/vec3.hpp>
-
 #include <vector>
+
+#include "sdf/bin_grid.h"
 
 namespace sylva {
 
@@ -42,7 +41,7 @@ float root_smooth_min(float a, float b, float k);
 float local_root_smooth_min(float a, float b, float k);
 
 class SphereField {
-public:
+  public:
     // blend = k of root_smooth_min (seed 001: P_Cfus), or alpha of the Pasko-Savchenko
     // union; blend 0 with RootSmoothMin gives the hard union.
     SphereField(std::vector<Ball> balls, float blend, float margin,
@@ -59,7 +58,7 @@ public:
     // True when the field is 1-Lipschitz (below margin - 4 blend), so space may be skipped.
     bool is_distance_bound() const { return kind_ == SphereBlend::RootSmoothMin; }
 
-private:
+  private:
     std::vector<Ball> balls_;
     float blend_;
     float margin_;

@@ -13,7 +13,9 @@ const GrowthMethod* const kMethods[] = {
 
 }  // namespace
 
-std::span<const GrowthMethod* const> growth_methods() { return kMethods; }
+std::span<const GrowthMethod* const> growth_methods() {
+    return kMethods;
+}
 
 const GrowthMethod* find_growth_method(std::string_view name) {
     for (const GrowthMethod* method : kMethods)
@@ -25,7 +27,8 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     const GrowthMethod* method = find_growth_method(tree.growth);
     if (!method) {
         std::string known;
-        for (const GrowthMethod* m : kMethods) known += (known.empty() ? "" : ", ") + std::string(m->name);
+        for (const GrowthMethod* m : kMethods)
+            known += (known.empty() ? "" : ", ") + std::string(m->name);
         throw InputError("unknown growth method '" + tree.growth + "' (known: " + known + ")",
                          {tree.source});
     }

@@ -3,10 +3,10 @@
 // the table in growth.cpp, and its library linked to sylva_tree.
 #pragma once
 
-#include "core/growth.h"
-
 #include <span>
 #include <string_view>
+
+#include "core/growth.h"
 
 namespace sylva {
 

@@ -1,12 +1,11 @@
 #include "tree/leaves.h"
 
-#include "core/random.h"
-
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
-
-#include <cmath>
 #include <numbers>
+
+#include "core/random.h"
 
 namespace sylva {
 
@@ -15,20 +14,24 @@ const std::vector<glm::vec2>& leaf_outline(LeafShape shape) {
     static const std::vector<glm::vec2> needle = {{0, 0}, {0.5f, -0.05f}, {1, 0}, {0.5f, 0.05f}};
     // Three rounded lobes a side.
     static const std::vector<glm::vec2> oak = {
-        {0, 0},          {0.15f, -0.12f}, {0.25f, -0.08f}, {0.38f, -0.22f}, {0.5f, -0.12f},
-        {0.62f, -0.24f}, {0.75f, -0.1f},  {0.88f, -0.14f}, {1, 0},          {0.88f, 0.14f},
-        {0.75f, 0.1f},   {0.62f, 0.24f},  {0.5f, 0.12f},   {0.38f, 0.22f},  {0.25f, 0.08f},
-        {0.15f, 0.12f}};
+        {0, 0},         {0.15f, -0.12f}, {0.25f, -0.08f}, {0.38f, -0.22f},
+        {0.5f, -0.12f}, {0.62f, -0.24f}, {0.75f, -0.1f},  {0.88f, -0.14f},
+        {1, 0},         {0.88f, 0.14f},  {0.75f, 0.1f},   {0.62f, 0.24f},
+        {0.5f, 0.12f},  {0.38f, 0.22f},  {0.25f, 0.08f},  {0.15f, 0.12f}};
     // A long blade cut into leaflets.
     static const std::vector<glm::vec2> frond = {
-        {0, 0},          {0.2f, -0.16f}, {0.3f, -0.04f}, {0.45f, -0.18f}, {0.55f, -0.04f},
-        {0.7f, -0.15f},  {0.78f, -0.03f}, {1, 0},        {0.78f, 0.03f},  {0.7f, 0.15f},
-        {0.55f, 0.04f},  {0.45f, 0.18f}, {0.3f, 0.04f},  {0.2f, 0.16f}};
+        {0, 0},         {0.2f, -0.16f},  {0.3f, -0.04f}, {0.45f, -0.18f}, {0.55f, -0.04f},
+        {0.7f, -0.15f}, {0.78f, -0.03f}, {1, 0},         {0.78f, 0.03f},  {0.7f, 0.15f},
+        {0.55f, 0.04f}, {0.45f, 0.18f},  {0.3f, 0.04f},  {0.2f, 0.16f}};
     switch (shape) {
-        case LeafShape::Oak: return oak;
-        case LeafShape::Needle: return needle;
-        case LeafShape::Frond: return frond;
-        case LeafShape::Round: break;
+        case LeafShape::Oak:
+            return oak;
+        case LeafShape::Needle:
+            return needle;
+        case LeafShape::Frond:
+            return frond;
+        case LeafShape::Round:
+            break;
     }
     return round;
 }
@@ -42,7 +45,8 @@ void add_leaf(Mesh& mesh, const std::vector<glm::vec2>& outline, const glm::vec3
     const bool simple = outline.size() == 4;  // the seed's quad: two triangles, no centre
     if (!simple) mesh.positions.push_back(base + along * (0.5f * length));
     const std::uint32_t ring = simple ? first : first + 1;
-    for (const glm::vec2& p : outline) mesh.positions.push_back(base + (along * p.x + across * p.y) * length);
+    for (const glm::vec2& p : outline)
+        mesh.positions.push_back(base + (along * p.x + across * p.y) * length);
     const auto n = static_cast<std::uint32_t>(outline.size());
     auto face = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         mesh.triangles.push_back({a, b, c});  // up

@@ -5,16 +5,15 @@
 // Leaves are open surfaces by design.
 #pragma once
 
-#include "core/tree_params.h"
+#include <cstdint>
+#include <functional>
+#include <glm/vec2.hpp>
+#include <vector>
+
 #include "core/box.h"
 #include "core/cancel.h"
 #include "core/mesh.h"
-
-#include <glm/vec2.hpp>
-
-#include <cstdint>
-#include <functional>
-#include <vector>
+#include "core/tree_params.h"
 
 namespace sylva {
 

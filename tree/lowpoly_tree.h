@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "tree/pipeline.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
+#include "tree/pipeline.h"
 
 namespace sylva {
 
@@ -47,7 +47,8 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings = {});
 
 // LOD0 gets `finest` triangles (trunk + crown), each further level half the one before.
-std::vector<std::size_t> lod_budgets(std::size_t finest = kDefaultTriangleBudget, std::size_t levels = 4);
+std::vector<std::size_t> lod_budgets(std::size_t finest = kDefaultTriangleBudget,
+                                     std::size_t levels = 4);
 
 // One reduction per budget, each from the full-resolution tree (not from the level
 // before, which would compound the error).

@@ -1,18 +1,17 @@
 #include "tree/pipeline.h"
 
+#include <algorithm>
+#include <chrono>
+#include <glm/common.hpp>
+#include <limits>
+
 #include "core/errors.h"
-#include "tree/leaves.h"
+#include "core/stopwatch.h"
 #include "marching/marching_cubes.h"
 #include "marching/vdb_mesher.h"
 #include "sdf/cone_field.h"
-#include "core/stopwatch.h"
 #include "tree/growth.h"
-
-#include <glm/common.hpp>
-
-#include <algorithm>
-#include <chrono>
-#include <limits>
+#include "tree/leaves.h"
 
 namespace sylva {
 namespace {
@@ -61,9 +60,12 @@ Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOp
             options.progress(progress_begin + (progress_end - progress_begin) * f);
         };
     switch (options.mesher) {
-        case Mesher::Dense: return marching_cubes(batch, box, settings);
-        case Mesher::Sparse: return sparse_marching_cubes(batch, box, settings);
-        case Mesher::Vdb: return vdb_mesh(batch, box, settings, {options.vdb_adaptivity});
+        case Mesher::Dense:
+            return marching_cubes(batch, box, settings);
+        case Mesher::Sparse:
+            return sparse_marching_cubes(batch, box, settings);
+        case Mesher::Vdb:
+            return vdb_mesh(batch, box, settings, {options.vdb_adaptivity});
     }
     return {};
 }
@@ -149,20 +151,21 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Stopwatch clock;
     TreeFields fields = tree_fields(out.skeleton, p);
     if (!fields.trunk)
-        throw InputError("the tree has no trunk: the derived word draws no segment with a "
-                         "width above zero (it needs F, and a width from branch_width or !)");
+        throw InputError(
+            "the tree has no trunk: the derived word draws no segment with a "
+            "width above zero (it needs F, and a width from branch_width or !)");
     const bool mesh_crown = fields.crown && p.crown_mesh != 0;
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
-    out.trunk = mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f,
-                           trunk_share);
+    out.trunk =
+        mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
     out.times.push_back({"trunk mesh", clock.lap_ms()});
     if (mesh_crown) {
         MeshOptions crown_options = options;
         // Skipping empty space needs a distance bound; the Pasko-Savchenko blend is not one.
         if (!fields.crown->is_distance_bound() && options.mesher != Mesher::Dense)
             crown_options.mesher = Mesher::Dense;
-        out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution,
-                               crown_options, trunk_share, 1.0f);
+        out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution, crown_options,
+                               trunk_share, 1.0f);
         out.times.push_back({"crown mesh", clock.lap_ms()});
     }
     if (fields.crown && p.leaf_density > 0.0) {

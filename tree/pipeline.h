@@ -2,22 +2,22 @@
 // crown fields -> meshes. Each stage lives in its own module; this file only wires them.
 #pragma once
 
-#include "core/tree_params.h"
-#include "marching/marching_cubes.h"
-#include "core/box.h"
-#include "core/mesh.h"
-#include "sdf/cone_field.h"
-#include "sdf/sphere_field.h"
-#include "core/growth.h"
-#include "core/skeleton.h"
-#include "core/tree_template.h"
-
 #include <atomic>
 #include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/box.h"
+#include "core/growth.h"
+#include "core/mesh.h"
+#include "core/skeleton.h"
+#include "core/tree_params.h"
+#include "core/tree_template.h"
+#include "marching/marching_cubes.h"
+#include "sdf/cone_field.h"
+#include "sdf/sphere_field.h"
 
 namespace sylva {
 
@@ -53,9 +53,9 @@ std::optional<Mesher> mesher_from_name(std::string_view name);
 // see (exposed for benchmarks and tests).
 struct TreeFields {
     Box trunk_box;
-    std::optional<ConeField> trunk;   // empty when no segment has a width
+    std::optional<ConeField> trunk;  // empty when no segment has a width
     Box crown_box;
-    std::optional<SphereField> crown; // empty without tips or with sphere_diameter 0
+    std::optional<SphereField> crown;  // empty without tips or with sphere_diameter 0
 };
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params);
 

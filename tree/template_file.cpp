@@ -1,13 +1,13 @@
 #include "tree/template_file.h"
 
-#include "core/atomic_file.h"
-#include "core/errors.h"
-#include "tree/growth.h"
-
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <sstream>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "tree/growth.h"
 
 namespace sylva {
 namespace {
@@ -22,7 +22,7 @@ constexpr Named kWidths[] = {{"explicit", int(WidthModel::Explicit)},
                              {"pipe", int(WidthModel::Pipe)}};
 
 class Reader {
-public:
+  public:
     explicit Reader(const std::string& source) : source_(source) {}
 
     [[noreturn]] void fail(const toml::node* node, const std::string& message) const {
@@ -51,7 +51,8 @@ public:
             if (n.name == text) return n.value;
             known += (known.empty() ? "" : ", ") + std::string(n.name);
         }
-        fail(table.get(key), "'" + std::string(key) + "' must be one of " + known + ", not '" + text + "'");
+        fail(table.get(key),
+             "'" + std::string(key) + "' must be one of " + known + ", not '" + text + "'");
     }
 
     void params(const toml::node* node, TreeParams& params) const {
@@ -67,9 +68,12 @@ public:
                 continue;
             }
             try {
-                if (value.is_string()) set_param(params, key.str(), *value.value<std::string_view>());
-                else if (value.is_number()) set_param(params, key.str(), *value.value<double>());
-                else throw InputError("parameter " + std::string(key.str()) + " must be a number");
+                if (value.is_string())
+                    set_param(params, key.str(), *value.value<std::string_view>());
+                else if (value.is_number())
+                    set_param(params, key.str(), *value.value<double>());
+                else
+                    throw InputError("parameter " + std::string(key.str()) + " must be a number");
             } catch (const InputError& e) {
                 fail(&value, std::string("[params] ") + e.reason());
             }
@@ -85,20 +89,23 @@ public:
                                 : key.str() == "crown"  ? &colors.crown
                                 : key.str() == "leaves" ? &colors.leaves
                                                         : nullptr;
-            if (!target) fail(&value, "[colors] unknown part '" + std::string(key.str()) + "' (trunk, crown, leaves)");
+            if (!target)
+                fail(&value, "[colors] unknown part '" + std::string(key.str()) +
+                                 "' (trunk, crown, leaves)");
             const toml::array* rgb = value.as_array();
             if (!rgb || rgb->size() != 3)
                 fail(&value, "[colors] " + std::string(key.str()) + " must be [r, g, b]");
             for (size_t i = 0; i < 3; ++i) {
                 std::optional<double> c = (*rgb)[i].value<double>();
                 if (!c || !(*c >= 0.0 && *c <= 1.0))
-                    fail(&value, "[colors] " + std::string(key.str()) + ": each component must be a number from 0 to 1");
+                    fail(&value, "[colors] " + std::string(key.str()) +
+                                     ": each component must be a number from 0 to 1");
                 (*target)[static_cast<int>(i)] = static_cast<float>(*c);
             }
         }
     }
 
-private:
+  private:
     const std::string& source_;
 };
 
@@ -114,8 +121,8 @@ int grammar_first_line(std::string_view text, const toml::node* grammar) {
     if (start == std::string_view::npos) return int(where.begin.line);
     std::string_view rest = text.substr(start + where.begin.column - 1);
     const bool multi_line = rest.starts_with("'''") || rest.starts_with("\"\"\"");
-    const bool newline_after = multi_line && (rest.substr(3).starts_with('\n') ||
-                                              rest.substr(3).starts_with("\r\n"));
+    const bool newline_after =
+        multi_line && (rest.substr(3).starts_with('\n') || rest.substr(3).starts_with("\r\n"));
     return int(where.begin.line) + (newline_after ? 1 : 0);
 }
 
@@ -131,11 +138,12 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
     }
     Reader read(source);
     for (const auto& [key, value] : doc) {
-        static constexpr std::string_view known[] = {"name",    "description", "growth", "turtle",
-                                                     "widths",  "grammar",     "params", "colors"};
+        static constexpr std::string_view known[] = {"name",   "description", "growth", "turtle",
+                                                     "widths", "grammar",     "params", "colors"};
         if (std::find(std::begin(known), std::end(known), key.str()) == std::end(known))
-            read.fail(&value, "unknown key '" + std::string(key.str()) +
-                                  "' (name, description, growth, turtle, widths, grammar, params, colors)");
+            read.fail(&value,
+                      "unknown key '" + std::string(key.str()) +
+                          "' (name, description, growth, turtle, widths, grammar, params, colors)");
     }
     TreeTemplate tree;
     tree.name = read.string(doc, "name", true);
@@ -148,7 +156,8 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
             std::string known;
             for (const GrowthMethod* m : growth_methods())
                 known += (known.empty() ? "" : ", ") + std::string(m->name);
-            read.fail(doc.get("growth"), "'growth' must be one of " + known + ", not '" + growth + "'");
+            read.fail(doc.get("growth"),
+                      "'growth' must be one of " + known + ", not '" + growth + "'");
         }
         tree.growth = growth;
     }
@@ -169,12 +178,17 @@ std::string template_file_text(const TreeTemplate& tree) {
     toml::table params;
     for (const ParamInfo& info : param_infos()) {
         double value = *get_param(tree.params, info.key);
-        if (!info.choices.empty()) params.insert(info.key, param_text(tree.params, info));
-        else if (info.integer) params.insert(info.key, static_cast<int64_t>(value));
-        else params.insert(info.key, value);
+        if (!info.choices.empty())
+            params.insert(info.key, param_text(tree.params, info));
+        else if (info.integer)
+            params.insert(info.key, static_cast<int64_t>(value));
+        else
+            params.insert(info.key, value);
     }
     params.insert("seed", static_cast<int64_t>(tree.params.seed));
-    auto rgb = [](const glm::vec3& c) { return toml::array{double(c.r), double(c.g), double(c.b)}; };
+    auto rgb = [](const glm::vec3& c) {
+        return toml::array{double(c.r), double(c.g), double(c.b)};
+    };
     toml::table colors{{"trunk", rgb(tree.colors.trunk)},
                        {"crown", rgb(tree.colors.crown)},
                        {"leaves", rgb(tree.colors.leaves)}};
@@ -196,7 +210,8 @@ std::string template_file_text(const TreeTemplate& tree) {
             if (c == '\\' || c == '"') escaped.push_back('\\');
             escaped.push_back(c);
         }
-        out << "grammar = \"\"\"\n" << escaped << (grammar.ends_with('\n') ? "" : "\n") << "\"\"\"\n";
+        out << "grammar = \"\"\"\n"
+            << escaped << (grammar.ends_with('\n') ? "" : "\n") << "\"\"\"\n";
     }
     out << "\n[params]\n" << params << "\n\n[colors]\n" << colors << "\n";
     return out.str();

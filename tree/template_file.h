@@ -17,11 +17,11 @@
 //   trunk = [0.36, 0.24, 0.15]
 #pragma once
 
-#include "core/tree_template.h"
-
 #include <filesystem>
 #include <string>
 #include <string_view>
+
+#include "core/tree_template.h"
 
 namespace sylva {
 

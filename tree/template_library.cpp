@@ -1,14 +1,14 @@
 #include "tree/template_library.h"
 
-#include "core/errors.h"
-#include "tree/template_file.h"
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "core/errors.h"
+#include "tree/template_file.h"
 
 namespace sylva {
 
@@ -45,7 +45,9 @@ const std::vector<const TreeTemplate*>& builtin_templates() {
     return all;
 }
 
-const TreeTemplate& default_template() { return *builtin_templates().front(); }
+const TreeTemplate& default_template() {
+    return *builtin_templates().front();
+}
 
 TreeTemplate load_template(const std::string& name_or_path) {
     if (name_or_path == "default") return default_template();
@@ -54,7 +56,8 @@ TreeTemplate load_template(const std::string& name_or_path) {
     std::error_code ec;
     if (!std::filesystem::exists(name_or_path, ec)) {
         std::string names;
-        for (const TreeTemplate* t : builtin_templates()) names += (names.empty() ? "" : ", ") + t->name;
+        for (const TreeTemplate* t : builtin_templates())
+            names += (names.empty() ? "" : ", ") + t->name;
         throw InputError("'" + name_or_path + "' is neither a built-in template (" + names +
                          ") nor an existing file");
     }

@@ -1,10 +1,10 @@
 // Where templates come from: the ones built into the binary, or a file on disk.
 #pragma once
 
-#include "core/tree_template.h"
-
 #include <string>
 #include <vector>
+
+#include "core/tree_template.h"
 
 namespace sylva {
 

@@ -1,16 +1,16 @@
 #include "turtle/derivation.h"
 
-#include "core/errors.h"
-
 #include <array>
 #include <string>
 #include <vector>
+
+#include "core/errors.h"
 
 namespace sylva {
 namespace {
 
 class Deriver {
-public:
+  public:
     Deriver(const LSystem& system, const DeriveSettings& settings)
         : system_(system), settings_(settings), random_(settings.seed) {
         for (size_t r = 0; r < system.rules.size(); ++r) {
@@ -33,8 +33,7 @@ public:
                 if (next.size() > settings_.max_modules)
                     throw GrammarError("derivation step " + std::to_string(step) +
                                        ": the word grew past " + std::to_string(next.size()) +
-                                       " modules (limit " +
-                                       std::to_string(settings_.max_modules) +
+                                       " modules (limit " + std::to_string(settings_.max_modules) +
                                        "); lower the number of steps or raise the limit");
             }
             std::swap(word, next);
@@ -42,7 +41,7 @@ public:
         return word;
     }
 
-private:
+  private:
     void rewrite(const Word& word, size_t i, Word& out) {
         const char symbol = word.symbol(i);
         const auto& candidates = by_symbol_[static_cast<unsigned char>(symbol)];
@@ -116,9 +115,12 @@ private:
             for (;;) {
                 if (pos < 0) return false;
                 char c = word.symbol(static_cast<size_t>(pos));
-                if (c == ']') pos = static_cast<long>(bracket_match_[static_cast<size_t>(pos)]) - 1;
-                else if (c == '[' || ignored(c)) --pos;
-                else break;
+                if (c == ']')
+                    pos = static_cast<long>(bracket_match_[static_cast<size_t>(pos)]) - 1;
+                else if (c == '[' || ignored(c))
+                    --pos;
+                else
+                    break;
             }
             auto p = static_cast<size_t>(pos);
             if (word.symbol(p) != left[k].symbol ||
@@ -141,10 +143,14 @@ private:
             for (;;) {
                 if (pos >= word.size()) return false;
                 char c = word.symbol(pos);
-                if (c == '[') pos = bracket_match_[pos] + 1;
-                else if (c == ']') return false;
-                else if (ignored(c)) ++pos;
-                else break;
+                if (c == '[')
+                    pos = bracket_match_[pos] + 1;
+                else if (c == ']')
+                    return false;
+                else if (ignored(c))
+                    ++pos;
+                else
+                    break;
             }
             if (word.symbol(pos) != pattern.symbol ||
                 word.args(pos).size() != static_cast<size_t>(pattern.arity))

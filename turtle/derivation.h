@@ -2,13 +2,13 @@
 // order, arity matching, ABOP contexts, seeded stochastic choice, and a cap on word size.
 #pragma once
 
-#include "core/cancel.h"
-#include "turtle/lsystem.h"
-#include "turtle/word.h"
-
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+
+#include "core/cancel.h"
+#include "turtle/lsystem.h"
+#include "turtle/word.h"
 
 namespace sylva {
 
@@ -19,8 +19,6 @@ struct DeriveSettings {
     std::size_t max_modules = 4'000'000;
     CancelFlag cancel = nullptr;  // checked between steps; throws Cancelled
 };
-
-
 
 // The axiom as a word (its expressions evaluated; rand() draws from `random`).
 Word axiom_word(const LSystem& system, Random& random);

@@ -1,7 +1,5 @@
 #include "turtle/expression.h"
 
-#include "core/errors.h"
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -9,11 +7,13 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "core/errors.h"
+
 namespace sylva {
 
 // Recursive descent over the grammar in expression.h, emitting postfix code.
 class ExpressionParser {
-public:
+  public:
     ExpressionParser(std::string_view text, const Expression::NameLookup& lookup, int offset)
         : text_(text), lookup_(lookup), offset_(offset) {}
 
@@ -29,7 +29,7 @@ public:
 
     static constexpr int kMaxStack = 64;  // Expression::evaluate's fixed stack
 
-private:
+  private:
     using Op = Expression::Op;
 
     int max_stack_depth() const {
@@ -69,9 +69,13 @@ private:
     void parse_comparison() {
         parse_sum();
         // Two-character operators first so "<=" is not read as "<".
-        static constexpr std::array<std::pair<std::string_view, Op>, 6> ops{{
-            {"<=", Op::LessEqual}, {">=", Op::GreaterEqual}, {"==", Op::Equal},
-            {"!=", Op::NotEqual}, {"<", Op::Less}, {">", Op::Greater}}};
+        static constexpr std::array<std::pair<std::string_view, Op>, 6> ops{
+            {{"<=", Op::LessEqual},
+             {">=", Op::GreaterEqual},
+             {"==", Op::Equal},
+             {"!=", Op::NotEqual},
+             {"<", Op::Less},
+             {">", Op::Greater}}};
         for (auto [token, op] : ops) {
             if (accept(token)) {
                 parse_sum();
@@ -83,17 +87,23 @@ private:
     void parse_sum() {
         parse_product();
         for (;;) {
-            if (accept("+")) parse_product(), emit(Op::Add);
-            else if (accept("-")) parse_product(), emit(Op::Subtract);
-            else return;
+            if (accept("+"))
+                parse_product(), emit(Op::Add);
+            else if (accept("-"))
+                parse_product(), emit(Op::Subtract);
+            else
+                return;
         }
     }
     void parse_product() {
         parse_unary();
         for (;;) {
-            if (accept("*")) parse_unary(), emit(Op::Multiply);
-            else if (accept("/")) parse_unary(), emit(Op::Divide);
-            else return;
+            if (accept("*"))
+                parse_unary(), emit(Op::Multiply);
+            else if (accept("/"))
+                parse_unary(), emit(Op::Divide);
+            else
+                return;
         }
     }
     void parse_unary() {
@@ -136,10 +146,10 @@ private:
         std::string run;
         for (size_t i = pos_; i < text_.size(); ++i) {
             char c = text_[i];
-            bool exponent_sign = (c == '+' || c == '-') && !run.empty() &&
-                                 (run.back() == 'e' || run.back() == 'E');
-            if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' ||
-                  c == 'E' || exponent_sign))
+            bool exponent_sign =
+                (c == '+' || c == '-') && !run.empty() && (run.back() == 'e' || run.back() == 'E');
+            if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
+                  exponent_sign))
                 break;
             run.push_back(c);
         }
@@ -162,8 +172,10 @@ private:
             pos_ = start;
             fail("unknown name '" + std::string(name) + "'");
         }
-        if (resolved->variable) out_.code_.push_back({Op::Variable, *resolved->variable, 0.0});
-        else out_.code_.push_back({Op::Constant, 0, resolved->constant});
+        if (resolved->variable)
+            out_.code_.push_back({Op::Variable, *resolved->variable, 0.0});
+        else
+            out_.code_.push_back({Op::Constant, 0, resolved->constant});
     }
     void parse_call(std::string_view name, size_t start) {
         struct Function {
@@ -171,10 +183,15 @@ private:
             Op op;
             int arity;
         };
-        static constexpr std::array<Function, 9> functions{{
-            {"sin", Op::Sin, 1}, {"cos", Op::Cos, 1}, {"tan", Op::Tan, 1},
-            {"sqrt", Op::Sqrt, 1}, {"abs", Op::Abs, 1}, {"floor", Op::Floor, 1},
-            {"min", Op::Min, 2}, {"max", Op::Max, 2}, {"rand", Op::Rand, 2}}};
+        static constexpr std::array<Function, 9> functions{{{"sin", Op::Sin, 1},
+                                                            {"cos", Op::Cos, 1},
+                                                            {"tan", Op::Tan, 1},
+                                                            {"sqrt", Op::Sqrt, 1},
+                                                            {"abs", Op::Abs, 1},
+                                                            {"floor", Op::Floor, 1},
+                                                            {"min", Op::Min, 2},
+                                                            {"max", Op::Max, 2},
+                                                            {"rand", Op::Rand, 2}}};
         const Function* function = nullptr;
         for (const Function& f : functions)
             if (f.name == name) function = &f;
@@ -193,9 +210,8 @@ private:
         }
         if (count != function->arity) {
             pos_ = start;
-            fail(std::string(name) + " takes " + std::to_string(function->arity) +
-                 " argument" + (function->arity == 1 ? "" : "s") + ", not " +
-                 std::to_string(count));
+            fail(std::string(name) + " takes " + std::to_string(function->arity) + " argument" +
+                 (function->arity == 1 ? "" : "s") + ", not " + std::to_string(count));
         }
         emit(function->op);
     }
@@ -208,8 +224,7 @@ private:
     Expression out_;
 };
 
-Expression Expression::compile(std::string_view text, const NameLookup& lookup,
-                               int column_offset) {
+Expression Expression::compile(std::string_view text, const NameLookup& lookup, int column_offset) {
     return ExpressionParser(text, lookup, column_offset).parse();
 }
 
@@ -231,44 +246,94 @@ double Expression::evaluate(std::span<const double> variables, Random& random) c
     int top = -1;
     for (const Instruction& in : code_) {
         switch (in.op) {
-            case Op::Constant: stack[++top] = in.value; continue;
-            case Op::Variable: stack[++top] = variables[static_cast<size_t>(in.index)]; continue;
-            case Op::Negate: stack[top] = -stack[top]; continue;
-            case Op::Not: stack[top] = stack[top] == 0.0 ? 1.0 : 0.0; continue;
-            case Op::Sin: stack[top] = std::sin(stack[top] * kDegree); continue;
-            case Op::Cos: stack[top] = std::cos(stack[top] * kDegree); continue;
-            case Op::Tan: stack[top] = std::tan(stack[top] * kDegree); continue;
+            case Op::Constant:
+                stack[++top] = in.value;
+                continue;
+            case Op::Variable:
+                stack[++top] = variables[static_cast<size_t>(in.index)];
+                continue;
+            case Op::Negate:
+                stack[top] = -stack[top];
+                continue;
+            case Op::Not:
+                stack[top] = stack[top] == 0.0 ? 1.0 : 0.0;
+                continue;
+            case Op::Sin:
+                stack[top] = std::sin(stack[top] * kDegree);
+                continue;
+            case Op::Cos:
+                stack[top] = std::cos(stack[top] * kDegree);
+                continue;
+            case Op::Tan:
+                stack[top] = std::tan(stack[top] * kDegree);
+                continue;
             case Op::Sqrt:
                 if (stack[top] < 0.0) throw GrammarError("square root of a negative number");
                 stack[top] = std::sqrt(stack[top]);
                 continue;
-            case Op::Abs: stack[top] = std::abs(stack[top]); continue;
-            case Op::Floor: stack[top] = std::floor(stack[top]); continue;
-            default: break;
+            case Op::Abs:
+                stack[top] = std::abs(stack[top]);
+                continue;
+            case Op::Floor:
+                stack[top] = std::floor(stack[top]);
+                continue;
+            default:
+                break;
         }
         double b = stack[top--];
         double& a = stack[top];
         switch (in.op) {
-            case Op::Add: a = a + b; break;
-            case Op::Subtract: a = a - b; break;
-            case Op::Multiply: a = a * b; break;
+            case Op::Add:
+                a = a + b;
+                break;
+            case Op::Subtract:
+                a = a - b;
+                break;
+            case Op::Multiply:
+                a = a * b;
+                break;
             case Op::Divide:
                 if (b == 0.0) throw GrammarError("division by zero");
                 a = a / b;
                 break;
-            case Op::Power: a = std::pow(a, b); break;
-            case Op::Less: a = a < b; break;
-            case Op::LessEqual: a = a <= b; break;
-            case Op::Greater: a = a > b; break;
-            case Op::GreaterEqual: a = a >= b; break;
-            case Op::Equal: a = a == b; break;
-            case Op::NotEqual: a = a != b; break;
-            case Op::And: a = (a != 0.0) && (b != 0.0); break;
-            case Op::Or: a = (a != 0.0) || (b != 0.0); break;
-            case Op::Min: a = std::min(a, b); break;
-            case Op::Max: a = std::max(a, b); break;
-            case Op::Rand: a = a + (b - a) * random.uniform(); break;
-            default: break;
+            case Op::Power:
+                a = std::pow(a, b);
+                break;
+            case Op::Less:
+                a = a < b;
+                break;
+            case Op::LessEqual:
+                a = a <= b;
+                break;
+            case Op::Greater:
+                a = a > b;
+                break;
+            case Op::GreaterEqual:
+                a = a >= b;
+                break;
+            case Op::Equal:
+                a = a == b;
+                break;
+            case Op::NotEqual:
+                a = a != b;
+                break;
+            case Op::And:
+                a = (a != 0.0) && (b != 0.0);
+                break;
+            case Op::Or:
+                a = (a != 0.0) || (b != 0.0);
+                break;
+            case Op::Min:
+                a = std::min(a, b);
+                break;
+            case Op::Max:
+                a = std::max(a, b);
+                break;
+            case Op::Rand:
+                a = a + (b - a) * random.uniform();
+                break;
+            default:
+                break;
         }
     }
     if (!std::isfinite(stack[0])) throw GrammarError("expression gives a non-finite number");

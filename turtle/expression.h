@@ -6,8 +6,6 @@
 // rand(a,b). Booleans are 1 and 0.
 #pragma once
 
-#include "core/random.h"
-
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -16,10 +14,12 @@
 #include <string_view>
 #include <vector>
 
+#include "core/random.h"
+
 namespace sylva {
 
 class Expression {
-public:
+  public:
     // Resolves a name at compile time: the index of a bound variable (rule parameter) or
     // a constant's value. Returns nullopt for an unknown name.
     struct Name {
@@ -41,12 +41,34 @@ public:
     // True when the value does not depend on variables or rand, so it can be folded.
     bool is_constant() const;
 
-private:
+  private:
     enum class Op : std::uint8_t {
-        Constant, Variable, Negate, Not,
-        Add, Subtract, Multiply, Divide, Power,
-        Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual, And, Or,
-        Sin, Cos, Tan, Sqrt, Abs, Floor, Min, Max, Rand,
+        Constant,
+        Variable,
+        Negate,
+        Not,
+        Add,
+        Subtract,
+        Multiply,
+        Divide,
+        Power,
+        Less,
+        LessEqual,
+        Greater,
+        GreaterEqual,
+        Equal,
+        NotEqual,
+        And,
+        Or,
+        Sin,
+        Cos,
+        Tan,
+        Sqrt,
+        Abs,
+        Floor,
+        Min,
+        Max,
+        Rand,
     };
     struct Instruction {
         Op op;

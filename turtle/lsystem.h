@@ -2,12 +2,12 @@
 // weights, and the symbols context matching skips.
 #pragma once
 
-#include "turtle/expression.h"
-
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "turtle/expression.h"
 
 namespace sylva {
 
@@ -25,7 +25,7 @@ struct ModulePattern {
 };
 
 struct Rule {
-    std::vector<ModulePattern> left;   // left context, in word order; empty when none
+    std::vector<ModulePattern> left;  // left context, in word order; empty when none
     ModulePattern predecessor;
     std::vector<ModulePattern> right;  // right context; empty when none
     std::optional<Expression> condition;
@@ -37,7 +37,7 @@ struct Rule {
 
 struct LSystem {
     std::vector<ModuleProduction> axiom;
-    std::vector<Rule> rules;  // in the order written
+    std::vector<Rule> rules;          // in the order written
     std::array<bool, 256> ignored{};  // #ignore: skipped when matching contexts
 };
 

@@ -1,15 +1,17 @@
 #include "turtle/lsystem_parser.h"
 
-#include "core/errors.h"
-
 #include <algorithm>
 #include <cctype>
 #include <string>
 
+#include "core/errors.h"
+
 namespace sylva {
 namespace {
 
-bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+bool is_space(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) != 0;
+}
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
@@ -39,8 +41,10 @@ struct Line {
         int depth = 0;
         for (size_t i = begin; i < end; ++i) {
             char c = text[i];
-            if (c == '(') ++depth;
-            else if (c == ')') --depth;
+            if (c == '(')
+                ++depth;
+            else if (c == ')')
+                --depth;
             else if (depth == 0 && text.substr(i, token.size()) == token && i + token.size() <= end)
                 return i;
         }
@@ -54,7 +58,7 @@ bool valid_symbol(char c) {
 }
 
 class Parser {
-public:
+  public:
     explicit Parser(const Constants& constants) : constants_(constants) {}
 
     LSystem parse(std::string_view text) {
@@ -100,12 +104,13 @@ public:
             parse_rule(line, start);
         }
         if (!have_axiom)
-            throw GrammarError("the grammar has no axiom (write 'axiom: ...' or '#axiom' "
-                               "followed by the axiom on the next line)");
+            throw GrammarError(
+                "the grammar has no axiom (write 'axiom: ...' or '#axiom' "
+                "followed by the axiom on the next line)");
         return std::move(result_);
     }
 
-private:
+  private:
     std::vector<Line> split_lines(std::string_view text) {
         std::vector<Line> lines;
         int number = 0;
@@ -229,7 +234,10 @@ private:
                                                     const std::vector<std::string>& variables) {
         std::vector<ModuleProduction> out;
         for_each_module(
-            line, begin, end, [&](char symbol) { out.push_back({symbol, {}}); },
+            line, begin, end,
+            [&](char symbol) {
+                out.push_back({symbol, {}});
+            },
             [&](size_t a, size_t b) { out.back().args.push_back(compile(line, a, b, variables)); });
         return out;
     }
@@ -239,12 +247,16 @@ private:
                                               std::vector<std::string>& variables) {
         std::vector<ModulePattern> out;
         for_each_module(
-            line, begin, end, [&](char symbol) { out.push_back({symbol, 0}); },
+            line, begin, end,
+            [&](char symbol) {
+                out.push_back({symbol, 0});
+            },
             [&](size_t a, size_t b) {
                 std::string_view name = trim(line.text.substr(a, b - a));
                 bool ok = !name.empty() &&
                           (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
-                for (char n : name) ok = ok && (std::isalnum(static_cast<unsigned char>(n)) || n == '_');
+                for (char n : name)
+                    ok = ok && (std::isalnum(static_cast<unsigned char>(n)) || n == '_');
                 if (!ok) line.fail("a parameter of a rule's left side must be a name", a);
                 if (std::find(variables.begin(), variables.end(), name) != variables.end())
                     line.fail("parameter '" + std::string(name) + "' is named twice", a);
@@ -303,8 +315,8 @@ private:
         size_t colon = line.find_top_level(":", start, arrow);
         size_t pattern_end = colon == std::string_view::npos ? arrow : colon;
         size_t lt = line.find_top_level("<", start, pattern_end);
-        size_t gt = line.find_top_level(">", lt == std::string_view::npos ? start : lt + 1,
-                                        pattern_end);
+        size_t gt =
+            line.find_top_level(">", lt == std::string_view::npos ? start : lt + 1, pattern_end);
         size_t pred_begin = lt == std::string_view::npos ? start : lt + 1;
         size_t pred_end = gt == std::string_view::npos ? pattern_end : gt;
         std::vector<std::string> variables;

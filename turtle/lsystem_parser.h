@@ -2,11 +2,11 @@
 // "#axiom / #rules" format into an LSystem.
 #pragma once
 
-#include "turtle/lsystem.h"
-
 #include <map>
 #include <string>
 #include <string_view>
+
+#include "turtle/lsystem.h"
 
 namespace sylva {
 

@@ -1,14 +1,13 @@
 #include "turtle/turtle.h"
 
-#include "core/errors.h"
-#include "core/pipe_model.h"
-
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "core/errors.h"
+#include "core/pipe_model.h"
 
 namespace sylva {
 namespace {
@@ -50,7 +49,7 @@ void orthonormalize(State& s) {
 }
 
 class Interpreter {
-public:
+  public:
     Interpreter(const Word& word, const TurtleSettings& settings)
         : word_(word), settings_(settings) {
         state_.width = settings.initial_width;
@@ -62,16 +61,36 @@ public:
             std::span<const double> a = word_.args(i);
             auto arg = [&](double fallback) { return a.empty() ? fallback : a[0]; };
             switch (word_.symbol(i)) {
-                case 'F': forward(arg(settings_.step), true); break;
-                case 'f': forward(arg(settings_.step), false); break;
-                case '+': turn(arg(settings_.turn_angle)); break;
-                case '-': turn(-arg(settings_.turn_angle)); break;
-                case '&': pitch(arg(settings_.pitch_angle)); break;
-                case '^': pitch(-arg(settings_.pitch_angle)); break;
-                case '\\': roll(arg(settings_.roll_angle)); break;
-                case '/': roll(-arg(settings_.roll_angle)); break;
-                case '|': turn_around(); break;
-                case '$': roll_to_vertical(); break;
+                case 'F':
+                    forward(arg(settings_.step), true);
+                    break;
+                case 'f':
+                    forward(arg(settings_.step), false);
+                    break;
+                case '+':
+                    turn(arg(settings_.turn_angle));
+                    break;
+                case '-':
+                    turn(-arg(settings_.turn_angle));
+                    break;
+                case '&':
+                    pitch(arg(settings_.pitch_angle));
+                    break;
+                case '^':
+                    pitch(-arg(settings_.pitch_angle));
+                    break;
+                case '\\':
+                    roll(arg(settings_.roll_angle));
+                    break;
+                case '/':
+                    roll(-arg(settings_.roll_angle));
+                    break;
+                case '|':
+                    turn_around();
+                    break;
+                case '$':
+                    roll_to_vertical();
+                    break;
                 case '[':
                     stack_.push_back(state_);
                     ++state_.depth;
@@ -83,15 +102,26 @@ public:
                     state_ = stack_.back();
                     stack_.pop_back();
                     break;
-                case '!': state_.width = a.empty() ? state_.width * settings_.width_decay : a[0]; break;
-                case '\'': state_.color = a.empty() ? state_.color + 1 : static_cast<int>(a[0]); break;
-                case '{': polygons_.emplace_back(); break;
+                case '!':
+                    state_.width = a.empty() ? state_.width * settings_.width_decay : a[0];
+                    break;
+                case '\'':
+                    state_.color = a.empty() ? state_.color + 1 : static_cast<int>(a[0]);
+                    break;
+                case '{':
+                    polygons_.emplace_back();
+                    break;
                 case '.':
                     if (!polygons_.empty()) polygons_.back().push_back(glm::vec3(state_.position));
                     break;
-                case '}': close_polygon(i); break;
-                case '%': i = end_of_branch(i); break;
-                default: break;  // other symbols only drive the derivation
+                case '}':
+                    close_polygon(i);
+                    break;
+                case '%':
+                    i = end_of_branch(i);
+                    break;
+                default:
+                    break;  // other symbols only drive the derivation
             }
         }
         if (settings_.width_model == WidthModel::Pipe)
@@ -100,9 +130,10 @@ public:
         return std::move(out_);
     }
 
-private:
+  private:
     void forward(double length, bool draw) {
-        glm::dvec3 direction = settings_.mode == TurtleMode::Lptg ? lptg_direction() : state_.heading;
+        glm::dvec3 direction =
+            settings_.mode == TurtleMode::Lptg ? lptg_direction() : state_.heading;
         glm::dvec3 start = state_.position;
         state_.position += direction * length;
         if (draw && length != 0.0) {

@@ -5,26 +5,26 @@
 // azimuth a; F moves along (cos e cos a, sin e, cos e sin a).
 #pragma once
 
+#include <glm/vec3.hpp>
+
 #include "core/cancel.h"
 #include "core/skeleton.h"
 #include "core/tree_template.h"  // TurtleMode, WidthModel
 #include "turtle/word.h"
-
-#include <glm/vec3.hpp>
 
 namespace sylva {
 
 struct TurtleSettings {
     TurtleMode mode = TurtleMode::Abop;
     WidthModel width_model = WidthModel::Taper;
-    double step = 1.0;            // length of F and f without a parameter, meters
-    double turn_angle = 22.5;     // degrees, + -  (LPTG: the azimuth step P_beta)
-    double pitch_angle = 22.5;    // degrees, & ^  (LPTG: the elevation step P_alpha)
-    double roll_angle = 22.5;     // degrees, \ /
-    double initial_width = 0.1;   // diameter at the start, meters
-    double width_decay = 0.7;     // '!' without a parameter multiplies the width by this
-    double trunk_taper = 0.95;    // WidthModel::Taper, level 0
-    double branch_taper = 0.8;    // WidthModel::Taper, deeper levels
+    double step = 1.0;             // length of F and f without a parameter, meters
+    double turn_angle = 22.5;      // degrees, + -  (LPTG: the azimuth step P_beta)
+    double pitch_angle = 22.5;     // degrees, & ^  (LPTG: the elevation step P_alpha)
+    double roll_angle = 22.5;      // degrees, \ /
+    double initial_width = 0.1;    // diameter at the start, meters
+    double width_decay = 0.7;      // '!' without a parameter multiplies the width by this
+    double trunk_taper = 0.95;     // WidthModel::Taper, level 0
+    double branch_taper = 0.8;     // WidthModel::Taper, deeper levels
     double pipe_tip_width = 0.02;  // WidthModel::Pipe: diameter at the tips
     double pipe_exponent = 2.5;    // WidthModel::Pipe: Murray's g
     glm::dvec3 tropism{0.0, -1.0, 0.0};

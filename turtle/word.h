@@ -10,7 +10,7 @@
 namespace sylva {
 
 class Word {
-public:
+  public:
     std::size_t size() const { return symbols_.size(); }
     bool empty() const { return symbols_.empty(); }
     char symbol(std::size_t i) const { return symbols_[i]; }
@@ -41,7 +41,7 @@ public:
     // Text form: modules with their numbers in shortest round-trip form, e.g. "F(1.5)+(90)".
     std::string to_string() const;
 
-private:
+  private:
     std::vector<char> symbols_;
     std::vector<double> params_;
     std::vector<std::uint32_t> offsets_{0};  // args of module i: [offsets_[i], offsets_[i+1])

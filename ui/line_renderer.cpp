@@ -21,7 +21,9 @@ void main() { frag_color = vec4(u_color, 1.0); }
 
 LineRenderer::LineRenderer() : program_("lines", kVertexShader, kFragmentShader) {}
 
-void LineRenderer::upload(std::span<const glm::vec3> points) { lines_.upload(points); }
+void LineRenderer::upload(std::span<const glm::vec3> points) {
+    lines_.upload(points);
+}
 
 void LineRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
                         const glm::vec3& color) const {

@@ -2,18 +2,17 @@
 // 4.4) over or through the meshes.
 #pragma once
 
-#include "ui/gl_program.h"
-#include "ui/position_buffer.h"
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
-
 #include <span>
+
+#include "ui/gl_program.h"
+#include "ui/position_buffer.h"
 
 namespace sylva::studio {
 
 class LineRenderer {
-public:
+  public:
     LineRenderer();  // needs a current GL 3.3 context
 
     // Pairs of points: (points[0], points[1]) is the first segment, and so on.
@@ -21,7 +20,7 @@ public:
     // Drawn without depth test, so the skeleton shows through the bark.
     void draw(const glm::mat4& view, const glm::mat4& projection, const glm::vec3& color) const;
 
-private:
+  private:
     GlProgram program_;
     PositionBuffer lines_;
 };

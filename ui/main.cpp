@@ -110,8 +110,9 @@ std::vector<glm::vec3> visible_points(const StudioState& state) {
     std::vector<glm::vec3> points;
     const ShownMeshes meshes = shown_meshes(*state.tree);
     const ViewToggles& show = state.view;
-    for (auto [on, mesh] : {std::pair{show.trunk, &meshes.trunk}, std::pair{show.crown, &meshes.crown},
-                            std::pair{show.leaves, &meshes.leaves}})
+    for (auto [on, mesh] :
+         {std::pair{show.trunk, &meshes.trunk}, std::pair{show.crown, &meshes.crown},
+          std::pair{show.leaves, &meshes.leaves}})
         if (on) points.insert(points.end(), mesh->positions.begin(), mesh->positions.end());
     if (points.empty() || show.skeleton)
         for (const sylva::Segment& s : state.tree->tree.skeleton.segments)
@@ -194,7 +195,9 @@ class FrameRate {
 // bar, so "frame tree" centres it where the artist can see it. GL pixels, origin bottom left.
 struct ViewRect {
     int x, y, width, height;
-    float aspect() const { return static_cast<float>(width) / static_cast<float>(std::max(height, 1)); }
+    float aspect() const {
+        return static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    }
 };
 
 ViewRect view_rect(const PanelLayout& layout) {
@@ -250,8 +253,10 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const bool busy = options.screenshot_path || generation_running(state) ||
                           !state.stale.empty() || state.export_job.valid() ||
                           ImGui::IsAnyItemActive();
-        if (busy) glfwPollEvents();
-        else glfwWaitEventsTimeout(0.25);
+        if (busy)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(0.25);
         frame_rate.tick(glfwGetTime(), busy);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
@@ -260,7 +265,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         ImGui::NewFrame();
         // The panels are laid out in ImGui's units, which are framebuffer pixels here (no
         // content scaling on X11).
-        const PanelLayout layout = panel_layout(static_cast<float>(width), static_cast<float>(height));
+        const PanelLayout layout =
+            panel_layout(static_cast<float>(width), static_cast<float>(height));
         const ViewRect rect = view_rect(layout);
         const float aspect = rect.aspect();
 

@@ -1,8 +1,5 @@
 #include "ui/panels.h"
 
-#include "export/export.h"
-#include "tree/template_library.h"
-
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -11,6 +8,9 @@
 #include <filesystem>
 #include <random>
 #include <string>
+
+#include "export/export.h"
+#include "tree/template_library.h"
 
 namespace sylva::studio {
 namespace {
@@ -76,7 +76,8 @@ void actions_row(StudioState& state) {
 
 void template_section(StudioState& state) {
     section("Template");
-    if (ImGui::BeginCombo("template", state.tree_template.name.c_str(), ImGuiComboFlags_HeightLargest)) {
+    if (ImGui::BeginCombo("template", state.tree_template.name.c_str(),
+                          ImGuiComboFlags_HeightLargest)) {
         for (const TreeTemplate* t : builtin_templates()) {
             if (ImGui::Selectable(t->name.c_str(), t->name == state.tree_template.name))
                 load_template_into(state, *t);
@@ -123,9 +124,11 @@ bool parameter_widget(const ParamInfo& info, double& value) {
     if (!info.choices.empty()) {
         int index = static_cast<int>(value);
         bool changed = false;
-        if (ImGui::BeginCombo(key.c_str(), std::string(info.choices[static_cast<size_t>(index)]).c_str())) {
+        if (ImGui::BeginCombo(key.c_str(),
+                              std::string(info.choices[static_cast<size_t>(index)]).c_str())) {
             for (size_t i = 0; i < info.choices.size(); ++i)
-                if (ImGui::Selectable(std::string(info.choices[i]).c_str(), static_cast<int>(i) == index)) {
+                if (ImGui::Selectable(std::string(info.choices[i]).c_str(),
+                                      static_cast<int>(i) == index)) {
                     value = static_cast<double>(i);
                     changed = true;
                 }
@@ -193,7 +196,8 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
         tooltip("put the cursor there");
     }
     wrapped_text(state.error, true);
-    if (!state.error.empty()) ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    if (!state.error.empty())
+        ImGui::TextDisabled("(the tree on screen is the last one that worked)");
 }
 
 void view_section(StudioState& state) {
@@ -230,8 +234,9 @@ void export_section(StudioState& state) {
     }
     int& budget = state.tree_template.params.triangle_budget;
     if (ImGui::InputInt("budget", &budget, 100, 1000)) budget = std::max(budget, 0);
-    tooltip("trunk + crown triangles after reduction (0 keeps every triangle); the "
-            "template's triangle_budget");
+    tooltip(
+        "trunk + crown triangles after reduction (0 keeps every triangle); the "
+        "template's triangle_budget");
     ImGui::Checkbox("LOD chain", &e.lod);
     tooltip("four levels: budget, 1/2, 1/4, 1/8 (one .glb, or a file per level)");
     ImGui::SameLine();
@@ -243,9 +248,12 @@ void export_section(StudioState& state) {
 
 const char* stage_name(int stage) {
     switch (stage) {
-        case JobProgress::Meshing: return "meshing";
-        case JobProgress::Reducing: return "reducing";
-        default: return "growing";
+        case JobProgress::Meshing:
+            return "meshing";
+        case JobProgress::Reducing:
+            return "reducing";
+        default:
+            return "growing";
     }
 }
 
@@ -290,13 +298,14 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
 void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, layout.height - layout.bottom));
     ImGui::SetNextWindowSize(ImVec2(layout.width, layout.bottom));
-    ImGui::Begin("status", nullptr, ImGuiWindowFlags_NoDecoration | kDocked |
-                                        ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::Begin("status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | kDocked | ImGuiWindowFlags_NoFocusOnAppearing);
     if (state.job) {
         const JobProgress& p = *state.job->progress;
         const int stage = p.stage.load();
         char label[32];
-        std::snprintf(label, sizeof label, "%s %.0f%%", stage_name(stage), 100.0f * p.fraction.load());
+        std::snprintf(label, sizeof label, "%s %.0f%%", stage_name(stage),
+                      100.0f * p.fraction.load());
         ImGui::ProgressBar(stage == JobProgress::Growing ? 0.0f : p.fraction.load(),
                            ImVec2(150.0f, 0.0f), label);
         ImGui::SameLine();
@@ -311,8 +320,9 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
         const Mesh& trunk = solids.trunk;
         const Mesh& crown = solids.crown;
         ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |",
-                    state.shown_template.name.c_str(), trunk.triangles.size(), crown.triangles.size(),
-                    t.leaves.triangles.size(), reduced ? " (low poly)" : "");
+                    state.shown_template.name.c_str(), trunk.triangles.size(),
+                    crown.triangles.size(), t.leaves.triangles.size(),
+                    reduced ? " (low poly)" : "");
         for (const StageTime& stage : t.times) {
             ImGui::SameLine(0.0f, 0.0f);
             ImGui::Text("  %s %.1f", stage.name.c_str(), stage.ms);
@@ -334,7 +344,8 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
         char rate[32];
         std::snprintf(rate, sizeof rate, "%.0f fps", fps);
         const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
-        ImGui::SameLine(std::max(text_end + 20.0f, layout.width - ImGui::CalcTextSize(rate).x - 16.0f));
+        ImGui::SameLine(
+            std::max(text_end + 20.0f, layout.width - ImGui::CalcTextSize(rate).x - 16.0f));
         ImGui::TextDisabled("%s", rate);
     }
     ImGui::End();

@@ -2,16 +2,15 @@
 // (ground grid, skeleton) upload and draw.
 #pragma once
 
-#include "ui/gl.h"
-
 #include <glm/vec3.hpp>
-
 #include <span>
+
+#include "ui/gl.h"
 
 namespace sylva::studio {
 
 class PositionBuffer {
-public:
+  public:
     PositionBuffer();  // needs a current GL 3.3 context
     ~PositionBuffer();
     PositionBuffer(const PositionBuffer&) = delete;
@@ -22,7 +21,7 @@ public:
     // Draws every point as `mode` (GL_LINES ...) with the program already in use.
     void draw(GLenum mode) const;
 
-private:
+  private:
     GLuint vertex_array_ = 0;
     GLuint vertex_buffer_ = 0;
     GLsizei count_ = 0;

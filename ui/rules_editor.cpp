@@ -35,8 +35,10 @@ TextExtent measure(std::string_view text) {
     std::size_t start = 0;
     while (true) {
         std::size_t end = text.find('\n', start);
-        std::string_view line = text.substr(start, end == std::string_view::npos ? text.size() - start : end - start);
-        extent.widest = std::max(extent.widest, ImGui::CalcTextSize(line.data(), line.data() + line.size()).x);
+        std::string_view line =
+            text.substr(start, end == std::string_view::npos ? text.size() - start : end - start);
+        extent.widest =
+            std::max(extent.widest, ImGui::CalcTextSize(line.data(), line.data() + line.size()).x);
         if (end == std::string_view::npos) return extent;
         ++extent.lines;
         start = end + 1;
@@ -73,10 +75,14 @@ void scroll_into_view(ImVec2 min, ImVec2 max) {
     const float bar = ImGui::GetStyle().ScrollbarSize;
     const float top = min.y - window.y, bottom = max.y - window.y;
     const float left = min.x - window.x, right = max.x - window.x;
-    if (top < 0.0f) ImGui::SetScrollY(ImGui::GetScrollY() + top);
-    else if (bottom > size.y - bar) ImGui::SetScrollY(ImGui::GetScrollY() + bottom - (size.y - bar));
-    if (left < 0.0f) ImGui::SetScrollX(ImGui::GetScrollX() + left);
-    else if (right > size.x - bar) ImGui::SetScrollX(ImGui::GetScrollX() + right - (size.x - bar));
+    if (top < 0.0f)
+        ImGui::SetScrollY(ImGui::GetScrollY() + top);
+    else if (bottom > size.y - bar)
+        ImGui::SetScrollY(ImGui::GetScrollY() + bottom - (size.y - bar));
+    if (left < 0.0f)
+        ImGui::SetScrollX(ImGui::GetScrollX() + left);
+    else if (right > size.x - bar)
+        ImGui::SetScrollX(ImGui::GetScrollX() + right - (size.x - bar));
 }
 
 }  // namespace
@@ -118,8 +124,9 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
                             kErrorBand);
         std::string_view line = line_text(text, mark.line);
         const float x = text_origin.x + column_x(line, mark.column);
-        const float w = mark.column > 0 ? char_width
-                                        : ImGui::CalcTextSize(line.data(), line.data() + line.size()).x;
+        const float w = mark.column > 0
+                            ? char_width
+                            : ImGui::CalcTextSize(line.data(), line.data() + line.size()).x;
         draw->AddRectFilled(ImVec2(x, y + line_height - 1.0f),
                             ImVec2(x + std::max(w, 4.0f), y + line_height + 2.0f), kErrorBar);
         if (editor.select_line > 0)
@@ -129,22 +136,24 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
 
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
     if (editor.select_line > 0) ImGui::SetKeyboardFocusHere();
-    const bool changed = ImGui::InputTextMultiline(
-        "##text", &text, field_size,
-        ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_NoHorizontalScroll |
-            ImGuiInputTextFlags_CallbackAlways,
-        on_edit_callback, &editor);
+    const bool changed = ImGui::InputTextMultiline("##text", &text, field_size,
+                                                   ImGuiInputTextFlags_AllowTabInput |
+                                                       ImGuiInputTextFlags_NoHorizontalScroll |
+                                                       ImGuiInputTextFlags_CallbackAlways,
+                                                   on_edit_callback, &editor);
     ImGui::PopStyleColor();
 
     // The field never scrolls itself (it is as large as its text); this child does, and
     // follows the cursor.
     if (ImGui::IsItemActive() && editor.cursor >= 0) {
-        const std::string_view before(text.data(), std::min(static_cast<std::size_t>(editor.cursor), text.size()));
+        const std::string_view before(
+            text.data(), std::min(static_cast<std::size_t>(editor.cursor), text.size()));
         const std::size_t newline = before.rfind('\n');
         const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
         const auto line = static_cast<float>(std::count(before.begin(), before.end(), '\n'));
-        const float x = text_origin.x +
-                        ImGui::CalcTextSize(before.data() + line_start, before.data() + before.size()).x;
+        const float x =
+            text_origin.x +
+            ImGui::CalcTextSize(before.data() + line_start, before.data() + before.size()).x;
         const float y = text_origin.y + line * line_height;
         scroll_into_view(ImVec2(x - 4.0f * char_width, y),
                          ImVec2(x + 4.0f * char_width, y + line_height));
@@ -166,9 +175,11 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
         std::snprintf(number, sizeof number, "%d", i);
         const bool error_line = marked && i == mark.line;
         if (error_line)
-            panel->AddRectFilled(ImVec2(top_left.x, y), ImVec2(gutter_max.x, y + line_height), kErrorBand);
-        panel->AddText(ImVec2(gutter_max.x - style.FramePadding.x - ImGui::CalcTextSize(number).x, y),
-                       error_line ? kErrorBar : ImGui::GetColorU32(ImGuiCol_TextDisabled), number);
+            panel->AddRectFilled(ImVec2(top_left.x, y), ImVec2(gutter_max.x, y + line_height),
+                                 kErrorBand);
+        panel->AddText(
+            ImVec2(gutter_max.x - style.FramePadding.x - ImGui::CalcTextSize(number).x, y),
+            error_line ? kErrorBar : ImGui::GetColorU32(ImGuiCol_TextDisabled), number);
     }
     panel->PopClipRect();
     return changed;

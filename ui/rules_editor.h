@@ -10,7 +10,7 @@ namespace sylva::studio {
 struct RulesEditorState {
     // When set, the next frame focuses the editor and puts the cursor here (1-based).
     int select_line = 0, select_column = 1;
-    int cursor = -1;      // the text cursor's byte offset while the editor is active
+    int cursor = -1;  // the text cursor's byte offset while the editor is active
 };
 
 struct TextMark {

@@ -47,7 +47,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--screenshot PATH [--frames N]]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--screenshot PATH [--frames "
+           "N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"

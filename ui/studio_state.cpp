@@ -1,16 +1,16 @@
 #include "ui/studio_state.h"
 
-#include "core/atomic_file.h"
-#include "export/export_tree.h"
-#include "tree/template_file.h"
-#include "tree/template_library.h"
-#include "marching/marching_cubes.h"
-#include "core/errors.h"
-
 #include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <thread>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "export/export_tree.h"
+#include "marching/marching_cubes.h"
+#include "tree/template_file.h"
+#include "tree/template_library.h"
 
 namespace sylva::studio {
 namespace {
@@ -30,8 +30,8 @@ bool same_params(const TreeParams& a, const TreeParams& b) {
 
 // What shapes the tree: a change here needs a new generation (a colour change does not).
 bool same_tree_input(const TreeTemplate& a, const TreeTemplate& b) {
-    return a.growth == b.growth && a.grammar == b.grammar && a.mode == b.mode && a.width_model == b.width_model &&
-           same_params(a.params, b.params);
+    return a.growth == b.growth && a.grammar == b.grammar && a.mode == b.mode &&
+           a.width_model == b.width_model && same_params(a.params, b.params);
 }
 
 // The meshers get all cores but one: the UI thread draws the window (on a software renderer
@@ -83,9 +83,8 @@ std::string files_text(const std::vector<std::filesystem::path>& files) {
 // The export, on a worker: trunk and crown reduced to `budget` (0 keeps every triangle),
 // or a LOD chain; returns the message the panel shows. The preview's reduction is reused
 // when it has the same budget.
-std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown,
-                        const TreeTemplate& tmpl, std::size_t budget,
-                        const ExportSettings& settings) {
+std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const TreeTemplate& tmpl,
+                        std::size_t budget, const ExportSettings& settings) {
     const Tree& tree = shown->tree;
     FinishedTree finished;
     if (!settings.lod && budget > 0 && shown->reduced() && shown->budget == budget) {
@@ -168,8 +167,8 @@ void start_generation(StudioState& state) {
     job.tree_template = state.tree_template;
     job.budget = state.requested_budget;
     // The worker gets its own copies: editing while it runs is safe.
-    job.result = std::async(std::launch::async, generate, job.tree_template, job.budget,
-                            job.progress);
+    job.result =
+        std::async(std::launch::async, generate, job.tree_template, job.budget, job.progress);
     state.job = std::move(job);
 }
 
@@ -272,8 +271,8 @@ void start_export(StudioState& state) {
     state.export_failed = false;
     const auto budget =
         static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0));
-    state.export_job = std::async(std::launch::async, export_tree, state.tree,
-                                  state.shown_template, budget, state.export_settings);
+    state.export_job = std::async(std::launch::async, export_tree, state.tree, state.shown_template,
+                                  budget, state.export_settings);
 }
 
 void save_template_to_file(StudioState& state) {

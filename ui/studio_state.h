@@ -3,10 +3,6 @@
 // main; panels are functions of this state.
 #pragma once
 
-#include "export/export_tree.h"
-#include "tree/pipeline.h"
-#include "ui/orbit_camera.h"
-
 #include <atomic>
 #include <chrono>
 #include <future>
@@ -14,6 +10,10 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "export/export_tree.h"
+#include "tree/pipeline.h"
+#include "ui/orbit_camera.h"
 
 namespace sylva::studio {
 
@@ -67,11 +67,11 @@ struct ExportSettings {
 };
 
 struct StudioState {
-    TreeTemplate tree_template;          // what the panels edit
+    TreeTemplate tree_template;  // what the panels edit
     // The last good tree, on screen. Shared so an export can read it on a worker without a copy.
     std::shared_ptr<const GeneratedTree> tree;
-    TreeTemplate shown_template;         // the template of the tree on screen
-    bool tree_changed = false;  // set when `tree` was replaced; main uploads and clears it
+    TreeTemplate shown_template;  // the template of the tree on screen
+    bool tree_changed = false;    // set when `tree` was replaced; main uploads and clears it
 
     std::optional<GenerationJob> job;  // the generation whose result will be shown
     std::vector<GenerationJob> stale;  // cancelled generations still finishing

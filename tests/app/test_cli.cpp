@@ -1,6 +1,5 @@
 // The `sylva` command line as scripts see it: exit codes, messages, files left behind.
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,7 +29,7 @@ Result run(const std::string& args) {
 }
 
 class Cli : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("sylva_cli_" + std::to_string(::getpid()));
         fs::create_directories(dir_);
@@ -56,7 +55,7 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_NE(help.output.find("trunk_resolution"), std::string::npos);
     EXPECT_EQ(run("").code, 2);
     EXPECT_EQ(run("frobnicate").code, 2);
-    EXPECT_EQ(run("export").code, 2);                      // no -o
+    EXPECT_EQ(run("export").code, 2);  // no -o
     EXPECT_EQ(run("export --bogus -o x.obj").code, 2);
     EXPECT_EQ(run("export -o " + path("x.fbx")).code, 2);  // no such format
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
@@ -112,7 +111,8 @@ TEST_F(Cli, BadParameterIsExitCode3NamingTheKey) {
 TEST_F(Cli, UnwritablePathIsExitCode4AndLeavesNothing) {
     Result r = run("export -o " + path("missing/dir/tree.obj"));
     EXPECT_EQ(r.code, 4) << r.output;
-    EXPECT_NE(r.output.find("missing/dir/tree."), std::string::npos) << r.output;  // .obj or its .mtl
+    EXPECT_NE(r.output.find("missing/dir/tree."), std::string::npos)
+        << r.output;  // .obj or its .mtl
     EXPECT_FALSE(fs::exists(path("missing")));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 0);
 }

@@ -19,14 +19,14 @@
 
 #include "core/errors.h"
 #include "export/export.h"
-#include "export/glb_writer.h"
 #include "export/export_tree.h"
-#include "tree/lowpoly_tree.h"
-#include "tree/template_library.h"
+#include "export/glb_writer.h"
 #include "export/mesh_normals.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
 #include "marching/mesh_checks.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/template_library.h"
 
 namespace sylva {
 namespace {

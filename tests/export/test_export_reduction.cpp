@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "export/export_tree.h"
+#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

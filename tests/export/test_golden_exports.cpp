@@ -42,32 +42,51 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0x91436baf53ec4f96ull},     {"oak.glb", 0x3db96e87e53e82a4ull},
-        {"oak.ply", 0x023a5def66b37c49ull},     {"baobab.obj", 0x6acf39f9034684a0ull},
-        {"baobab.glb", 0xaadd5fa66258b3d2ull},  {"baobab.ply", 0x28347fb2330bcf51ull},
-        {"birch.obj", 0x796dd1754b951a2dull},   {"birch.glb", 0x061a01f75efd28ffull},
-        {"birch.ply", 0x4c53c86f9ccb99d3ull},   {"bush.obj", 0x5951d0ac0bf78001ull},
-        {"bush.glb", 0x8a307783d01419cdull},    {"bush.ply", 0x27be3305bc9e3d2dull},
-        {"cypress.obj", 0x6e17bbdef72d18ccull}, {"cypress.glb", 0xc78feb7f8f0fc294ull},
-        {"cypress.ply", 0x8be5149fa98c0bbcull}, {"fir.obj", 0x263e363d31fcbfdcull},
-        {"fir.glb", 0x3f862639f8db228cull},     {"fir.ply", 0x6be8ee9598c021d1ull},
-        {"honda.obj", 0x7301c8f7903d5b52ull},   {"honda.glb", 0xe0aa3fbd2a293388ull},
-        {"honda.ply", 0x7ca45d91b177b0b8ull},   {"palm.obj", 0xbee7f1474330d35full},
-        {"palm.glb", 0x933ae7ba3544cd29ull},    {"palm.ply", 0x1afa55af9b0523c2ull},
-        {"pine.obj", 0x6bec8b6183737bccull},    {"pine.glb", 0x852a2e84f1e63044ull},
-        {"pine.ply", 0x105b4b74d34fbad0ull},    {"spruce.obj", 0xd848f7ccf62a1d47ull},
-        {"spruce.glb", 0x0acb9df5e45abd4dull},  {"spruce.ply", 0xfa6a601855302b90ull},
-        {"ternary.obj", 0xfddda440950baba0ull}, {"ternary.glb", 0x3a33738124de20bbull},
-        {"ternary.ply", 0x10035aa4a4bad40full}, {"willow.obj", 0x5700784f797342bdull},
-        {"willow.glb", 0xfbbfe898759c18f9ull},  {"willow.ply", 0x6b2e34f8c0e9201aull},
+        {"oak.obj", 0x91436baf53ec4f96ull},
+        {"oak.glb", 0x3db96e87e53e82a4ull},
+        {"oak.ply", 0x023a5def66b37c49ull},
+        {"baobab.obj", 0x6acf39f9034684a0ull},
+        {"baobab.glb", 0xaadd5fa66258b3d2ull},
+        {"baobab.ply", 0x28347fb2330bcf51ull},
+        {"birch.obj", 0x796dd1754b951a2dull},
+        {"birch.glb", 0x061a01f75efd28ffull},
+        {"birch.ply", 0x4c53c86f9ccb99d3ull},
+        {"bush.obj", 0x5951d0ac0bf78001ull},
+        {"bush.glb", 0x8a307783d01419cdull},
+        {"bush.ply", 0x27be3305bc9e3d2dull},
+        {"cypress.obj", 0x6e17bbdef72d18ccull},
+        {"cypress.glb", 0xc78feb7f8f0fc294ull},
+        {"cypress.ply", 0x8be5149fa98c0bbcull},
+        {"fir.obj", 0x263e363d31fcbfdcull},
+        {"fir.glb", 0x3f862639f8db228cull},
+        {"fir.ply", 0x6be8ee9598c021d1ull},
+        {"honda.obj", 0x7301c8f7903d5b52ull},
+        {"honda.glb", 0xe0aa3fbd2a293388ull},
+        {"honda.ply", 0x7ca45d91b177b0b8ull},
+        {"palm.obj", 0xbee7f1474330d35full},
+        {"palm.glb", 0x933ae7ba3544cd29ull},
+        {"palm.ply", 0x1afa55af9b0523c2ull},
+        {"pine.obj", 0x6bec8b6183737bccull},
+        {"pine.glb", 0x852a2e84f1e63044ull},
+        {"pine.ply", 0x105b4b74d34fbad0ull},
+        {"spruce.obj", 0xd848f7ccf62a1d47ull},
+        {"spruce.glb", 0x0acb9df5e45abd4dull},
+        {"spruce.ply", 0xfa6a601855302b90ull},
+        {"ternary.obj", 0xfddda440950baba0ull},
+        {"ternary.glb", 0x3a33738124de20bbull},
+        {"ternary.ply", 0x10035aa4a4bad40full},
+        {"willow.obj", 0x5700784f797342bdull},
+        {"willow.glb", 0xfbbfe898759c18f9ull},
+        {"willow.ply", 0x6b2e34f8c0e9201aull},
         // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
-        {"palm_lod.glb", 0x7b54a60d188a8dc1ull}, {"palm_lod.obj", 0x5ae0c7e46756f334ull},
+        {"palm_lod.glb", 0x7b54a60d188a8dc1ull},
+        {"palm_lod.obj", 0x5ae0c7e46756f334ull},
     };
     return hashes;
 }
 
 class GoldenExports : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("sylva_golden_" + std::to_string(::getpid()));
         fs::create_directories(dir_);
@@ -85,8 +104,7 @@ protected:
             const std::string key = name + std::string(format->extension);
             const auto expected = golden_hashes().find(key);
             if (expected == golden_hashes().end()) continue;
-            std::vector<fs::path> files =
-                write_tree(dir_ / key, tree, finished, tmpl.colors);
+            std::vector<fs::path> files = write_tree(dir_ / key, tree, finished, tmpl.colors);
             // The order the hashes were taken in: an OBJ before its MTL, a chain's MTL
             // before its levels.
             std::stable_partition(files.begin(), files.end(), [lod](const fs::path& f) {

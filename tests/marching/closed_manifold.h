@@ -2,9 +2,9 @@
 // triangles, with every failing count reported.
 #pragma once
 
-#include "marching/mesh_checks.h"
-
 #include <gtest/gtest.h>
+
+#include "marching/mesh_checks.h"
 
 namespace sylva {
 

@@ -1,4 +1,3 @@
-#include "closed_manifold.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "closed_manifold.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
 

@@ -1,9 +1,9 @@
 // The sparse mesher against the dense one: the same mesh, byte for byte, for 1-Lipschitz
 // fields, at a fraction of the evaluations; and the settings (threads, progress, cancel,
 // stats) honoured by both.
-#include "closed_manifold.h"
-#include "sdf/capped_cone.h"
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
@@ -19,12 +19,11 @@
 #include <string>
 #include <vector>
 
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
+#include "closed_manifold.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
+#include "sdf/capped_cone.h"
 
 namespace sylva {
 namespace {
@@ -177,8 +176,7 @@ TEST(SparseMarchingCubes, EqualsDenseOnSphereClouds) {
     // Spheres from a fifth of a cell to a few cells: crumbs, gaps and ambiguous faces.
     for (const std::uint32_t seed : {1u, 2u, 3u}) {
         SCOPED_TRACE("seed " + std::to_string(seed));
-        expect_sparse_equals_dense(sphere_cloud(seed, 300, 0.02f, 0.15f), cube(1.1f),
-                                   settings(22));
+        expect_sparse_equals_dense(sphere_cloud(seed, 300, 0.02f, 0.15f), cube(1.1f), settings(22));
         expect_sparse_equals_dense(sphere_cloud(seed, 150, 0.005f, 0.08f), cube(1.1f),
                                    settings(90));
     }
@@ -194,9 +192,8 @@ TEST(SparseMarchingCubes, EqualsDenseWhereTheFieldIsInsideAtTheBorder) {
         const BatchField hole = batch([](const glm::vec3& p) { return 0.7f - glm::length(p); });
         expect_sparse_equals_dense(hole, cube(1.0f), settings(48, padding));
     }
-    const Mesh solid =
-        sparse_marching_cubes(batch([](const glm::vec3&) { return -1.0f; }), cube(1.0f),
-                              settings(70));
+    const Mesh solid = sparse_marching_cubes(batch([](const glm::vec3&) { return -1.0f; }),
+                                             cube(1.0f), settings(70));
     expect_same_mesh(solid, marching_cubes(batch([](const glm::vec3&) { return -1.0f; }),
                                            cube(1.0f), settings(70)));
     expect_closed_manifold(solid);
@@ -234,7 +231,8 @@ TEST(SparseMarchingCubes, SameBytesWhateverTheThreadCount) {
     ASSERT_FALSE(reference.triangles.empty());
     for (const int threads : {2, 0, 3}) {
         SCOPED_TRACE("threads " + std::to_string(threads));
-        expect_same_mesh(reference, sparse_marching_cubes(field, cube(1.0f), settings(110, 2, threads)));
+        expect_same_mesh(reference,
+                         sparse_marching_cubes(field, cube(1.0f), settings(110, 2, threads)));
         expect_same_mesh(reference, marching_cubes(field, cube(1.0f), settings(110, 2, threads)));
     }
     for (int run = 0; run < 3; ++run) {
@@ -366,9 +364,9 @@ TEST(SparseMarchingCubes, FieldExceptionsReachTheCaller) {
 }
 
 TEST(SparseMarchingCubes, EmptyAndNonFiniteFieldsGiveEmptyMeshes) {
-    for (const float value : {1.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(),
-                              std::numeric_limits<float>::infinity(),
-                              -std::numeric_limits<float>::infinity()}) {
+    for (const float value :
+         {1.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(),
+          std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()}) {
         SCOPED_TRACE("value " + std::to_string(value));
         MeshingStats stats;
         MarchingCubesSettings s = settings(64);
@@ -393,8 +391,8 @@ TEST(SparseMarchingCubes, FieldBreakingTheDistanceBoundStillGivesAValidMesh) {
         hash ^= hash >> 12;
         return (float(hash >> 8) / 8388608.0f - 1.0f) * 40.0f;
     });
-    const Mesh mesh = sparse_marching_cubes(noise, {glm::vec3(0.0f), glm::vec3(40.0f)},
-                                            settings(40, 0));
+    const Mesh mesh =
+        sparse_marching_cubes(noise, {glm::vec3(0.0f), glm::vec3(40.0f)}, settings(40, 0));
     EXPECT_FALSE(mesh.triangles.empty());
     for (const auto& t : mesh.triangles) {
         for (const std::uint32_t v : t) ASSERT_LT(v, mesh.positions.size());

@@ -1,4 +1,3 @@
-#include "closed_manifold.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "closed_manifold.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"

@@ -1,13 +1,12 @@
 // Capped-cone distance: signs and values at known points, and the culled union field.
-#include "sdf/capped_cone.h"
-#include "sdf/cone_field.h"
-
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <random>
+
+#include "sdf/capped_cone.h"
+#include "sdf/cone_field.h"
 
 namespace sylva {
 namespace {
@@ -15,15 +14,15 @@ namespace {
 const CappedCone kCone{{0, 0, 0}, {0, 2, 0}, 1.0f, 0.5f};
 
 TEST(CappedCone, SignsAtKnownPoints) {
-    EXPECT_LT(distance(kCone, {0, 1, 0}), 0.0f);      // on the axis
+    EXPECT_LT(distance(kCone, {0, 1, 0}), 0.0f);        // on the axis
     EXPECT_LT(distance(kCone, {0.7f, 0.2f, 0}), 0.0f);  // near the wide base
     EXPECT_GT(distance(kCone, {0.7f, 1.9f, 0}), 0.0f);  // beside the narrow top
-    EXPECT_GT(distance(kCone, {0, 3, 0}), 0.0f);      // above
-    EXPECT_GT(distance(kCone, {0, -1, 0}), 0.0f);     // below
+    EXPECT_GT(distance(kCone, {0, 3, 0}), 0.0f);        // above
+    EXPECT_GT(distance(kCone, {0, -1, 0}), 0.0f);       // below
 }
 
 TEST(CappedCone, ExactDistancesOnTheAxisAndSides) {
-    EXPECT_NEAR(distance(kCone, {0, 3, 0}), 1.0f, 1e-5);    // above the top cap
+    EXPECT_NEAR(distance(kCone, {0, 3, 0}), 1.0f, 1e-5);      // above the top cap
     EXPECT_NEAR(distance(kCone, {0, -0.5f, 0}), 0.5f, 1e-5);  // below the base
     // On the axis at mid-height the slanted side (radius 0.75 there) is nearer than the
     // caps: 0.75 * cos(slope), slope = atan(0.5 / 2).

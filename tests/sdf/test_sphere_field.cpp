@@ -1,13 +1,12 @@
 // The crown field: root smooth min properties and the culled field against brute force.
-#include "sdf/sphere_field.h"
-
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <random>
+
+#include "sdf/sphere_field.h"
 
 namespace sylva {
 namespace {

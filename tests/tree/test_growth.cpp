@@ -65,9 +65,11 @@ TEST(Growth, TheGrammarsFirstLineIsFoundInTheFile) {
     EXPECT_EQ(parse_template_file("name = \"t\"\n\ngrammar = '''\naxiom: F\n'''\n", "t.toml")
                   .grammar_line,
               4);
-    EXPECT_EQ(parse_template_file("name = \"t\"\ngrammar = 'axiom: F'\n", "t.toml").grammar_line, 2);
-    EXPECT_EQ(parse_template_file("name = \"t\"\ngrammar = '''axiom: F\n'''\n", "t.toml").grammar_line,
+    EXPECT_EQ(parse_template_file("name = \"t\"\ngrammar = 'axiom: F'\n", "t.toml").grammar_line,
               2);
+    EXPECT_EQ(
+        parse_template_file("name = \"t\"\ngrammar = '''axiom: F\n'''\n", "t.toml").grammar_line,
+        2);
 }
 
 TEST(Cancel, ASetFlagStopsTheGrowthStage) {

@@ -1,22 +1,23 @@
 // Leaves: placed only inside the crown, as many as the density asks, the same for the same
 // seed, and each shape drawn from both sides.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "marching/mesh_checks.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
-#include "marching/mesh_checks.h"
-
-#include <gtest/gtest.h>
-
-#include <glm/geometric.hpp>
-
-#include <cmath>
-#include <numbers>
 
 namespace sylva {
 namespace {
 
 // A ball of radius 2 at the origin as the crown.
-float ball(const glm::vec3& p) { return glm::length(p) - 2.0f; }
+float ball(const glm::vec3& p) {
+    return glm::length(p) - 2.0f;
+}
 const Box kBox{glm::vec3(-2.5f), glm::vec3(2.5f)};
 
 std::size_t leaf_count(const Mesh& leaves, LeafShape shape) {
@@ -66,7 +67,8 @@ TEST(Leaves, SameSeedSameLeavesOtherSeedOtherLeaves) {
 }
 
 TEST(Leaves, EveryShapeAndTheCapHold) {
-    for (LeafShape shape : {LeafShape::Round, LeafShape::Oak, LeafShape::Needle, LeafShape::Frond}) {
+    for (LeafShape shape :
+         {LeafShape::Round, LeafShape::Oak, LeafShape::Needle, LeafShape::Frond}) {
         LeafSettings s;
         s.density = 5;
         s.shape = shape;
@@ -92,7 +94,8 @@ TEST(Leaves, LeavesOnlyModeAndPaskoCrown) {
     t.params.crown_fusion = 0.05;
     Tree pasko = generate_tree(t);
     EXPECT_GT(pasko.crown.triangles.size(), 0u);
-    EXPECT_TRUE(check_topology(pasko.crown).is_closed_manifold()) << to_string(check_topology(pasko.crown));
+    EXPECT_TRUE(check_topology(pasko.crown).is_closed_manifold())
+        << to_string(check_topology(pasko.crown));
 }
 
 TEST(TrunkJoints, BlendRadiusAddsMaterialAndStaysClosed) {

@@ -1,21 +1,20 @@
 // Every built-in template, at resolutions from 10 to 300, meshed by each mesher: closed
 // 2-manifold meshes inside the padded box, and the meshers agree on the surface.
-#include "tree/growth.h"
-#include "tree/pipeline.h"
-#include "tree/template_library.h"
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <glm/geometric.hpp>
+#include <string>
+#include <unordered_map>
+
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
 #include "marching/vdb_mesher.h"
-
-#include <gtest/gtest.h>
-
-#include <glm/geometric.hpp>
-
-#include <cmath>
-#include <functional>
-#include <string>
-#include <unordered_map>
+#include "tree/growth.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
 
 namespace sylva {
 namespace {
@@ -27,8 +26,10 @@ struct Part {
 };
 
 std::vector<Part> parts_of(const TreeFields& f) {
-    std::vector<Part> parts{{"trunk", f.trunk_box, [&](const glm::vec3& p) { return (*f.trunk)(p); }}};
-    if (f.crown) parts.push_back({"crown", f.crown_box, [&](const glm::vec3& p) { return (*f.crown)(p); }});
+    std::vector<Part> parts{
+        {"trunk", f.trunk_box, [&](const glm::vec3& p) { return (*f.trunk)(p); }}};
+    if (f.crown)
+        parts.push_back({"crown", f.crown_box, [&](const glm::vec3& p) { return (*f.crown)(p); }});
     return parts;
 }
 
@@ -39,9 +40,12 @@ Mesh mesh_with(Mesher mesher, const Part& part, int resolution) {
     MarchingCubesSettings settings;
     settings.resolution = resolution;
     switch (mesher) {
-        case Mesher::Dense: return marching_cubes(batch, part.box, settings);
-        case Mesher::Sparse: return sparse_marching_cubes(batch, part.box, settings);
-        case Mesher::Vdb: return vdb_mesh(batch, part.box, settings);
+        case Mesher::Dense:
+            return marching_cubes(batch, part.box, settings);
+        case Mesher::Sparse:
+            return sparse_marching_cubes(batch, part.box, settings);
+        case Mesher::Vdb:
+            return vdb_mesh(batch, part.box, settings);
     }
     return {};
 }

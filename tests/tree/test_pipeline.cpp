@@ -1,23 +1,21 @@
 // The pipeline end to end: the default tree becomes a closed mesh, its OBJ reads back as
 // the same closed mesh, parameters are validated, and failed writes leave nothing behind.
-#include "core/atomic_file.h"
-#include "core/errors.h"
-#include "export/obj_writer.h"
-#include "tree/pipeline.h"
-#include "tree/template_library.h"
-#include "marching/mesh_checks.h"
-#include "core/errors.h"
-
 #include <gtest/gtest.h>
-
-#include <glm/vector_relational.hpp>
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <glm/vector_relational.hpp>
 #include <limits>
 #include <sstream>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "export/obj_writer.h"
+#include "marching/mesh_checks.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
 
 namespace sylva {
 namespace {

@@ -1,12 +1,12 @@
 // Template files: every built-in parses, errors name file, line and key, and saving then
 // loading gives the same template.
-#include "core/errors.h"
-#include "tree/template_file.h"
-#include "tree/template_library.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "core/errors.h"
+#include "tree/template_file.h"
+#include "tree/template_library.h"
 
 namespace sylva {
 namespace {
@@ -76,7 +76,8 @@ TEST(TemplateFile, TheLibraryHasTheSpeciesTheIssueAsksFor) {
                              "willow", "pine", "baobab", "cypress"})
         EXPECT_NO_THROW(load_template(name)) << name;
     EXPECT_EQ(default_template().name, "oak");
-    for (const TreeTemplate* t : builtin_templates()) EXPECT_FALSE(t->description.empty()) << t->name;
+    for (const TreeTemplate* t : builtin_templates())
+        EXPECT_FALSE(t->description.empty()) << t->name;
 }
 
 }  // namespace

@@ -1,16 +1,15 @@
 // Built-in templates grow what they promise.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <map>
+#include <set>
+
+#include "marching/mesh_checks.h"
 #include "tree/growth.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
-#include "marching/mesh_checks.h"
-
-#include <gtest/gtest.h>
-
-#include <glm/geometric.hpp>
-
-#include <cmath>
-#include <map>
-#include <set>
 
 namespace sylva {
 namespace {
@@ -75,10 +74,9 @@ TEST(Sliders, EverySeed001ParameterChangesTheSpruce) {
     TreeTemplate spruce = load_template("spruce");
     spruce.params.trunk_resolution = spruce.params.crown_resolution = 24;
     const std::vector<float> base = fingerprint(generate_tree(spruce));
-    const char* keys[] = {"trunk_resolution", "crown_resolution", "branch_length",
-                          "branch_width",     "trunk_taper",      "branch_taper",
-                          "sphere_diameter",  "crown_offset",     "crown_fusion",
-                          "generations",      "pitch_angle",      "yaw_angle"};
+    const char* keys[] = {"trunk_resolution", "crown_resolution", "branch_length",   "branch_width",
+                          "trunk_taper",      "branch_taper",     "sphere_diameter", "crown_offset",
+                          "crown_fusion",     "generations",      "pitch_angle",     "yaw_angle"};
     for (const char* key : keys) {
         TreeTemplate changed = spruce;
         double value = *get_param(changed.params, key);
@@ -90,7 +88,8 @@ TEST(Sliders, EverySeed001ParameterChangesTheSpruce) {
         double step = info->integer ? std::max(1.0, std::round(value * 0.2)) : value * 0.2;
         double next = value + step <= info->max ? value + step : value - step;
         set_param(changed.params, key, next);
-        EXPECT_NE(fingerprint(generate_tree(changed)), base) << key << " " << value << " -> " << next;
+        EXPECT_NE(fingerprint(generate_tree(changed)), base)
+            << key << " " << value << " -> " << next;
     }
 }
 

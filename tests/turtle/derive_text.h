@@ -1,10 +1,10 @@
 // Test helper: derive a grammar given as text.
 #pragma once
 
+#include <string>
+
 #include "turtle/derivation.h"
 #include "turtle/lsystem_parser.h"
-
-#include <string>
 
 namespace sylva {
 

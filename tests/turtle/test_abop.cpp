@@ -1,14 +1,14 @@
 // Grammars from ABOP (Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants),
 // checked against independent computations rather than against Sylva's own output.
-#include "derive_text.h"
-#include "turtle/derivation.h"
-#include "turtle/lsystem_parser.h"
-#include "turtle/turtle.h"
-
 #include <gtest/gtest.h>
 
 #include <map>
 #include <string>
+
+#include "derive_text.h"
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
+#include "turtle/turtle.h"
 
 namespace sylva {
 namespace {
@@ -23,7 +23,8 @@ std::size_t parikh_length(const std::string& axiom, const std::map<char, std::st
         std::map<char, std::size_t> next;
         for (auto [symbol, n] : counts) {
             auto rule = rules.find(symbol);
-            if (rule == rules.end()) next[symbol] += n;
+            if (rule == rules.end())
+                next[symbol] += n;
             else
                 for (char c : rule->second) next[c] += n;
         }
@@ -73,9 +74,12 @@ std::string reference_step(const std::string& w, const std::vector<ContextRule>&
         int depth = 0;
         for (size_t k = i; k-- > 0;) {
             char c = w[k];
-            if (c == ']') ++depth;
-            else if (c == '[') { if (depth > 0) --depth; }
-            else if (depth == 0 && !ignored(c)) return c;
+            if (c == ']')
+                ++depth;
+            else if (c == '[') {
+                if (depth > 0) --depth;
+            } else if (depth == 0 && !ignored(c))
+                return c;
         }
         return 0;
     };
@@ -83,9 +87,13 @@ std::string reference_step(const std::string& w, const std::vector<ContextRule>&
         int depth = 0;
         for (size_t k = i + 1; k < w.size(); ++k) {
             char c = w[k];
-            if (c == '[') ++depth;
-            else if (c == ']') { if (depth == 0) return 0; --depth; }
-            else if (depth == 0 && !ignored(c)) return c;
+            if (c == '[')
+                ++depth;
+            else if (c == ']') {
+                if (depth == 0) return 0;
+                --depth;
+            } else if (depth == 0 && !ignored(c))
+                return c;
         }
         return 0;
     };
@@ -118,11 +126,11 @@ axiom: F1F1F1
 * < + > * -> -
 * < - > * -> +
 )";
-    const std::vector<ContextRule> rules = {
-        {'0', '0', '0', "0"}, {'0', '0', '1', "1[+F1F1]"}, {'0', '1', '0', "1"},
-        {'0', '1', '1', "1"}, {'1', '0', '0', "0"},        {'1', '0', '1', "1F1"},
-        {'1', '1', '0', "1"}, {'1', '1', '1', "0"},        {0, '+', 0, "-"},
-        {0, '-', 0, "+"}};
+    const std::vector<ContextRule> rules = {{'0', '0', '0', "0"}, {'0', '0', '1', "1[+F1F1]"},
+                                            {'0', '1', '0', "1"}, {'0', '1', '1', "1"},
+                                            {'1', '0', '0', "0"}, {'1', '0', '1', "1F1"},
+                                            {'1', '1', '0', "1"}, {'1', '1', '1', "0"},
+                                            {0, '+', 0, "-"},     {0, '-', 0, "+"}};
     std::string reference = "F1F1F1";
     for (int step = 1; step <= 30; ++step) reference = reference_step(reference, rules, "+-F");
     Word w = derive_text(grammar, 30);
@@ -155,8 +163,8 @@ C(l,w) : * -> !(w)F(l)[+(a2)$B(l*r2,w*wr)]B(l*r1,w*wr)
 
 TEST(Abop, StochasticRuleFrequenciesPassChiSquare) {
     // 6000 A's rewritten once by rules weighted 1:2:3.
-    const std::string grammar = "axiom: " + std::string(6000, 'A') +
-                                "\nA -> X : 1\nA -> Y : 2\nA -> Z : 3\n";
+    const std::string grammar =
+        "axiom: " + std::string(6000, 'A') + "\nA -> X : 1\nA -> Y : 2\nA -> Z : 3\n";
     Word w = derive_text(grammar, 1, 12345);
     const double observed[3] = {double(w.count('X')), double(w.count('Y')), double(w.count('Z'))};
     const double expected[3] = {1000, 2000, 3000};

@@ -1,13 +1,13 @@
 // L-system parsing and derivation: known words from ABOP and seed 001, errors that name
 // their place, and the size cap.
-#include "derive_text.h"
-#include "turtle/derivation.h"
-#include "core/errors.h"
-#include "turtle/lsystem_parser.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "core/errors.h"
+#include "derive_text.h"
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
 
 namespace sylva {
 namespace {
@@ -43,9 +43,10 @@ TEST(LSystem, RulesMatchOnArity) {
 }
 
 TEST(LSystem, DefinesAndFunctions) {
-    Word w = derive_text("#define r 0.5  # a comment\naxiom: A(8)\n"
-                         "A(x) -> A(max(x*r, 3) + sqrt(4) - abs(-1) + floor(0.7))\n",
-                         2);
+    Word w = derive_text(
+        "#define r 0.5  # a comment\naxiom: A(8)\n"
+        "A(x) -> A(max(x*r, 3) + sqrt(4) - abs(-1) + floor(0.7))\n",
+        2);
     EXPECT_EQ(w.to_string(), "A(4)");  // 8 -> max(4,3)+2-1+0 = 5 -> max(2.5,3)+2-1+0 = 4
 }
 
@@ -75,9 +76,9 @@ TEST(LSystem, Seed001RuleFormat) {
 }
 
 TEST(LSystem, StochasticWordIsReproducibleAndSeedDependent) {
-    const std::string grammar =
-        "axiom: F\nF -> F[+F]F : 1\nF -> F[-F]F : 1\nF -> FF : 1\n";
-    Word a = derive_text(grammar, 5, 7), b = derive_text(grammar, 5, 7), c = derive_text(grammar, 5, 8);
+    const std::string grammar = "axiom: F\nF -> F[+F]F : 1\nF -> F[-F]F : 1\nF -> FF : 1\n";
+    Word a = derive_text(grammar, 5, 7), b = derive_text(grammar, 5, 7),
+         c = derive_text(grammar, 5, 8);
     EXPECT_EQ(a.to_string(), b.to_string());
     EXPECT_NE(a.to_string(), c.to_string());
 }
@@ -148,7 +149,8 @@ TEST(LSystemErrors, ExplosiveGrammarStopsAtTheCapNamingStepAndSize) {
 }
 
 TEST(LSystemErrors, DeeplyNestedExpressionIsRejectedNotACrash) {
-    std::string deep = "axiom: F(" + std::string(100000, '(') + "1" + std::string(100000, ')') + ")";
+    std::string deep =
+        "axiom: F(" + std::string(100000, '(') + "1" + std::string(100000, ')') + ")";
     EXPECT_THROW(parse_lsystem(deep), GrammarError);
     std::string minus = "axiom: F(" + std::string(100000, '-') + "1)";
     EXPECT_THROW(parse_lsystem(minus), GrammarError);

@@ -1,14 +1,13 @@
 // Turtle interpretation: endpoints follow SPEC section 2's frame and formulas.
-#include "turtle/derivation.h"
-#include "core/errors.h"
-#include "turtle/lsystem_parser.h"
-#include "turtle/turtle.h"
-
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 
-#include <cmath>
+#include "core/errors.h"
+#include "turtle/derivation.h"
+#include "turtle/lsystem_parser.h"
+#include "turtle/turtle.h"
 
 namespace sylva {
 namespace {

@@ -1,9 +1,9 @@
 // sylva-studio's command line: the screenshot mode scripts and tests rely on.
-#include "ui/studio_options.h"
-
 #include <gtest/gtest.h>
 
 #include <vector>
+
+#include "ui/studio_options.h"
 
 namespace sylva::studio {
 namespace {

@@ -1,15 +1,14 @@
 // The studio's state without a window: edits, undo / redo, background generation with
 // cancel, the error boundary that keeps the last good tree, and export. These are what the
 // panels call every frame, so they are tested as the main loop drives them: poll, act, poll.
-#include "ui/studio_state.h"
-
-#include "tree/template_library.h"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <filesystem>
 #include <thread>
+
+#include "tree/template_library.h"
+#include "ui/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -32,7 +31,8 @@ StudioState state_with(const TreeTemplate& t) {
 }
 
 // The main loop's part: poll until no generation runs (or time runs out).
-bool wait_for_generations(StudioState& state, std::chrono::seconds limit = std::chrono::seconds(60)) {
+bool wait_for_generations(StudioState& state,
+                          std::chrono::seconds limit = std::chrono::seconds(60)) {
     const Clock::time_point end = Clock::now() + limit;
     while (Clock::now() < end) {
         poll_jobs(state);
