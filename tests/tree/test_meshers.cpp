@@ -4,9 +4,8 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "marching/grid.h"
-#include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
-#include "marching/vdb_mesher.h"
+#include "marching/mesher.h"
 
 #include <gtest/gtest.h>
 
@@ -36,14 +35,10 @@ Mesh mesh_with(Mesher mesher, const Part& part, int resolution) {
     BatchField batch = [&](std::span<const glm::vec3> points, std::span<float> values) {
         for (size_t i = 0; i < points.size(); ++i) values[i] = part.field(points[i]);
     };
-    MarchingCubesSettings settings;
+    MeshSettings settings;
+    settings.mesher = mesher;
     settings.resolution = resolution;
-    switch (mesher) {
-        case Mesher::Dense: return marching_cubes(batch, part.box, settings);
-        case Mesher::Sparse: return sparse_marching_cubes(batch, part.box, settings);
-        case Mesher::Vdb: return vdb_mesh(batch, part.box, settings);
-    }
-    return {};
+    return mesh(batch, part.box, settings);
 }
 
 // Largest distance from a vertex of `a` to the nearest vertex of `b` (a spatial hash with
@@ -81,7 +76,7 @@ TEST_P(EveryTemplate, ClosedInsideTheBoxAndMeshersAgree) {
         TreeFields fields = tree_fields(skeleton, params);
         for (const Part& part : parts_of(fields)) {
             SCOPED_TRACE(t->name + " " + part.name + " at " + std::to_string(resolution));
-            MarchingCubesSettings settings;
+            MeshSettings settings;
             settings.resolution = resolution;
             Grid grid = make_grid(part.box, settings);
             glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
@@ -136,7 +131,7 @@ TEST(Boxes, StrongBlendsAreNeverClippedByTheGrid) {
     TreeFields fields = tree_fields(skeleton, t.params);
     for (const Part& part : parts_of(fields)) {
         SCOPED_TRACE(part.name);
-        MarchingCubesSettings settings;
+        MeshSettings settings;
         settings.resolution = 200;
         Grid grid = make_grid(part.box, settings);
         glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
