@@ -14,6 +14,7 @@
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
 #include "marching/mesh_checks.h"
+#include "marching/mesher.h"
 #include "tree/growth.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"

@@ -25,9 +25,8 @@
 #include <vector>
 
 #include "marching/grid.h"
-#include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
-#include "marching/vdb_mesher.h"
+#include "marching/mesher.h"
 #include "sdf/capped_cone.h"
 #include "sdf/sphere_field.h"
 #include "tree/growth.h"
@@ -100,7 +99,7 @@ BatchField batch_of(const std::function<float(const glm::vec3&)>& f) {
 // Returns the number of cubes the surface crosses (the triangles themselves are not built:
 // their cost is negligible next to the evaluations).
 std::size_t baseline(const Part& part, int resolution) {
-    MarchingCubesSettings settings;
+    MeshSettings settings;
     settings.resolution = resolution;
     Grid grid = make_grid(part.box, settings);
     std::atomic<std::size_t> crossing{0};
@@ -134,22 +133,13 @@ Measure run_mesher(Mesher mesher, const Part& part, int resolution, int repetiti
     BatchField field = batch_of(part.culled);
     Mesh mesh;
     MeshingStats stats;
-    MarchingCubesSettings settings;
+    MeshSettings settings;
+    settings.mesher = mesher;
     settings.resolution = resolution;
     settings.stats = &stats;
     m.seconds = best_of(repetitions, [&] {
         stats = {};
-        switch (mesher) {
-            case Mesher::Dense:
-                mesh = marching_cubes(field, part.box, settings);
-                break;
-            case Mesher::Sparse:
-                mesh = sparse_marching_cubes(field, part.box, settings);
-                break;
-            case Mesher::Vdb:
-                mesh = vdb_mesh(field, part.box, settings);
-                break;
-        }
+        mesh = sylva::mesh(field, part.box, settings);
     });
     m.triangles = mesh.triangles.size();
     m.evaluations = stats.evaluations;

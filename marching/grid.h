@@ -5,7 +5,7 @@
 #include <array>
 #include <glm/vec3.hpp>
 
-#include "marching/marching_cubes.h"
+#include "marching/mesher.h"
 
 namespace sylva {
 
@@ -20,8 +20,8 @@ struct Grid {
 // Cubic cells of size h = longest box side / resolution over the box grown by
 // padding_cells * h on every side; on the shorter axes the grid is widened, symmetrically,
 // by less than one cell to a whole number of cells.
-// Throws std::invalid_argument when resolution < 1, padding_cells < 0, or the box is empty
-// or not finite.
-Grid make_grid(const Box& box, const MarchingCubesSettings& settings);
+// Throws InputError when resolution < 1, padding_cells < 0, or the box is empty or not
+// finite.
+Grid make_grid(const Box& box, const MeshSettings& settings);
 
 }  // namespace sylva

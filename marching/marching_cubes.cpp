@@ -26,7 +26,7 @@ using detail::MeshingRun;
 // and keep the points in cache.
 constexpr std::size_t kBatchPoints = 4096;
 
-Mesh mesh_dense(const BatchField& field, const Box& box, const MarchingCubesSettings& settings,
+Mesh mesh_dense(const BatchField& field, const Box& box, const MeshSettings& settings,
                 bool serial) {
     const BlockGrid g(make_grid(box, settings));
     MeshingRun run(settings, serial);
@@ -102,13 +102,11 @@ Mesh mesh_dense(const BatchField& field, const Box& box, const MarchingCubesSett
 
 }  // namespace
 
-Mesh marching_cubes(const BatchField& field, const Box& box,
-                    const MarchingCubesSettings& settings) {
+Mesh marching_cubes(const BatchField& field, const Box& box, const MeshSettings& settings) {
     return mesh_dense(field, box, settings, false);
 }
 
-Mesh marching_cubes(const ScalarField& field, const Box& box,
-                    const MarchingCubesSettings& settings) {
+Mesh marching_cubes(const ScalarField& field, const Box& box, const MeshSettings& settings) {
     const BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
         for (std::size_t i = 0; i < points.size(); ++i) values[i] = field(points[i]);
     };

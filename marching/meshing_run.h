@@ -1,6 +1,6 @@
 // How one meshing call runs: on how many threads, how it reports progress, when it stops
-// for a cancel request and what it counts. Shared by the dense and sparse meshers so they
-// honour MarchingCubesSettings the same way.
+// for a cancel request and what it counts. Shared by every mesher (dense, sparse, OpenVDB)
+// so they honour MeshSettings the same way.
 #pragma once
 
 #include <tbb/blocked_range.h>
@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <mutex>
 
-#include "marching/marching_cubes.h"
+#include "marching/mesher.h"
 
 namespace sylva::detail {
 
@@ -20,8 +20,7 @@ class MeshingRun {
   public:
     // `serial` runs every loop on the calling thread, whatever settings.threads says (the
     // ScalarField overload promises that to fields that are not thread-safe).
-    MeshingRun(const MarchingCubesSettings& settings, bool serial)
-        : settings_(settings), serial_(serial) {}
+    MeshingRun(const MeshSettings& settings, bool serial) : settings_(settings), serial_(serial) {}
 
     // Runs `work` in an arena of settings.threads workers (0: the caller's arena).
     template <class Work>
@@ -67,13 +66,10 @@ class MeshingRun {
         evaluations_.fetch_add(points.size(), std::memory_order_relaxed);
     }
 
-    bool cancelled() const {
-        return settings_.cancel && settings_.cancel->load(std::memory_order_relaxed);
-    }
+    bool cancelled() const { return is_cancelled(settings_.cancel); }
 
-    void throw_if_cancelled() const {
-        if (cancelled()) throw Cancelled{};
-    }
+    // Also between phases, and around work that cannot poll (a library call).
+    void throw_if_cancelled() const { sylva::throw_if_cancelled(settings_.cancel); }
 
     // Progress runs through phases: phase fraction done/units maps to [start, start + weight].
     // Called from the calling thread between parallel loops.
@@ -109,7 +105,7 @@ class MeshingRun {
         settings_.progress(reported_);
     }
 
-    const MarchingCubesSettings& settings_;
+    const MeshSettings& settings_;
     const bool serial_;
     std::atomic<std::size_t> evaluations_{0};
     float phase_start_ = 0.0f;

@@ -365,8 +365,7 @@ std::vector<std::pair<std::uint64_t, Candidate>> candidate_blocks(
 
 }  // namespace
 
-Mesh sparse_marching_cubes(const BatchField& field, const Box& box,
-                           const MarchingCubesSettings& settings) {
+Mesh sparse_marching_cubes(const BatchField& field, const Box& box, const MeshSettings& settings) {
     const BlockGrid g(make_grid(box, settings));
     MeshingRun run(settings, false);
     run.throw_if_cancelled();

@@ -3,17 +3,12 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tools/VolumeToMesh.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <memory>
@@ -22,11 +17,14 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "marching/grid.h"
+#include "marching/meshing_run.h"
 
 namespace sylva {
 namespace {
 
+using detail::MeshingRun;
 using Leaf = openvdb::FloatTree::LeafNodeType;
 constexpr int kDim = int(Leaf::DIM);  // 8: one sampling block is one OpenVDB leaf
 
@@ -35,39 +33,6 @@ constexpr int kDim = int(Leaf::DIM);  // 8: one sampling block is one OpenVDB le
 // cheap analytic sphere.
 constexpr float kSampledFraction = 0.6f;
 constexpr float kMeshedFraction = 0.95f;
-
-// Forwards fractions to the caller's callback, never going backwards even when workers
-// finish out of order, and without making workers wait on each other.
-class Progress {
-  public:
-    explicit Progress(const std::function<void(float)>& callback) : callback_(callback) {}
-
-    void report(float fraction) {
-        if (!callback_) return;
-        std::unique_lock lock(mutex_, std::try_to_lock);
-        if (!lock.owns_lock() || fraction <= last_) return;
-        last_ = fraction;
-        callback_(fraction);
-    }
-
-    // The phase boundaries must not be dropped by a busy lock.
-    void report_blocking(float fraction) {
-        if (!callback_) return;
-        std::lock_guard lock(mutex_);
-        if (fraction <= last_) return;
-        last_ = fraction;
-        callback_(fraction);
-    }
-
-  private:
-    const std::function<void(float)>& callback_;
-    std::mutex mutex_;
-    float last_ = -1.0f;
-};
-
-bool cancelled(const MarchingCubesSettings& settings) {
-    return settings.cancel && settings.cancel->load(std::memory_order_relaxed);
-}
 
 // Smallest sample magnitude, in cells (see Sampler::away_from_zero).
 constexpr double kMinFraction = 0.01;
@@ -84,8 +49,10 @@ struct Block {
 // than whole blocks for a band of 3 cells, for 8 more per block).
 class Sampler {
   public:
-    Sampler(const BatchField& field, const Grid& grid, float band, float background)
+    Sampler(const BatchField& field, MeshingRun& run, const Grid& grid, float band,
+            float background)
         : field_(field),
+          run_(run),
           grid_(grid),
           band_(band),
           background_(background),
@@ -102,13 +69,12 @@ class Sampler {
         return openvdb::Coord(i * kDim, j * kDim, k * kDim);
     }
 
-    // Samples blocks [begin, end) into out[begin, end); returns the field evaluations made.
-    std::size_t sample(std::size_t begin, std::size_t end, std::vector<Block>& out) const {
+    // Samples blocks [begin, end) into out[begin, end); the run counts the evaluations.
+    void sample(std::size_t begin, std::size_t end, std::vector<Block>& out) const {
         Scratch scratch;
         // All block centres of the range in one batch.
         for (std::size_t b = begin; b < end; ++b) add_centre(block_origin(b), kDim, scratch);
         evaluate(scratch);
-        std::size_t evaluations = scratch.points.size();
         const std::vector<float> centres = scratch.values;
 
         for (std::size_t b = begin; b < end; ++b) {
@@ -120,11 +86,10 @@ class Sampler {
                     out[b].inside = true;
                     break;
                 case Verdict::Sample:
-                    evaluations += sample_block(o, out[b], scratch);
+                    sample_block(o, out[b], scratch);
                     break;
             }
         }
-        return evaluations;
     }
 
   private:
@@ -144,7 +109,7 @@ class Sampler {
 
     void evaluate(Scratch& scratch) const {
         scratch.values.resize(scratch.points.size());
-        field_(scratch.points, scratch.values);
+        run_.evaluate(field_, scratch.points, scratch.values);
     }
 
     // What the centre value of the cube of size^3 nodes at `o` proves about its nodes.
@@ -189,7 +154,7 @@ class Sampler {
         }
     }
 
-    std::size_t sample_block(const openvdb::Coord& o, Block& block, Scratch& scratch) const {
+    void sample_block(const openvdb::Coord& o, Block& block, Scratch& scratch) const {
         std::array<openvdb::Coord, 8> subs;
         scratch.points.clear();
         for (int s = 0; s < 8; ++s) {
@@ -197,7 +162,6 @@ class Sampler {
             add_centre(subs[s], kSub, scratch);
         }
         evaluate(scratch);
-        std::size_t evaluations = scratch.points.size();
         std::array<Verdict, 8> verdicts;
         int outside = 0, inside = 0;
         for (int s = 0; s < 8; ++s) {
@@ -205,10 +169,10 @@ class Sampler {
             outside += verdicts[s] == Verdict::Outside;
             inside += verdicts[s] == Verdict::Inside;
         }
-        if (outside == 8) return evaluations;
+        if (outside == 8) return;
         if (inside == 8) {
             block.inside = true;
-            return evaluations;
+            return;
         }
 
         // The sub-blocks near the surface, all in one batch.
@@ -220,7 +184,6 @@ class Sampler {
             });
         }
         evaluate(scratch);
-        evaluations += scratch.points.size();
 
         // Nodes beyond the grid keep the outside background.
         block.leaf = std::make_unique<Leaf>(o, background_, false);
@@ -237,7 +200,6 @@ class Sampler {
                 });
             }
         }
-        return evaluations;
     }
 
     void set_sample(Leaf& leaf, const openvdb::Coord& ijk, float v) const {
@@ -274,6 +236,7 @@ class Sampler {
     }
 
     const BatchField& field_;
+    MeshingRun& run_;
     const Grid& grid_;
     const float band_;
     const float background_;
@@ -348,36 +311,26 @@ void drop_unused_vertices(Mesh& mesh) {
     }
 }
 
-// The whole run, on the current arena.
-Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings& settings,
-         const VdbSettings& vdb) {
+// Samples, meshes and fills the stats, in the run's arena.
+Mesh sample_and_mesh(const BatchField& field, const Grid& grid, const MeshSettings& settings,
+                     MeshingRun& run) {
+    const VdbSettings& vdb = settings.vdb;
     const float band = float(vdb.band_voxels * grid.h);
     const float background = band;
-    Progress progress(settings.progress);
-    if (cancelled(settings)) throw Cancelled{};
 
     // Sampling: blocks are independent and their results land in fixed slots, so the tree
     // built from them does not depend on the schedule.
-    const Sampler sampler(field, grid, band, background);
+    const Sampler sampler(field, run, grid, band, background);
     const std::size_t block_count = sampler.block_count();
     std::vector<Block> blocks(block_count);
-    std::atomic<std::size_t> evaluations{0}, done{0};
-    std::atomic<bool> stop{false};
-    constexpr std::size_t kGrain = 64;
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, block_count, kGrain),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-            if (stop.load(std::memory_order_relaxed)) return;
-            if (cancelled(settings)) {
-                stop = true;
-                return;
-            }
-            evaluations += sampler.sample(range.begin(), range.end(), blocks);
-            const std::size_t finished = done += range.size();
-            progress.report(kSampledFraction * float(finished) / float(block_count));
-        },
-        tbb::simple_partitioner());
-    if (stop || cancelled(settings)) throw Cancelled{};
+    constexpr std::size_t kBlocksPerTask = 64;
+    run.begin_phase(0.0f, kSampledFraction, block_count);
+    run.for_each((block_count + kBlocksPerTask - 1) / kBlocksPerTask, [&](std::size_t task) {
+        const std::size_t begin = task * kBlocksPerTask;
+        const std::size_t end = std::min(begin + kBlocksPerTask, block_count);
+        sampler.sample(begin, end, blocks);
+        run.advance(end - begin);
+    });
 
     openvdb::FloatGrid::Ptr level_set = openvdb::FloatGrid::create(background);
     openvdb::math::Transform::Ptr transform =
@@ -398,48 +351,50 @@ Mesh run(const BatchField& field, const Grid& grid, const MarchingCubesSettings&
     blocks = std::vector<Block>();
     // Merges the inside tiles (and leaves with nothing active) into coarser tiles.
     openvdb::tools::pruneLevelSet(tree);
-    progress.report_blocking(kSampledFraction);
-    if (cancelled(settings)) throw Cancelled{};
+    // volumeToMesh is one unit: it cannot report or poll, so the run does both around it.
+    run.begin_phase(kSampledFraction, kMeshedFraction - kSampledFraction, 1);
+    run.throw_if_cancelled();
 
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
     std::vector<openvdb::Vec4I> quads;
     openvdb::tools::volumeToMesh(*level_set, points, triangles, quads, 0.0, vdb.adaptivity);
     level_set.reset();
-    progress.report_blocking(kMeshedFraction);
-    if (cancelled(settings)) throw Cancelled{};
+    run.advance();
+    run.throw_if_cancelled();
 
     Mesh mesh = to_mesh(points, triangles, quads);
     drop_unused_vertices(mesh);
     if (settings.stats) {
-        settings.stats->evaluations = evaluations;
+        settings.stats->evaluations = run.evaluations();
         settings.stats->blocks_total = block_count;
         settings.stats->blocks_meshed = sampled_blocks;
     }
-    progress.report_blocking(1.0f);
     return mesh;
 }
 
 }  // namespace
 
-Mesh vdb_mesh(const BatchField& field, const Box& box, const MarchingCubesSettings& settings,
-              const VdbSettings& vdb) {
+Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& settings) {
     const Grid grid = make_grid(box, settings);
+    const VdbSettings& vdb = settings.vdb;
     if (!(vdb.adaptivity >= 0.0 && vdb.adaptivity <= 1.0)) {
-        throw std::invalid_argument("vdb_mesh: adaptivity must be in [0, 1], got " +
-                                    std::to_string(vdb.adaptivity));
+        throw InputError("vdb_mesh: adaptivity must be in [0, 1], got " +
+                         std::to_string(vdb.adaptivity));
     }
     if (!(vdb.band_voxels >= 1.0f && std::isfinite(vdb.band_voxels))) {
-        throw std::invalid_argument("vdb_mesh: band_voxels must be at least 1, got " +
-                                    std::to_string(vdb.band_voxels));
+        throw InputError("vdb_mesh: band_voxels must be at least 1, got " +
+                         std::to_string(vdb.band_voxels));
     }
     static std::once_flag initialized;
     std::call_once(initialized, [] { openvdb::initialize(); });
 
-    // As the other meshers: threads <= 0 runs in the caller's arena (all cores by default).
-    if (settings.threads <= 0) return run(field, grid, settings, vdb);
-    tbb::task_arena arena(settings.threads);
-    return arena.execute([&] { return run(field, grid, settings, vdb); });
+    // The arena also bounds OpenVDB's own parallel loops to settings.threads.
+    MeshingRun run(settings, false);
+    run.throw_if_cancelled();
+    Mesh mesh = run.execute([&] { return sample_and_mesh(field, grid, settings, run); });
+    run.finish();
+    return mesh;
 }
 
 }  // namespace sylva

@@ -1,20 +1,12 @@
 // The OpenVDB path: the field is sampled into a sparse narrow-band level set on the same
 // grid as marching_cubes() and meshed by openvdb::tools::volumeToMesh, whose quads are
-// split into triangles. Adaptivity > 0 merges flat regions into larger polygons.
+// split into triangles. Adaptivity > 0 merges flat regions into larger polygons. Its own
+// settings are MeshSettings::vdb.
 #pragma once
 
-#include "marching/marching_cubes.h"
+#include "marching/mesher.h"
 
 namespace sylva {
-
-struct VdbSettings {
-    // openvdb::tools::volumeToMesh adaptivity, 0 (uniform) to 1 (most merging).
-    double adaptivity = 0.0;
-    // Half-width of the narrow band, in voxels (at least 1): nodes nearer the surface than
-    // this hold their field value, the others +-band. 1 gives the same uniform mesh for
-    // about 35% fewer evaluations; adaptive merging judges flatness on the wider band.
-    float band_voxels = 3.0f;
-};
 
 // Same preconditions, cancel/progress/stats behaviour and orientation as
 // sparse_marching_cubes(): the field must be 1-Lipschitz; triangles counter-clockwise seen
@@ -44,17 +36,17 @@ struct VdbSettings {
 // up); merged polygons are chords and shrink convex parts by a few percent.
 //
 // Threads: settings.threads also bounds OpenVDB's own work (0: the caller's arena).
-// Progress, cancel and stats follow MarchingCubesSettings. Cancel is polled between
-// sampling tasks (at most 64 blocks) and between phases; volumeToMesh itself cannot be interrupted
-// (about 0.1-0.2 s at resolution 400 on two cores). Progress: up to 0.6 while sampling,
-// 0.95 after volumeToMesh, then 1. Stats: evaluations counts every sample (block and
-// sub-block centres included), blocks_total the 8^3-node blocks of the grid, blocks_meshed
-// those whose nodes were (partly) sampled. The same inputs give the same mesh, vertex
-// order included, whatever the thread count. Exceptions the field throws reach the caller.
+// Progress, cancel and stats follow MeshSettings, run as for the other meshers
+// (marching/meshing_run.h). Cancel is polled between sampling tasks (at most 64 blocks) and
+// between phases; volumeToMesh itself cannot be interrupted (about 0.1-0.2 s at resolution
+// 400 on two cores). Progress: up to 0.6 while sampling, 0.95 after volumeToMesh, then 1.
+// Stats: evaluations counts every sample (block and sub-block centres included),
+// blocks_total the 8^3-node blocks of the grid, blocks_meshed those whose nodes were
+// (partly) sampled. The same inputs give the same mesh, vertex order included, whatever the
+// thread count. Exceptions the field throws reach the caller.
 //
-// Throws std::invalid_argument as marching_cubes() does, and when adaptivity is outside
-// [0, 1] or band_voxels below 1; Cancelled when cancelled.
-Mesh vdb_mesh(const BatchField& field, const Box& box, const MarchingCubesSettings& settings,
-              const VdbSettings& vdb = {});
+// Throws InputError as marching_cubes() does, and when settings.vdb.adaptivity is outside
+// [0, 1] or settings.vdb.band_voxels below 1; Cancelled when cancelled.
+Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& settings);
 
 }  // namespace sylva

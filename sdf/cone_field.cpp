@@ -1,6 +1,7 @@
 #include "sdf/cone_field.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -47,6 +48,11 @@ float ConeField::operator()(const glm::vec3& p) const {
         d = joint_blend_ > 0.0f ? polynomial_smooth_min(d, next, joint_blend_) : std::min(d, next);
     }
     return std::min(d, margin_);
+}
+
+void ConeField::evaluate(std::span<const glm::vec3> points, std::span<float> values) const {
+    assert(points.size() == values.size());
+    for (std::size_t i = 0; i < points.size(); ++i) values[i] = (*this)(points[i]);
 }
 
 }  // namespace sylva

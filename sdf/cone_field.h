@@ -9,6 +9,7 @@
 // without visiting a single cone.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "sdf/bin_grid.h"
@@ -26,6 +27,9 @@ class ConeField {
     ConeField(std::vector<CappedCone> cones, float margin, float joint_blend = 0.0f);
 
     float operator()(const glm::vec3& p) const;
+    // values[i] = (*this)(points[i]) for spans of the same size: one call per batch of
+    // points (as a mesher samples them) rather than one per point. Thread-safe.
+    void evaluate(std::span<const glm::vec3> points, std::span<float> values) const;
 
     const std::vector<CappedCone>& cones() const { return cones_; }
 

@@ -1,6 +1,7 @@
 #include "sdf/sphere_field.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -66,6 +67,11 @@ float SphereField::operator()(const glm::vec3& p) const {
             d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
     }
     return std::min(d, margin_);
+}
+
+void SphereField::evaluate(std::span<const glm::vec3> points, std::span<float> values) const {
+    assert(points.size() == values.size());
+    for (std::size_t i = 0; i < points.size(); ++i) values[i] = (*this)(points[i]);
 }
 
 }  // namespace sylva

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <span>
 #include <vector>
 
 #include "sdf/bin_grid.h"
@@ -52,6 +53,9 @@ class SphereField {
     // distance transform over the bins gives it), so with the root blend meshers may skip
     // blocks whose centre value exceeds their half-diagonal.
     float operator()(const glm::vec3& p) const;
+    // values[i] = (*this)(points[i]) for spans of the same size: one call per batch of
+    // points (as a mesher samples them) rather than one per point. Thread-safe.
+    void evaluate(std::span<const glm::vec3> points, std::span<float> values) const;
 
     const std::vector<Ball>& balls() const { return balls_; }
     float blend() const { return blend_; }

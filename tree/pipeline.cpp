@@ -7,8 +7,7 @@
 
 #include "core/errors.h"
 #include "core/stopwatch.h"
-#include "marching/marching_cubes.h"
-#include "marching/vdb_mesher.h"
+#include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "tree/growth.h"
 #include "tree/leaves.h"
@@ -43,15 +42,17 @@ float cell_size(const Box& box, int resolution) {
     return std::max({extent.x, extent.y, extent.z}) / static_cast<float>(resolution);
 }
 
-// Meshes a point-wise field with the chosen mesher; this part reports its progress as the
-// slice [progress_begin, progress_end] of the whole meshing stage.
+// Meshes a field with the chosen mesher; this part reports its progress as the slice
+// [progress_begin, progress_end] of the whole meshing stage.
 template <class Field>
 Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOptions& options,
                 float progress_begin, float progress_end) {
-    BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
-        for (size_t i = 0; i < points.size(); ++i) values[i] = field(points[i]);
+    const BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
+        field.evaluate(points, values);
     };
-    MarchingCubesSettings settings;
+    MeshSettings settings;
+    settings.mesher = options.mesher;
+    settings.vdb.adaptivity = options.vdb_adaptivity;
     settings.resolution = resolution;
     settings.threads = options.threads;
     settings.cancel = options.cancel;
@@ -59,15 +60,7 @@ Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOp
         settings.progress = [&options, progress_begin, progress_end](float f) {
             options.progress(progress_begin + (progress_end - progress_begin) * f);
         };
-    switch (options.mesher) {
-        case Mesher::Dense:
-            return marching_cubes(batch, box, settings);
-        case Mesher::Sparse:
-            return sparse_marching_cubes(batch, box, settings);
-        case Mesher::Vdb:
-            return vdb_mesh(batch, box, settings, {options.vdb_adaptivity});
-    }
-    return {};
+    return mesh(batch, box, settings);
 }
 
 Box crown_bounds(const std::vector<Ball>& balls) {
@@ -81,13 +74,6 @@ Box crown_bounds(const std::vector<Ball>& balls) {
 }
 
 }  // namespace
-
-std::optional<Mesher> mesher_from_name(std::string_view name) {
-    if (name == "dense") return Mesher::Dense;
-    if (name == "sparse") return Mesher::Sparse;
-    if (name == "vdb") return Mesher::Vdb;
-    return std::nullopt;
-}
 
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {
     std::vector<Ball> out;

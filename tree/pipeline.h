@@ -6,7 +6,6 @@
 #include <functional>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "core/box.h"
@@ -15,7 +14,7 @@
 #include "core/skeleton.h"
 #include "core/tree_params.h"
 #include "core/tree_template.h"
-#include "marching/marching_cubes.h"
+#include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "sdf/sphere_field.h"
 
@@ -45,9 +44,6 @@ struct MeshOptions {
 // Runs the whole pipeline on a template (its params as the caller set them).
 // Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options = {});
-
-// "dense", "sparse" or "vdb"; nullopt otherwise.
-std::optional<Mesher> mesher_from_name(std::string_view name);
 
 // The trunk's and the crown's fields with the boxes they are meshed in: what the meshers
 // see (exposed for benchmarks and tests).

@@ -24,6 +24,7 @@
 #include "export/mesh_normals.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
+#include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
@@ -498,7 +499,7 @@ TEST(ExportLod, OneObjPerLevelAndOneMtl) {
 TEST(MeshNormals, FaceAndVertexNormalsAreUnitAndOutward) {
     // A coarse sphere: every normal points away from the centre.
     ScalarField field = [](const glm::vec3& p) { return glm::length(p) - 1.0f; };
-    MarchingCubesSettings settings;
+    MeshSettings settings;
     settings.resolution = 8;
     const Mesh trunk = marching_cubes(field, Box{glm::vec3(-1.0f), glm::vec3(1.0f)}, settings);
     const auto faces = face_normals(trunk);

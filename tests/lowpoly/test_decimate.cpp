@@ -15,7 +15,7 @@ namespace {
 
 Mesh sphere(int resolution, glm::vec3 center = glm::vec3(0.0f), float radius = 1.0f) {
     ScalarField f = [=](const glm::vec3& p) { return glm::length(p - center) - radius; };
-    MarchingCubesSettings s;
+    MeshSettings s;
     s.resolution = resolution;
     return marching_cubes(f, Box{center - glm::vec3(radius), center + glm::vec3(radius)}, s);
 }
@@ -26,7 +26,7 @@ Mesh torus(int resolution) {
         const float q = std::sqrt(p.x * p.x + p.z * p.z) - 1.0f;
         return std::sqrt(q * q + p.y * p.y) - 0.35f;
     };
-    MarchingCubesSettings s;
+    MeshSettings s;
     s.resolution = resolution;
     return marching_cubes(f, Box{glm::vec3(-1.4f, -0.4f, -1.4f), glm::vec3(1.4f, 0.4f, 1.4f)}, s);
 }

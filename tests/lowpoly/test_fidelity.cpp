@@ -20,7 +20,7 @@ namespace {
 
 Mesh sphere(int resolution, float radius = 1.0f, glm::vec3 center = glm::vec3(0.0f)) {
     ScalarField f = [=](const glm::vec3& p) { return glm::length(p - center) - radius; };
-    MarchingCubesSettings s;
+    MeshSettings s;
     s.resolution = resolution;
     return marching_cubes(f, Box{center - glm::vec3(radius), center + glm::vec3(radius)}, s);
 }

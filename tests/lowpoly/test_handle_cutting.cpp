@@ -13,7 +13,7 @@ namespace sylva {
 namespace {
 
 Mesh mesh_of(ScalarField f, Box box, int resolution) {
-    MarchingCubesSettings s;
+    MeshSettings s;
     s.resolution = resolution;
     return marching_cubes(f, box, s);
 }

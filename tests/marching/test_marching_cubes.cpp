@@ -11,12 +11,12 @@
 #include <mutex>
 #include <numbers>
 #include <random>
-#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "closed_manifold.h"
+#include "core/errors.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
 
@@ -37,8 +37,8 @@ Box cube(float half) {
     return {glm::vec3(-half), glm::vec3(half)};
 }
 
-MarchingCubesSettings settings(int resolution, int padding = 2) {
-    MarchingCubesSettings s;
+MeshSettings settings(int resolution, int padding = 2) {
+    MeshSettings s;
     s.resolution = resolution;
     s.padding_cells = padding;
     return s;
@@ -59,7 +59,7 @@ void expect_inside(const Mesh& mesh, const Box& box, float margin) {
 }
 
 // The sampled grid: the padded box, widened by less than a cell on its shorter axes.
-void expect_inside_grid(const Mesh& mesh, const Box& box, const MarchingCubesSettings& s) {
+void expect_inside_grid(const Mesh& mesh, const Box& box, const MeshSettings& s) {
     const glm::vec3 size = box.max - box.min;
     const float h = std::max({size.x, size.y, size.z}) / float(s.resolution);
     expect_inside(mesh, box, (float(s.padding_cells) + 0.5f) * h * 1.0001f);
@@ -75,7 +75,7 @@ struct RecordedRun {
     std::size_t ambiguous_faces = 0;
 };
 
-RecordedRun run_recorded(const ScalarField& field, const Box& box, const MarchingCubesSettings& s) {
+RecordedRun run_recorded(const ScalarField& field, const Box& box, const MeshSettings& s) {
     std::vector<std::pair<glm::vec3, float>> samples;
     const ScalarField recording = [&](const glm::vec3& p) {
         const float v = field(p);
@@ -138,7 +138,7 @@ TEST(MarchingCubes, SphereIsClosedAtSeveralResolutions) {
     const ScalarField field = sphere(glm::vec3(0.0f), 1.0f);
     for (const int resolution : {1, 2, 3, 5, 10, 32, 100}) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
-        const MarchingCubesSettings s = settings(resolution);
+        const MeshSettings s = settings(resolution);
         const Mesh mesh = marching_cubes(field, cube(1.0f), s);
         expect_closed_manifold(mesh);
         expect_inside(mesh, cube(1.0f), 0.0f);
@@ -189,7 +189,7 @@ TEST(MarchingCubes, BatchFieldEvaluatesEachNodeOnceAcrossThreads) {
             std::lock_guard lock(mutex);
             for (const auto& q : p) points.push_back({q.x, q.y, q.z});
         };
-        MarchingCubesSettings s = settings(37);
+        MeshSettings s = settings(37);
         s.threads = threads;
         MeshingStats stats;
         s.stats = &stats;
@@ -214,7 +214,7 @@ TEST(MarchingCubes, ScalarFieldRunsOnTheCallingThread) {
         elsewhere += std::this_thread::get_id() != caller;
         return glm::length(p) - 0.7f;
     };
-    MarchingCubesSettings s = settings(64);
+    MeshSettings s = settings(64);
     s.threads = 2;
     expect_closed_manifold(marching_cubes(field, cube(1.0f), s));
     EXPECT_EQ(elsewhere, 0u);
@@ -252,7 +252,7 @@ TEST(MarchingCubes, NonCubicBoxKeepsCubicCellsAndStaysInsideTheGrid) {
         const float z = std::clamp(p.z, -2.0f, 2.0f);
         return glm::length(p - glm::vec3(0.0f, 0.0f, z)) - 1.0f;
     };
-    const MarchingCubesSettings s = settings(64);
+    const MeshSettings s = settings(64);
     const Mesh mesh = marching_cubes(capsule, box, s);
     expect_closed_manifold(mesh);
     expect_inside(mesh, box, 0.0f);
@@ -437,7 +437,7 @@ TEST(MarchingCubes, NonFiniteRegionCutsTheSurfaceButKeepsItClosed) {
 TEST(MarchingCubes, FieldStillNegativeAtTheBorderIsCappedHalfACellInside) {
     // The whole grid is inside. The mesh is the block of inner nodes (side l) grown by half a
     // cell, with its edges and corners chamfered where the border cells cut them.
-    const MarchingCubesSettings s = settings(16, 2);
+    const MeshSettings s = settings(16, 2);
     const Mesh mesh = marching_cubes([](const glm::vec3&) { return -1.0f; }, cube(1.0f), s);
     expect_closed_manifold(mesh);
     const double h = 2.0 / 16.0;
@@ -456,7 +456,7 @@ TEST(MarchingCubes, SphereBiggerThanTheBoxIsClippedAndClosed) {
     const Box box = cube(1.0f);
     for (const int padding : {0, 1, 2}) {
         SCOPED_TRACE("padding " + std::to_string(padding));
-        const MarchingCubesSettings s = settings(24, padding);
+        const MeshSettings s = settings(24, padding);
         const Mesh mesh = marching_cubes(sphere(glm::vec3(0.0f), 1.5f), box, s);
         expect_closed_manifold(mesh);
         expect_inside_grid(mesh, box, s);
@@ -471,7 +471,7 @@ TEST(MarchingCubes, SphereBiggerThanTheBoxIsClippedAndClosed) {
 TEST(MarchingCubes, HollowSolidHasInwardFacingInnerWall) {
     // Inside is everything outside a sphere, up to the border caps: a box with a spherical
     // hole, whose wall must face into the hole for the volume to come out right.
-    const MarchingCubesSettings s = settings(48, 2);
+    const MeshSettings s = settings(48, 2);
     const ScalarField hole = [](const glm::vec3& p) { return 0.7f - glm::length(p); };
     const Mesh mesh = marching_cubes(hole, cube(1.0f), s);
     expect_closed_manifold(mesh);
@@ -492,19 +492,19 @@ TEST(MarchingCubes, RejectsBadArguments) {
     const ScalarField field = sphere(glm::vec3(0.0f), 1.0f);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(0)), std::invalid_argument);
-    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(-5)), std::invalid_argument);
-    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(8, -1)), std::invalid_argument);
-    EXPECT_THROW(marching_cubes(field, cube(0.0f), settings(8)), std::invalid_argument);
+    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(0)), InputError);
+    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(-5)), InputError);
+    EXPECT_THROW(marching_cubes(field, cube(1.0f), settings(8, -1)), InputError);
+    EXPECT_THROW(marching_cubes(field, cube(0.0f), settings(8)), InputError);
     EXPECT_THROW(marching_cubes(field, {glm::vec3(1.0f), glm::vec3(-1.0f)}, settings(8)),
-                 std::invalid_argument);
+                 InputError);
     EXPECT_THROW(marching_cubes(field, {glm::vec3(-1.0f, -1.0f, 1.0f), glm::vec3(1.0f, 1.0f, 0.9f)},
                                 settings(8)),
-                 std::invalid_argument);
+                 InputError);
     EXPECT_THROW(marching_cubes(field, {glm::vec3(-1.0f), glm::vec3(nan)}, settings(8)),
-                 std::invalid_argument);
+                 InputError);
     EXPECT_THROW(marching_cubes(field, {glm::vec3(-inf), glm::vec3(1.0f)}, settings(8)),
-                 std::invalid_argument);
+                 InputError);
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "closed_manifold.h"
+#include "core/errors.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
@@ -97,8 +98,8 @@ Box cube(float half) {
     return {glm::vec3(-half), glm::vec3(half)};
 }
 
-MarchingCubesSettings settings(int resolution, int padding = 2, int threads = 0) {
-    MarchingCubesSettings s;
+MeshSettings settings(int resolution, int padding = 2, int threads = 0) {
+    MeshSettings s;
     s.resolution = resolution;
     s.padding_cells = padding;
     s.threads = threads;
@@ -116,7 +117,7 @@ void expect_same_mesh(const Mesh& a, const Mesh& b) {
     EXPECT_TRUE(a.triangles == b.triangles);
 }
 
-void expect_inside_grid(const Mesh& mesh, const Box& box, const MarchingCubesSettings& s) {
+void expect_inside_grid(const Mesh& mesh, const Box& box, const MeshSettings& s) {
     const Grid grid = make_grid(box, s);
     const glm::dvec3 lo = grid.origin;
     const glm::dvec3 hi = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
@@ -133,8 +134,7 @@ void expect_inside_grid(const Mesh& mesh, const Box& box, const MarchingCubesSet
     EXPECT_EQ(outside, 0u);
 }
 
-void expect_sparse_equals_dense(const BatchField& field, const Box& box,
-                                const MarchingCubesSettings& s) {
+void expect_sparse_equals_dense(const BatchField& field, const Box& box, const MeshSettings& s) {
     const Mesh dense = marching_cubes(field, box, s);
     const Mesh sparse = sparse_marching_cubes(field, box, s);
     expect_same_mesh(dense, sparse);
@@ -203,7 +203,7 @@ TEST(SparseMarchingCubes, IsClosedAtManyResolutions) {
     const Box torus_box{glm::vec3(-0.82f, -0.82f, -0.12f), glm::vec3(0.82f, 0.82f, 0.12f)};
     for (const int resolution : {10, 17, 40, 99, 180, 300}) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
-        const MarchingCubesSettings s = settings(resolution);
+        const MeshSettings s = settings(resolution);
         const float h = 2.0f / float(resolution);
 
         const Mesh ball = sparse_marching_cubes(sphere(glm::vec3(0.1f), 0.9f), cube(1.0f), s);
@@ -265,9 +265,9 @@ TEST(SparseMarchingCubes, FieldRunningItsOwnParallelLoopsIsSafe) {
 
 TEST(SparseMarchingCubes, EvaluatesFarFewerPointsThanDense) {
     const BatchField field = sphere(glm::vec3(0.0f), 1.0f);
-    const MarchingCubesSettings base = settings(200);
+    const MeshSettings base = settings(200);
     MeshingStats dense_stats, sparse_stats;
-    MarchingCubesSettings s = base;
+    MeshSettings s = base;
     s.stats = &dense_stats;
     const Mesh dense = marching_cubes(field, cube(1.0f), s);
     s.stats = &sparse_stats;
@@ -290,7 +290,7 @@ TEST(SparseMarchingCubes, WorkGrowsWithAreaNotVolume) {
     std::vector<double> evaluations;
     for (const int resolution : {100, 200}) {
         MeshingStats stats;
-        MarchingCubesSettings s = settings(resolution);
+        MeshSettings s = settings(resolution);
         s.stats = &stats;
         sparse_marching_cubes(field, cube(1.0f), s);
         evaluations.push_back(double(stats.evaluations));
@@ -303,7 +303,7 @@ TEST(SparseMarchingCubes, ProgressRisesToOne) {
         SCOPED_TRACE(sparse ? "sparse" : "dense");
         std::mutex mutex;
         std::vector<float> reports;
-        MarchingCubesSettings s = settings(90);
+        MeshSettings s = settings(90);
         s.progress = [&](float f) {
             std::lock_guard lock(mutex);
             reports.push_back(f);
@@ -325,7 +325,7 @@ TEST(SparseMarchingCubes, CancelFromTheProgressCallbackThrows) {
                          std::to_string(threads));
             std::atomic<bool> cancel{false};
             std::atomic<int> calls_after_cancel{0};
-            MarchingCubesSettings s = settings(150, 2, threads);
+            MeshSettings s = settings(150, 2, threads);
             s.cancel = &cancel;
             s.progress = [&](float f) {
                 if (cancel) ++calls_after_cancel;
@@ -348,7 +348,7 @@ TEST(SparseMarchingCubes, CancelledBeforeStartThrowsWithoutEvaluating) {
         evaluations += points.size();
         std::fill(values.begin(), values.end(), 1.0f);
     };
-    MarchingCubesSettings s = settings(50);
+    MeshSettings s = settings(50);
     s.cancel = &cancel;
     EXPECT_THROW(sparse_marching_cubes(counting, cube(1.0f), s), Cancelled);
     EXPECT_THROW(marching_cubes(counting, cube(1.0f), s), Cancelled);
@@ -369,7 +369,7 @@ TEST(SparseMarchingCubes, EmptyAndNonFiniteFieldsGiveEmptyMeshes) {
           std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()}) {
         SCOPED_TRACE("value " + std::to_string(value));
         MeshingStats stats;
-        MarchingCubesSettings s = settings(64);
+        MeshSettings s = settings(64);
         s.stats = &stats;
         const Mesh mesh =
             sparse_marching_cubes(batch([=](const glm::vec3&) { return value; }), cube(1.0f), s);
@@ -402,12 +402,12 @@ TEST(SparseMarchingCubes, FieldBreakingTheDistanceBoundStillGivesAValidMesh) {
 
 TEST(SparseMarchingCubes, RejectsBadArguments) {
     const BatchField field = sphere(glm::vec3(0.0f), 1.0f);
-    EXPECT_THROW(sparse_marching_cubes(field, cube(1.0f), settings(0)), std::invalid_argument);
-    EXPECT_THROW(sparse_marching_cubes(field, cube(1.0f), settings(8, -1)), std::invalid_argument);
-    EXPECT_THROW(sparse_marching_cubes(field, cube(0.0f), settings(8)), std::invalid_argument);
+    EXPECT_THROW(sparse_marching_cubes(field, cube(1.0f), settings(0)), InputError);
+    EXPECT_THROW(sparse_marching_cubes(field, cube(1.0f), settings(8, -1)), InputError);
+    EXPECT_THROW(sparse_marching_cubes(field, cube(0.0f), settings(8)), InputError);
     EXPECT_THROW(
         sparse_marching_cubes(field, {glm::vec3(-1.0f), glm::vec3(std::nanf(""))}, settings(8)),
-        std::invalid_argument);
+        InputError);
 }
 
 }  // namespace

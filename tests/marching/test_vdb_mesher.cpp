@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "closed_manifold.h"
+#include "core/errors.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
@@ -51,17 +52,16 @@ Box cube(float half) {
     return {glm::vec3(-half), glm::vec3(half)};
 }
 
-MarchingCubesSettings settings(int resolution, int padding = 2) {
-    MarchingCubesSettings s;
+MeshSettings settings(int resolution, int padding = 2) {
+    MeshSettings s;
     s.resolution = resolution;
     s.padding_cells = padding;
     return s;
 }
 
-VdbSettings adaptive(double adaptivity) {
-    VdbSettings v;
-    v.adaptivity = adaptivity;
-    return v;
+MeshSettings adaptive(MeshSettings s, double adaptivity) {
+    s.vdb.adaptivity = adaptivity;
+    return s;
 }
 
 double cell_size(const Box& box, int resolution) {
@@ -120,7 +120,7 @@ TEST(VdbMesher, VerticesLieOnTheSurfaceLikeMarchingCubes) {
 TEST(VdbMesher, AdaptivityGivesFewerTrianglesAndStaysClosed) {
     const BatchField field = batch(sphere({}, 1.0f));
     const Mesh uniform = vdb_mesh(field, cube(1.0f), settings(64));
-    const Mesh merged = vdb_mesh(field, cube(1.0f), settings(64), adaptive(0.5));
+    const Mesh merged = vdb_mesh(field, cube(1.0f), adaptive(settings(64), 0.5));
     EXPECT_LT(merged.triangles.size(), uniform.triangles.size() / 10);
     expect_closed_manifold(merged);
     EXPECT_NEAR(enclosed_volume(merged), 4.0 / 3.0 * kPi, 0.05 * 4.0 / 3.0 * kPi);
@@ -134,7 +134,7 @@ TEST(VdbMesher, TorusIsClosedWithItsVolume) {
     expect_closed_manifold(uniform);
     EXPECT_NEAR(enclosed_volume(uniform), volume, 0.03 * volume);
 
-    const Mesh merged = vdb_mesh(batch(torus(major, minor)), box, settings(100), adaptive(0.5));
+    const Mesh merged = vdb_mesh(batch(torus(major, minor)), box, adaptive(settings(100), 0.5));
     expect_closed_manifold(merged);
     EXPECT_LT(merged.triangles.size(), uniform.triangles.size() / 10);
     // The tube is 12 cells across: merged cells cut 8% of its volume.
@@ -152,7 +152,7 @@ TEST(VdbMesher, UnionOfSpheresIsClosedAndAgreesWithMarchingCubes) {
     EXPECT_NEAR(enclosed_volume(vdb), enclosed_volume(mc), 0.02 * enclosed_volume(mc));
     EXPECT_NEAR(surface_area(vdb), surface_area(mc), 0.02 * surface_area(mc));
 
-    const Mesh merged = vdb_mesh(batch(field), box, settings(80), adaptive(0.5));
+    const Mesh merged = vdb_mesh(batch(field), box, adaptive(settings(80), 0.5));
     expect_closed_manifold(merged);
     EXPECT_LT(merged.triangles.size(), vdb.triangles.size());
     EXPECT_NEAR(enclosed_volume(merged), enclosed_volume(mc), 0.12 * enclosed_volume(mc));
@@ -259,8 +259,8 @@ TEST(VdbMesher, SameMeshWhateverTheThreadCount) {
     auto two = settings(70);
     two.threads = 2;
     for (double adaptivity : {0.0, 0.5}) {
-        const Mesh a = vdb_mesh(field, cube(1.0f), one, adaptive(adaptivity));
-        const Mesh b = vdb_mesh(field, cube(1.0f), two, adaptive(adaptivity));
+        const Mesh a = vdb_mesh(field, cube(1.0f), adaptive(one, adaptivity));
+        const Mesh b = vdb_mesh(field, cube(1.0f), adaptive(two, adaptivity));
         ASSERT_EQ(a.positions.size(), b.positions.size());
         ASSERT_EQ(a.triangles.size(), b.triangles.size());
         EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(),
@@ -334,12 +334,12 @@ TEST(VdbMesher, FieldExceptionsReachTheCaller) {
 
 TEST(VdbMesher, RejectsBadSettings) {
     const BatchField field = batch(sphere({}, 1.0f));
-    EXPECT_THROW(vdb_mesh(field, cube(1.0f), settings(0)), std::invalid_argument);
-    EXPECT_THROW(vdb_mesh(field, cube(0.0f), settings(10)), std::invalid_argument);
-    EXPECT_THROW(vdb_mesh(field, cube(1.0f), settings(10), adaptive(1.5)), std::invalid_argument);
-    VdbSettings thin;
-    thin.band_voxels = 0.5f;
-    EXPECT_THROW(vdb_mesh(field, cube(1.0f), settings(10), thin), std::invalid_argument);
+    EXPECT_THROW(vdb_mesh(field, cube(1.0f), settings(0)), InputError);
+    EXPECT_THROW(vdb_mesh(field, cube(0.0f), settings(10)), InputError);
+    EXPECT_THROW(vdb_mesh(field, cube(1.0f), adaptive(settings(10), 1.5)), InputError);
+    auto thin = settings(10);
+    thin.vdb.band_voxels = 0.5f;
+    EXPECT_THROW(vdb_mesh(field, cube(1.0f), thin), InputError);
 }
 
 }  // namespace

@@ -9,9 +9,8 @@
 #include <unordered_map>
 
 #include "marching/grid.h"
-#include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
-#include "marching/vdb_mesher.h"
+#include "marching/mesher.h"
 #include "tree/growth.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -37,17 +36,10 @@ Mesh mesh_with(Mesher mesher, const Part& part, int resolution) {
     BatchField batch = [&](std::span<const glm::vec3> points, std::span<float> values) {
         for (size_t i = 0; i < points.size(); ++i) values[i] = part.field(points[i]);
     };
-    MarchingCubesSettings settings;
+    MeshSettings settings;
+    settings.mesher = mesher;
     settings.resolution = resolution;
-    switch (mesher) {
-        case Mesher::Dense:
-            return marching_cubes(batch, part.box, settings);
-        case Mesher::Sparse:
-            return sparse_marching_cubes(batch, part.box, settings);
-        case Mesher::Vdb:
-            return vdb_mesh(batch, part.box, settings);
-    }
-    return {};
+    return mesh(batch, part.box, settings);
 }
 
 // Largest distance from a vertex of `a` to the nearest vertex of `b` (a spatial hash with
@@ -85,7 +77,7 @@ TEST_P(EveryTemplate, ClosedInsideTheBoxAndMeshersAgree) {
         TreeFields fields = tree_fields(skeleton, params);
         for (const Part& part : parts_of(fields)) {
             SCOPED_TRACE(t->name + " " + part.name + " at " + std::to_string(resolution));
-            MarchingCubesSettings settings;
+            MeshSettings settings;
             settings.resolution = resolution;
             Grid grid = make_grid(part.box, settings);
             glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
@@ -140,7 +132,7 @@ TEST(Boxes, StrongBlendsAreNeverClippedByTheGrid) {
     TreeFields fields = tree_fields(skeleton, t.params);
     for (const Part& part : parts_of(fields)) {
         SCOPED_TRACE(part.name);
-        MarchingCubesSettings settings;
+        MeshSettings settings;
         settings.resolution = 200;
         Grid grid = make_grid(part.box, settings);
         glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
