@@ -17,13 +17,14 @@ void write_file_atomically(const std::filesystem::path& path,
     namespace fs = std::filesystem;
     std::error_code ec;
     if (fs::is_directory(path, ec))
-        throw IoError("cannot write '" + path.string() + "': it is a directory");
+        throw IoError("cannot write '" + path.string() + "': it is a directory", path);
     // The temporary sits in the target's folder so the rename never crosses file systems.
     fs::path temp = path;
     temp += ".tmp-" + std::to_string(::getpid());
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw IoError("cannot write '" + path.string() + "': " + std::strerror(errno));
+        if (!out)
+            throw IoError("cannot write '" + path.string() + "': " + std::strerror(errno), path);
         try {
             write(out);
         } catch (...) {
@@ -36,14 +37,14 @@ void write_file_atomically(const std::filesystem::path& path,
             int error = errno;
             out.close();
             fs::remove(temp, ec);
-            throw IoError("writing '" + path.string() + "' failed: " + std::strerror(error));
+            throw IoError("writing '" + path.string() + "' failed: " + std::strerror(error), path);
         }
     }
     fs::rename(temp, path, ec);
     if (ec) {
         std::error_code ignored;
         fs::remove(temp, ignored);
-        throw IoError("cannot write '" + path.string() + "': " + ec.message());
+        throw IoError("cannot write '" + path.string() + "': " + ec.message(), path);
     }
 }
 

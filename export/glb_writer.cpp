@@ -181,7 +181,7 @@ void with_path(const std::filesystem::path& path, F&& f) {
     try {
         f();
     } catch (const IoError& e) {
-        throw IoError("cannot write '" + path.string() + "': " + e.what());
+        throw IoError("cannot write '" + path.string() + "': " + e.what(), path);
     }
 }
 

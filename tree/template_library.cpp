@@ -62,9 +62,10 @@ TreeTemplate load_template(const std::string& name_or_path) {
                          ") nor an existing file");
     }
     if (std::filesystem::is_directory(name_or_path, ec))
-        throw IoError("cannot read '" + name_or_path + "': it is a directory");
+        throw IoError("cannot read '" + name_or_path + "': it is a directory", name_or_path);
     std::ifstream in(name_or_path, std::ios::binary);
-    if (!in) throw IoError("cannot read '" + name_or_path + "': " + std::strerror(errno));
+    if (!in)
+        throw IoError("cannot read '" + name_or_path + "': " + std::strerror(errno), name_or_path);
     std::ostringstream text;
     text << in.rdbuf();
     if (std::filesystem::path(name_or_path).extension() == ".toml")

@@ -32,7 +32,7 @@ void save_back_buffer_png(const std::string& path, int width, int height) {
     if (stbi_write_png(path.c_str(), width, height, 3, pixels.data(),
                        static_cast<int>(row_bytes)) == 0) {
         std::string reason = errno != 0 ? std::strerror(errno) : "write failed";
-        throw IoError("cannot write screenshot '" + path + "': " + reason);
+        throw IoError("cannot write screenshot '" + path + "': " + reason, path);
     }
 }
 

@@ -2,8 +2,10 @@
 // its file's, and the type survives a relocation and rethrow.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 
 namespace sylva {
@@ -46,6 +48,17 @@ TEST(InputError, RelocatingAPlacelessErrorOnlyNamesTheFile) {
     e.relocate("tree.toml", 5);
     EXPECT_EQ(e.line(), 0);
     EXPECT_EQ(std::string(e.what()), "tree.toml: the tree has no trunk");
+}
+
+TEST(IoError, NamesThePathThatFailed) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path();
+    try {
+        write_file_atomically(dir, [](std::ostream& out) { out << "x"; });
+        FAIL() << "expected IoError";
+    } catch (const IoError& e) {
+        EXPECT_EQ(e.path(), dir);
+        EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
