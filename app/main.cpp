@@ -193,14 +193,16 @@ int run_export(const Options& o) {
         throw UsageError("cannot tell the format of '" + o.output +
                          "': use .obj, .glb or .ply, or --format");
     TreeTemplate tmpl = configured_template(o);
-    Tree tree = generate_tree(tmpl, o.mesh);
-
     FinishSettings finish;
     finish.budget.total =
         o.budget ? *o.budget : static_cast<std::size_t>(tmpl.params.triangle_budget);
     finish.budget.trunk = o.budget_trunk;
     finish.budget.crown = o.budget_crown;
     finish.lod = o.lod;
+    MeshOptions mesh = o.mesh;
+    mesh.budget = game_budget(finish);
+    Tree tree = generate_tree(tmpl, mesh);
+
     Stopwatch clock;
     const FinishedTree finished = finish_tree(tree, finish);
     const std::vector<std::filesystem::path> files =

@@ -29,6 +29,7 @@ struct TreeParams {
     double joint_blend = 0.0;      // trunk joints: smooth-union radius, meters (0 = hard union)
     int crown_blend = 0;           // CrownBlend: how crown spheres fuse
     int crown_mesh = 1;            // 1: mesh the crown; 0: leaves only (seed 001, B.6)
+    int crown_merge = 1;           // 1: low budgets merge crown blobs (tree/crown_merge.h)
     double leaf_density = 60.0;    // leaves per cubic meter of crown
     double leaf_size = 0.25;       // leaf length, meters
     int leaf_shape = 0;            // LeafShape

@@ -16,6 +16,13 @@ SolidParts finest_solids(const Tree& tree, const FinishedTree& finished) {
     return {finished.levels[0].trunk, finished.levels[0].crown};
 }
 
+std::size_t game_budget(const FinishSettings& settings) {
+    const TreeBudget& b = settings.budget;
+    if (settings.lod) return b.total > 0 ? b.total : kDefaultTriangleBudget;
+    if (b.trunk && b.crown) return *b.trunk + *b.crown;
+    return b.total;
+}
+
 FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings) {
     FinishedTree out;
     const TreeBudget& budget = settings.budget;

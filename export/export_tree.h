@@ -45,6 +45,10 @@ struct SolidParts {
 };
 SolidParts finest_solids(const Tree& tree, const FinishedTree& finished);
 
+// The trunk + crown triangles of the finest level `settings` make (0: not reduced): what
+// generate_tree's MeshOptions::budget should be for this export.
+std::size_t game_budget(const FinishSettings& settings);
+
 // Reduces the tree as `settings` say. Throws what reduce_tree() throws.
 FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
 

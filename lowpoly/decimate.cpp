@@ -174,8 +174,10 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
         mesh_.add_property(priority_);
         mesh_.add_property(position_);
         mesh_.add_property(quadric_sum_);
+        mesh_.add_property(piece_);
     }
     ~LazyDecimater() override {
+        mesh_.remove_property(piece_);
         mesh_.remove_property(target_);
         mesh_.remove_property(priority_);
         mesh_.remove_property(position_);
@@ -189,6 +191,7 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
         // ModQuadricT keeps its quadrics to itself; the same sums, kept here, place the
         // vertices at the end (relocate()).
         for (VertexHandle v : mesh_.vertices()) mesh_.property(quadric_sum_, v) = Quadric();
+        label_pieces();
         for (auto f : mesh_.faces()) {
             const auto n = mesh_.normal(f);
             const auto& p = mesh_.point(mesh_.to_vertex_handle(mesh_.halfedge_handle(f)));
@@ -211,10 +214,11 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
             heap.pop_front();
             CollapseInfo ci(mesh_, h);
             // The entry may be stale: check again, and look for a new target if it is.
-            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci)) {
+            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_volume(ci)) {
                 heap_vertex(v);
                 continue;
             }
+            piece_volume_[piece(ci.v0)] += volume_change(ci);
             support.clear();
             mesh_.all_outgoing(ci.v0, [&](HalfedgeHandle o) {
                 support.push_back(mesh_.to_vertex_handle(o));
@@ -292,6 +296,77 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     };
     using Heap = OpenMesh::Utils::HeapT<VertexHandle, HeapInterface>;
 
+    // Connected pieces and their enclosed volumes. Each collapse guards its own fan, but
+    // a small closed piece can still fold through itself over several collapses and come
+    // out inside out (a tetrahedron of negative volume); tracking each piece's volume
+    // forbids the collapse that would take it below a sliver of what it had.
+    void label_pieces() {
+        std::vector<int> parent(mesh_.n_vertices());
+        for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+        auto find = [&](int v) {
+            while (parent[v] != v) v = parent[v] = parent[parent[v]];
+            return v;
+        };
+        for (auto f : mesh_.faces()) {
+            if (mesh_.status(f).deleted()) continue;
+            int first = -1;
+            for (VertexHandle v : mesh_.fv_range(f)) {
+                if (first < 0)
+                    first = find(v.idx());
+                else
+                    parent[find(v.idx())] = first;
+            }
+        }
+        std::vector<int> slot(parent.size(), -1);
+        piece_volume_.clear();
+        for (VertexHandle v : mesh_.vertices()) {
+            int& s = slot[find(v.idx())];
+            if (s < 0) {
+                s = static_cast<int>(piece_volume_.size());
+                piece_volume_.push_back(0.0);
+            }
+            mesh_.property(piece_, v) = s;
+        }
+        for (auto f : mesh_.faces()) {
+            if (mesh_.status(f).deleted()) continue;
+            auto it = mesh_.cfv_iter(f);
+            const auto a = mesh_.point(*it), b = mesh_.point(*++it), c = mesh_.point(*++it);
+            piece_volume_[piece(*it)] += (a | (b % c)) / 6.0;
+        }
+        piece_floor_.resize(piece_volume_.size());
+        for (std::size_t i = 0; i < piece_volume_.size(); ++i)
+            piece_floor_[i] = 1e-3 * piece_volume_[i];
+    }
+
+    std::size_t piece(VertexHandle v) const {
+        return static_cast<std::size_t>(mesh_.property(piece_, v));
+    }
+
+    // The change of the enclosed volume when v0 moves to p1 and the faces fl, fr vanish:
+    // measured from v0, every face through v0 starts with no volume, so the change is the
+    // volume each remaining face sweeps with its corner moving to p1.
+    double volume_change(const CollapseInfo& ci) const {
+        const auto& o = ci.p0;
+        const auto d = ci.p1 - o;
+        double six = 0.0;
+        mesh_.all_outgoing(ci.v0, [&](HalfedgeHandle h) {
+            const auto f = mesh_.face_handle(h);
+            if (!f.is_valid() || f == ci.fl || f == ci.fr) return true;
+            const auto a = mesh_.point(mesh_.to_vertex_handle(h)) - o;
+            const auto b = mesh_.point(mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h))) - o;
+            six += d | (a % b);
+            return true;
+        });
+        return six / 6.0;
+    }
+
+    // Inner shells (negative volume by nature) are left alone.
+    bool keeps_volume(const CollapseInfo& ci) const {
+        const std::size_t p = piece(ci.v0);
+        if (!(piece_floor_[p] > 0.0)) return true;
+        return piece_volume_[p] + volume_change(ci) > piece_floor_[p];
+    }
+
     // Finds v's cheapest legal collapse and files it in the heap (or takes v out).
     void heap_vertex(VertexHandle v) {
         OpenMesh::Decimater::ModQuadricT<OmMesh>& quadric = module(quadric_);
@@ -301,7 +376,8 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
             const CollapseInfo ci(mesh_, h);
             const float error = quadric.collapse_priority(ci);
             if (error < 0.0f || !(error < best)) return true;
-            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci)) return true;
+            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_volume(ci))
+                return true;
             best = error;
             target = h;
             return true;
@@ -326,6 +402,9 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     OpenMesh::VPropHandleT<float> priority_;
     OpenMesh::VPropHandleT<int> position_;
     OpenMesh::VPropHandleT<Quadric> quadric_sum_;
+    OpenMesh::VPropHandleT<int> piece_;
+    std::vector<double> piece_volume_;
+    std::vector<double> piece_floor_;
     Heap* heap_ = nullptr;
 };
 
@@ -437,6 +516,13 @@ std::size_t count_triangles(const std::vector<Mesh>& parts) {
     return n;
 }
 
+// Connected components enclosing no positive volume: inner shells, or pieces turned inside out.
+std::size_t inward_pieces(const Mesh& mesh) {
+    const std::vector<double> volumes = component_volumes(mesh);
+    return static_cast<std::size_t>(
+        std::count_if(volumes.begin(), volumes.end(), [](double v) { return !(v > 0.0); }));
+}
+
 // One reduction from scratch down to `target` triangles.
 std::vector<Mesh> reduce(std::span<const Mesh* const> parts, std::size_t target,
                          const DecimateSettings& settings, double min_twice_area) {
@@ -469,6 +555,8 @@ DecimateResult reduce_with_backoff(std::span<const Mesh* const> parts,
         result.parts.clear();
         for (const Mesh* m : parts) result.parts.push_back(*m);
     };
+    std::vector<std::size_t> inward_before;
+    for (const Mesh* m : parts) inward_before.push_back(inward_pieces(*m));
     std::size_t target = settings.max_triangles;
     constexpr int kMaxAttempts = 6;
     if (input_triangles <= target) {
@@ -486,6 +574,13 @@ DecimateResult reduce_with_backoff(std::span<const Mesh* const> parts,
                 const MeshTopology t = check_topology(result.parts[k]);
                 if (!t.is_closed_manifold()) {
                     broken = "part " + std::to_string(k) + " had " + describe(t);
+                    break;
+                }
+                // Collapses guard each triangle's turn, but a small piece can still fold
+                // through itself and come out inside out: closed, yet with no volume. (An
+                // inner shell, the wall of a hollow, is inward by nature: count only new ones.)
+                if (inward_pieces(result.parts[k]) > inward_before[k]) {
+                    broken = "part " + std::to_string(k) + " had an inside-out piece";
                     break;
                 }
             }

@@ -66,8 +66,10 @@ struct DecimateResult {
 //
 // Preconditions: every non-empty part is a closed 2-manifold by check_topology; otherwise
 // throws InputError (core/errors.h) naming the part and what is wrong. Empty parts stay empty.
-// Guarantee: every returned part is a closed 2-manifold with the input's orientation
-// (checked with check_topology); when a reduction breaks that, it is redone with fewer
+// Guarantee: every returned part is a closed 2-manifold with the input's orientation and no
+// piece turned inside out (checked with check_topology, and component_volumes: no more
+// components without positive volume than the input had, which are its inner shells, see
+// lowpoly/inner_shells.h); when a reduction breaks that, it is redone with fewer
 // collapses, down to returning the input. Connected components never vanish or merge;
 // handles are kept unless cut_handles had to cut some (then result.handles_cut > 0).
 // Deterministic: the same input gives the same output. Not thread-safe on shared settings

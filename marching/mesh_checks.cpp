@@ -172,6 +172,38 @@ double surface_area(const Mesh& mesh) {
     return 0.5 * twice_area;
 }
 
+std::vector<double> component_volumes(const Mesh& mesh) {
+    // Union-find over vertices; a triangle joins its three.
+    std::vector<std::uint32_t> parent(mesh.positions.size());
+    for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (const auto& tri : mesh.triangles) {
+        if (!indices_valid(mesh, tri)) continue;
+        parent[find(tri[1])] = find(tri[0]);
+        parent[find(tri[2])] = find(tri[0]);
+    }
+    const Bounds box = bounds(mesh);
+    const glm::dvec3 reference = 0.5 * (box.min + box.max);
+    std::vector<double> volumes;
+    std::vector<std::int64_t> slot(mesh.positions.size(), -1);
+    for (const auto& tri : mesh.triangles) {
+        if (!indices_valid(mesh, tri)) continue;
+        std::int64_t& k = slot[find(tri[0])];
+        if (k < 0) {
+            k = static_cast<std::int64_t>(volumes.size());
+            volumes.push_back(0.0);
+        }
+        const glm::dvec3 a = corner(mesh, tri, 0) - reference;
+        const glm::dvec3 b = corner(mesh, tri, 1) - reference;
+        const glm::dvec3 c = corner(mesh, tri, 2) - reference;
+        volumes[static_cast<std::size_t>(k)] += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+    return volumes;
+}
+
 double enclosed_volume(const Mesh& mesh) {
     // Measured from the bounding-box centre rather than the origin: the same result for a
     // closed mesh, without the cancellation of large terms when the mesh is far from the

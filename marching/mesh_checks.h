@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 
@@ -32,5 +33,11 @@ double surface_area(const Mesh& mesh);
 
 // Signed volume by the divergence theorem; positive for a closed outward-oriented mesh.
 double enclosed_volume(const Mesh& mesh);
+
+// The signed volume of each connected component (triangles joined through shared
+// vertices), in the order of each component's first triangle. A closed mesh that is
+// outward everywhere has every entry positive; an inside-out piece shows as a negative
+// one even when a bigger piece hides it in the total.
+std::vector<double> component_volumes(const Mesh& mesh);
 
 }  // namespace sylva

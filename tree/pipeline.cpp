@@ -9,6 +9,7 @@
 #include "core/stopwatch.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
+#include "tree/crown_merge.h"
 #include "tree/growth.h"
 #include "tree/leaves.h"
 
@@ -73,6 +74,40 @@ Box crown_bounds(const std::vector<Ball>& balls) {
     return box;
 }
 
+// The crown's field over `balls`, and the box it is meshed in.
+void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreeParams& p) {
+    float fusion = static_cast<float>(p.crown_fusion);
+    // The root smooth min swells the union by up to fusion / 2 where spheres meet.
+    fields.crown_box = crown_bounds(balls);
+    fields.crown_box.min -= glm::vec3(fusion);
+    fields.crown_box.max += glm::vec3(fusion);
+    float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
+    float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
+    if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
+        // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
+        float alpha = std::clamp(1.0f - 10.0f * fusion, 0.0f, 1.0f);
+        fields.crown.emplace(std::move(balls), alpha, margin, SphereBlend::PaskoSavchenko);
+    } else {
+        fields.crown.emplace(std::move(balls), fusion, margin);
+    }
+}
+
+// The crown as a budget of `budget` trunk + crown triangles can draw it: with crown_merge
+// on and more blobs than half the budget leaves kTrianglesPerCrownPiece each, every sphere
+// grows by the radius that merges them into that many pieces (crown_merge.h): `merged`
+// gets that crown. Returns the growth, 0 when the crown is meshed as it is.
+float merge_crown_for_budget(const SphereField& crown, std::size_t budget, const TreeParams& p,
+                             TreeFields& merged) {
+    if (budget == 0 || p.crown_merge == 0) return 0.0f;
+    const std::size_t max_pieces = std::max<std::size_t>(1, budget / 2 / kTrianglesPerCrownPiece);
+    const float grow = crown_merge_radius(crown.balls(), max_pieces);
+    if (grow <= 0.0f) return 0.0f;
+    std::vector<Ball> grown = crown.balls();
+    for (Ball& b : grown) b.radius += grow;
+    add_crown_field(merged, std::move(grown), p);
+    return grow;
+}
+
 }  // namespace
 
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {
@@ -110,22 +145,7 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p) {
                              joint_blend);
 
     std::vector<Ball> balls = crown_spheres(skeleton, p);
-    if (!balls.empty() && p.sphere_diameter > 0.0) {
-        float fusion = static_cast<float>(p.crown_fusion);
-        // The root smooth min swells the union by up to fusion / 2 where spheres meet.
-        fields.crown_box = crown_bounds(balls);
-        fields.crown_box.min -= glm::vec3(fusion);
-        fields.crown_box.max += glm::vec3(fusion);
-        float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
-        float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
-        if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
-            // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
-            float alpha = std::clamp(1.0f - 10.0f * fusion, 0.0f, 1.0f);
-            fields.crown.emplace(std::move(balls), alpha, margin, SphereBlend::PaskoSavchenko);
-        } else {
-            fields.crown.emplace(std::move(balls), fusion, margin);
-        }
-    }
+    if (!balls.empty() && p.sphere_diameter > 0.0) add_crown_field(fields, std::move(balls), p);
     return fields;
 }
 
@@ -141,6 +161,11 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
     const bool mesh_crown = fields.crown && p.crown_mesh != 0;
+    // A crown merged for a low budget is only meshed; leaves fill the crown as grown.
+    TreeFields merged;
+    if (mesh_crown)
+        out.crown_growth = merge_crown_for_budget(*fields.crown, options.budget, p, merged);
+    const TreeFields& meshed = merged.crown ? merged : fields;
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
     out.trunk =
         mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
@@ -148,9 +173,9 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     if (mesh_crown) {
         MeshOptions crown_options = options;
         // Skipping empty space needs a distance bound; the Pasko-Savchenko blend is not one.
-        if (!fields.crown->is_distance_bound() && options.mesher != Mesher::Dense)
+        if (!meshed.crown->is_distance_bound() && options.mesher != Mesher::Dense)
             crown_options.mesher = Mesher::Dense;
-        out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution, crown_options,
+        out.crown = mesh_field(*meshed.crown, meshed.crown_box, p.crown_resolution, crown_options,
                                trunk_share, 1.0f);
         out.times.push_back({"crown mesh", clock.lap_ms()});
     }

@@ -25,6 +25,9 @@ struct Tree {
     Mesh trunk;
     Mesh crown;   // empty without tips, with sphere_diameter 0 or crown_mesh 0
     Mesh leaves;  // open quads by design (two triangles up, two down per leaf); may be empty
+    // How far every crown sphere grew so a low budget can draw the crown (crown_merge.h);
+    // 0 when the crown is meshed as grown.
+    float crown_growth = 0.0f;
     std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
 };
 
@@ -39,6 +42,9 @@ struct MeshOptions {
     // Reaches every stage (growth, meshing, leaves); once it is true, generate_tree throws
     // Cancelled.
     CancelFlag cancel = nullptr;
+    // The trunk + crown triangles the meshes will be reduced to (0: not reduced). A low
+    // budget merges a many-blob crown into a few pieces (crown_merge.h).
+    std::size_t budget = 0;
 };
 
 // Runs the whole pipeline on a template (its params as the caller set them).

@@ -45,6 +45,8 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
                        const std::shared_ptr<JobProgress>& progress) {
     MeshOptions options;
     options.threads = worker_threads();
+    // The crown as the export at the template's budget meshes it, low-poly view or not.
+    options.budget = static_cast<std::size_t>(std::max(tree_template.params.triangle_budget, 0));
     options.cancel = &progress->cancel;
     options.progress = [&progress](float f) {
         progress->stage = JobProgress::Meshing;
