@@ -83,8 +83,8 @@ Mesh thin_leaves(const Mesh& leaves, std::size_t max_triangles, float max_growth
 
     Mesh out;
     if (kept == 0) return out;
-    const float growth = std::min(
-        max_growth, static_cast<float>(std::sqrt(double(all.size()) / double(kept))));
+    const float growth =
+        std::min(max_growth, static_cast<float>(std::sqrt(double(all.size()) / double(kept))));
     std::vector<std::uint32_t> new_index(leaves.positions.size());
     for (std::size_t l = 0; l < all.size(); ++l) {
         if (!keep[l]) continue;

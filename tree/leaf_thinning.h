@@ -23,7 +23,6 @@ std::size_t count_leaves(const Mesh& leaves);
 // are kept in rank order while they fit. The kept ones are scaled about their base by
 // sqrt(leaves / kept), at most `max_growth`, which keeps the total leaf area up to that cap.
 // Same input, same output; the kept leaves stay in their original order.
-Mesh thin_leaves(const Mesh& leaves, std::size_t max_triangles,
-                 float max_growth = kMaxLeafGrowth);
+Mesh thin_leaves(const Mesh& leaves, std::size_t max_triangles, float max_growth = kMaxLeafGrowth);
 
 }  // namespace sylva
