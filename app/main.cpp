@@ -2,6 +2,7 @@
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 #include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/growth.h"
+#include "tree/leaf_thinning.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_growth.h"
@@ -32,8 +34,8 @@ constexpr int kMaxSteps = 1000;
 constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 
 Usage:
-  sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N] [--lod]
-                 [--mesher KIND] -o OUT.{obj,glb,ply}
+  sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
+                 [--budget-leaves N] [--lod] [--mesher KIND] -o OUT.{obj,glb,ply}
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva templates
@@ -51,8 +53,14 @@ Usage:
                    0 keeps every triangle; default: the template's triangle_budget (800)
   --budget-trunk N, --budget-crown N
                    a budget per part instead
-  --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8: one .glb with a node per level,
-                   or OUT_LOD0.obj ... (names game engines pick up)
+  --budget-leaves N
+                   leaves are budgeted apart from trunk + crown: at most N leaf triangles
+                   (0: no leaves); default: the same as --budget (an 800-triangle tree
+                   carries at most 800 leaf triangles more), every leaf with --budget 0.
+                   Leaves are thinned, not reduced: an even, seeded subset of whole leaves
+                   is kept, each grown (up to 2x) so the crown looks as dense
+  --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
+                   with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --format F       obj, glb or ply (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
   --ply-ascii      write PLY as text instead of binary
@@ -77,7 +85,7 @@ struct Options {
     std::optional<int> steps;
     std::string output;
     MeshOptions mesh;
-    std::optional<std::size_t> budget, budget_trunk, budget_crown;
+    std::optional<std::size_t> budget, budget_trunk, budget_crown, budget_leaves;
     bool lod = false;
     bool fidelity = false;
     const ExportFormat* format = nullptr;
@@ -136,6 +144,8 @@ Options parse_options(int argc, char** argv) {
             o.budget_trunk = parse_integer<std::size_t>(arg, value());
         } else if (arg == "--budget-crown") {
             o.budget_crown = parse_integer<std::size_t>(arg, value());
+        } else if (arg == "--budget-leaves") {
+            o.budget_leaves = parse_integer<std::size_t>(arg, value());
         } else if (arg == "--lod") {
             o.lod = true;
         } else if (arg == "--fidelity") {
@@ -177,12 +187,13 @@ void print_help(std::FILE* to) {
 
 void print_parts(const std::vector<NamedMesh>& parts, const char* indent) {
     for (const NamedMesh& part : parts) {
-        // Leaves are open quads by design; the solid parts must be closed.
-        const char* state = !part.closed                                      ? "open by design"
-                            : check_topology(*part.mesh).is_closed_manifold() ? "closed"
-                                                                              : "NOT closed";
+        // Leaves are open by design (and counted); the solid parts must be closed.
+        const std::string state =
+            !part.closed ? std::to_string(count_leaves(*part.mesh)) + " leaves, open by design"
+            : check_topology(*part.mesh).is_closed_manifold() ? "closed"
+                                                              : "NOT closed";
         std::printf("%s%-7s %zu triangles, %zu vertices, %s\n", indent, part.name.c_str(),
-                    part.mesh->triangles.size(), part.mesh->positions.size(), state);
+                    part.mesh->triangles.size(), part.mesh->positions.size(), state.c_str());
     }
 }
 
@@ -198,6 +209,7 @@ int run_export(const Options& o) {
         o.budget ? *o.budget : static_cast<std::size_t>(tmpl.params.triangle_budget);
     finish.budget.trunk = o.budget_trunk;
     finish.budget.crown = o.budget_crown;
+    finish.budget.leaves = o.budget_leaves;
     finish.lod = o.lod;
     MeshOptions mesh = o.mesh;
     mesh.budget = game_budget(finish);
@@ -214,11 +226,15 @@ int run_export(const Options& o) {
     print_parts(tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors), "    ");
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
+        const std::size_t leaves = finished.leaf_budgets[i];
+        const std::string leaf_budget =
+            leaves == SIZE_MAX ? "every leaf" : std::to_string(leaves) + " leaf triangles";
         if (finished.lod)
-            std::printf("  LOD%zu (budget %zu):\n", i, finished.budgets[i]);
+            std::printf("  LOD%zu (budget %zu + %s):\n", i, finished.budgets[i],
+                        leaf_budget.c_str());
         else
-            std::printf("  reduced (budget %zu):\n", finished.budgets[i]);
-        print_parts(tree_parts(level.trunk, level.crown, {}, tmpl.colors), "    ");
+            std::printf("  reduced (budget %zu + %s):\n", finished.budgets[i], leaf_budget.c_str());
+        print_parts(tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),

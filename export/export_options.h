@@ -14,11 +14,13 @@ namespace sylva {
 
 enum class Shading {
     Flat,    // faceted: one normal per triangle (glTF splits vertices per face)
-    Smooth,  // one area-weighted normal per vertex, vertices shared
+    Smooth,  // one normal per vertex, vertices shared except across creases (mesh_normals.h)
 };
 
 struct ExportOptions {
     Shading shading = Shading::Flat;
+    // Smooth shading only: faces meeting at more than this many degrees stay sharp.
+    float crease_degrees = 60.0f;
     // PLY only: binary little-endian (compact, exact) or ASCII (readable).
     bool ply_binary = true;
     // The model's name: glTF root node, and with _LOD0.. the level nodes of a LOD chain.

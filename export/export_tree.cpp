@@ -29,10 +29,17 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings) {
     if (settings.lod) {
         const std::size_t finest = budget.total > 0 ? budget.total : kDefaultTriangleBudget;
         out.lod = true;
-        out.budgets = lod_budgets(finest, settings.lod_levels);
-        out.levels = make_lod_chain(tree, out.budgets, settings.decimate);
-    } else if (budget.total > 0 || budget.trunk || budget.crown) {
+        TreeBudget first = budget;
+        first.total = finest;
+        const std::vector<TreeBudget> budgets = lod_budgets(first, settings.lod_levels);
+        for (const TreeBudget& b : budgets) {
+            out.budgets.push_back(b.total);
+            out.leaf_budgets.push_back(leaf_budget(b));
+        }
+        out.levels = make_lod_chain(tree, budgets, settings.decimate);
+    } else if (budget.total > 0 || budget.trunk || budget.crown || budget.leaves) {
         out.budgets = {budget.total};
+        out.leaf_budgets = {leaf_budget(budget)};
         out.levels.push_back(reduce_tree(tree, budget, settings.decimate));
     }
     return out;
@@ -42,12 +49,8 @@ std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& fin
                                        const PartColors& colors) {
     if (finished.levels.empty()) return {tree_parts(tree.trunk, tree.crown, tree.leaves, colors)};
     std::vector<ModelParts> levels;
-    for (std::size_t i = 0; i < finished.levels.size(); ++i) {
-        const ReducedTree& level = finished.levels[i];
-        levels.push_back(tree_parts(level.trunk, level.crown, tree.leaves, colors));
-        if (finished.lod)
-            for (NamedMesh& part : levels.back()) part.name += "_LOD" + std::to_string(i);
-    }
+    for (const ReducedTree& level : finished.levels)
+        levels.push_back(tree_parts(level.trunk, level.crown, level.leaves, colors));
     return levels;
 }
 

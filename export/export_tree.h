@@ -19,10 +19,11 @@ std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Me
                                   const PartColors& colors);
 
 struct FinishSettings {
-    // Trunk + crown triangles; total 0 with no part budget keeps every triangle.
+    // Trunk + crown triangles and the leaves' own share (TreeBudget); total 0 with no part
+    // or leaf budget keeps every triangle and every leaf.
     TreeBudget budget;
-    // LOD0..LOD<lod_levels-1> with budgets total, total/2, ... (lod_budgets()); with a
-    // total of 0 the chain starts at kDefaultTriangleBudget.
+    // LOD0..LOD<lod_levels-1> with budgets total, total/2, ... and leaf budgets halving
+    // alike (lod_budgets()); with a total of 0 the chain starts at kDefaultTriangleBudget.
     bool lod = false;
     std::size_t lod_levels = 4;
     // Progress and cancel of the reductions (its max_triangles is ignored).
@@ -33,8 +34,9 @@ struct FinishSettings {
 // meshes as they are), with the budget each level was reduced to.
 struct FinishedTree {
     std::vector<ReducedTree> levels;
-    std::vector<std::size_t> budgets;
-    bool lod = false;  // levels are a LOD chain: parts get a _LOD<i> suffix
+    std::vector<std::size_t> budgets;       // trunk + crown, per level
+    std::vector<std::size_t> leaf_budgets;  // per level; SIZE_MAX: every leaf
+    bool lod = false;  // levels are a LOD chain (the writers add the _LOD<i> suffixes)
 };
 
 // Trunk and crown of the finest level: reduced, or the tree's own when not reduced. What
@@ -52,9 +54,10 @@ std::size_t game_budget(const FinishSettings& settings);
 // Reduces the tree as `settings` say. Throws what reduce_tree() throws.
 FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
 
-// The parts of each level as the writers want them: trunk and crown of that level (or the
-// tree's own when not reduced) and the leaves, with the template's colours; in a LOD chain
-// every part named `<part>_LOD<i>`. The meshes stay owned by `tree` and `finished`.
+// The parts of each level as the writers want them: trunk, crown and leaves of that level
+// (or the tree's own when not reduced), with the template's colours, named `trunk`,
+// `crown` and `leaves` (a chain's writer adds `_LOD<i>` to node and group names, never to
+// materials). The meshes stay owned by `tree` and `finished`.
 std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
                                        const PartColors& colors);
 

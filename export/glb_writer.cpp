@@ -81,9 +81,11 @@ class GltfBuilder {
                     normals.push_back(face[f] == glm::vec3(0.0f) ? glm::vec3(0, 1, 0) : face[f]);
                 }
         } else {
-            positions = mesh.positions;
-            normals = vertex_normals(mesh);
-            for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
+            ShadedMesh shaded = smooth_shaded(mesh, options_.crease_degrees);
+            positions = std::move(shaded.mesh.positions);
+            normals = std::move(shaded.normals);
+            for (const auto& t : shaded.mesh.triangles)
+                indices.insert(indices.end(), t.begin(), t.end());
         }
 
         tinygltf::Primitive primitive;

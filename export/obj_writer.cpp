@@ -68,7 +68,8 @@ void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 }
 
 void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
-                        const ExportOptions& options, std::string_view mtl_file_name) {
+                        const ExportOptions& options, std::string_view mtl_file_name,
+                        std::string_view group_suffix) {
     out << "# Sylva low-poly tree: Y up, meters, "
         << (options.shading == Shading::Flat ? "flat" : "smooth") << " normals\n";
     out << "mtllib " << mtl_file_name << "\n";
@@ -78,23 +79,27 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
         if (!has_triangles(part)) continue;
         const Mesh& mesh = *part.mesh;
         const bool flat = options.shading == Shading::Flat;
-        out << "o " << part.name << "\ng " << part.name << "\nusemtl " << part.name << "\n"
+        // Smooth: OBJ indexes normals apart from positions, so the vertices stay shared (the
+        // part stays closed) and only the normals split at creases.
+        const ShadedMesh shaded = flat ? ShadedMesh{} : smooth_shaded(mesh, options.crease_degrees);
+        const std::string group = part.name + std::string(group_suffix);
+        out << "o " << group << "\ng " << group << "\nusemtl " << part.name << "\n"
             << (flat ? "s off\n" : "s 1\n");
         for (const glm::vec3& p : mesh.positions) {
             append_vector(line, "v", p);
             out << line;
         }
-        const std::vector<glm::vec3> normals = flat ? face_normals(mesh) : vertex_normals(mesh);
+        const std::vector<glm::vec3> normals = flat ? face_normals(mesh) : shaded.normals;
         for (const glm::vec3& n : normals) {
             append_vector(line, "vn", n);
             out << line;
         }
         for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
             line.assign("f");
-            for (std::uint32_t i : mesh.triangles[f]) {
-                append_index(line, vertex_base + i);  // " v//vn"
+            for (std::size_t k = 0; k < 3; ++k) {
+                append_index(line, vertex_base + mesh.triangles[f][k]);  // " v//vn"
                 line.append("//");
-                append_digits(line, normal_base + (flat ? f : i));
+                append_digits(line, normal_base + (flat ? f : shaded.mesh.triangles[f][k]));
             }
             line.push_back('\n');
             out << line;
@@ -158,7 +163,8 @@ std::vector<std::filesystem::path> write_obj_files(const std::filesystem::path& 
     const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
     for (std::size_t i = 0; i < levels.size(); ++i) {
         write_file_atomically(names[i], [&](std::ostream& out) {
-            write_obj_with_mtl(out, levels[i], options, mtl.filename().string());
+            write_obj_with_mtl(out, levels[i], options, mtl.filename().string(),
+                               "_LOD" + std::to_string(i));
         });
         written.push_back(names[i]);
     }

@@ -24,10 +24,12 @@ void write_obj(std::ostream& out, const std::vector<NamedMesh>& parts);
 void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& parts);
 
 // The OBJ text that goes with an MTL file called `mtl_file_name` (written beside it):
-// per part `o`, `g` and `usemtl` with the part's name, `v`, `vn` and `f v//vn` lines.
-// Empty parts are left out.
+// per part `o` and `g` with the part's name + `group_suffix` (`_LOD<i>` in a chain, so
+// engines group the levels), `usemtl` with the part's name (materials are shared by the
+// levels), `v`, `vn` and `f v//vn` lines. Empty parts are left out.
 void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
-                        const ExportOptions& options, std::string_view mtl_file_name);
+                        const ExportOptions& options, std::string_view mtl_file_name,
+                        std::string_view group_suffix = {});
 
 // One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
 // baseColorFactor), no specular.
@@ -42,7 +44,8 @@ std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::pat
                                                       const ExportOptions& options = {});
 
 // The registry entry (export/export.h): one level writes `path` and its .mtl; a LOD chain
-// writes `<stem>_LOD<i>.obj` per level and one `<stem>.mtl` that all levels share.
+// writes `<stem>_LOD<i>.obj` per level, groups `<part>_LOD<i>`, and one `<stem>.mtl` with
+// one material per part name that all levels share.
 extern const ExportFormat obj_format;
 
 }  // namespace sylva

@@ -42,15 +42,25 @@ void put(std::string& bytes, T value) {
 
 void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
                const ExportOptions& options) {
+    const bool smooth = options.shading == Shading::Smooth;
+    // What is written of each part: its mesh, or with smooth shading the mesh split at
+    // creases with its normals.
+    struct Written {
+        const NamedMesh* part;
+        ShadedMesh shaded;
+        const Mesh& mesh() const { return shaded.normals.empty() ? *part->mesh : shaded.mesh; }
+    };
+    std::vector<Written> written;
     std::size_t vertices = 0, faces = 0;
     std::string names;
     for (const NamedMesh& part : parts) {
         if (!part.mesh || part.mesh->triangles.empty()) continue;
-        vertices += part.mesh->positions.size();
+        written.push_back(
+            {&part, smooth ? smooth_shaded(*part.mesh, options.crease_degrees) : ShadedMesh{}});
+        vertices += written.back().mesh().positions.size();
         faces += part.mesh->triangles.size();
         names += " " + part.name;
     }
-    const bool smooth = options.shading == Shading::Smooth;
     out << "ply\nformat " << (options.ply_binary ? "binary_little_endian" : "ascii") << " 1.0\n"
         << "comment Sylva low-poly tree: Y up, meters; parts in order:" << names << "\n"
         << "element vertex " << vertices << "\n"
@@ -63,13 +73,11 @@ void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
     std::string bytes;
     std::uint32_t base = 0;
     // Vertices of every part, then faces of every part (PLY lists elements in blocks).
-    for (const NamedMesh& part : parts) {
-        if (!part.mesh || part.mesh->triangles.empty()) continue;
-        const Mesh& mesh = *part.mesh;
-        const std::array<std::uint8_t, 3> rgb{srgb8(part.color.r), srgb8(part.color.g),
-                                              srgb8(part.color.b)};
-        const std::vector<glm::vec3> normals =
-            smooth ? vertex_normals(mesh) : std::vector<glm::vec3>{};
+    for (const Written& w : written) {
+        const Mesh& mesh = w.mesh();
+        const glm::vec3& color = w.part->color;
+        const std::array<std::uint8_t, 3> rgb{srgb8(color.r), srgb8(color.g), srgb8(color.b)};
+        const std::vector<glm::vec3>& normals = w.shaded.normals;
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
             const glm::vec3& p = mesh.positions[i];
             bytes.clear();
@@ -89,9 +97,9 @@ void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
             out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         }
     }
-    for (const NamedMesh& part : parts) {
-        if (!part.mesh || part.mesh->triangles.empty()) continue;
-        for (const auto& t : part.mesh->triangles) {
+    for (const Written& w : written) {
+        const Mesh& mesh = w.mesh();
+        for (const auto& t : mesh.triangles) {
             if (options.ply_binary) {
                 bytes.clear();
                 put(bytes, std::uint8_t{3});
@@ -101,7 +109,7 @@ void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
                 out << "3 " << base + t[0] << ' ' << base + t[1] << ' ' << base + t[2] << '\n';
             }
         }
-        base += static_cast<std::uint32_t>(part.mesh->positions.size());
+        base += static_cast<std::uint32_t>(mesh.positions.size());
     }
 }
 

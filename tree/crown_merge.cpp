@@ -1,11 +1,10 @@
 #include "tree/crown_merge.h"
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <numeric>
 #include <unordered_map>
 #include <vector>
@@ -19,7 +18,9 @@ struct BallGrid {
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
 
     static std::uint64_t key(glm::ivec3 c) {
-        auto part = [](int v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1fffff); };
+        auto part = [](int v) {
+            return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1fffff);
+        };
         return part(c.x) | part(c.y) << 21 | part(c.z) << 42;
     }
     glm::ivec3 cell_of(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell)); }
@@ -77,8 +78,10 @@ float crown_merge_radius(std::span<const Ball> balls, std::size_t max_pieces) {
     const float precision = 0.01f * high;
     while (high - low > precision) {
         const float mid = 0.5f * (low + high);
-        if (count_crown_pieces(balls, mid) <= max_pieces) high = mid;
-        else low = mid;
+        if (count_crown_pieces(balls, mid) <= max_pieces)
+            high = mid;
+        else
+            low = mid;
     }
     return high;
 }

@@ -5,10 +5,10 @@
 // budget can draw (seed 001's crown fusion, pushed further where the budget asks for it).
 #pragma once
 
-#include "sdf/sphere_field.h"
-
 #include <cstddef>
 #include <span>
+
+#include "sdf/sphere_field.h"
 
 namespace sylva {
 

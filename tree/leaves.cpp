@@ -38,26 +38,23 @@ const std::vector<glm::vec2>& leaf_outline(LeafShape shape) {
 
 namespace {
 
-// Appends one leaf: the outline fanned from its centre, once facing up, once facing down.
+// Appends one leaf: the outline fanned from its centre, facing one way only. The base
+// (outline[0]) comes first, the centre last, so a leaf's first vertex is its base.
 void add_leaf(Mesh& mesh, const std::vector<glm::vec2>& outline, const glm::vec3& base,
               const glm::vec3& along, const glm::vec3& across, float length) {
-    const auto first = static_cast<std::uint32_t>(mesh.positions.size());
-    const bool simple = outline.size() == 4;  // the seed's quad: two triangles, no centre
-    if (!simple) mesh.positions.push_back(base + along * (0.5f * length));
-    const std::uint32_t ring = simple ? first : first + 1;
+    const auto ring = static_cast<std::uint32_t>(mesh.positions.size());
     for (const glm::vec2& p : outline)
         mesh.positions.push_back(base + (along * p.x + across * p.y) * length);
     const auto n = static_cast<std::uint32_t>(outline.size());
-    auto face = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        mesh.triangles.push_back({a, b, c});  // up
-        mesh.triangles.push_back({a, c, b});  // down
-    };
-    if (simple) {
-        face(ring, ring + 1, ring + 2);
-        face(ring, ring + 2, ring + 3);
+    if (n == 4) {  // the seed's quad: two triangles, no centre
+        mesh.triangles.push_back({ring, ring + 1, ring + 2});
+        mesh.triangles.push_back({ring, ring + 2, ring + 3});
         return;
     }
-    for (std::uint32_t i = 0; i < n; ++i) face(first, ring + i, ring + (i + 1) % n);
+    const auto centre = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.push_back(base + along * (0.5f * length));
+    for (std::uint32_t i = 0; i < n; ++i)
+        mesh.triangles.push_back({centre, ring + i, ring + (i + 1) % n});
 }
 
 }  // namespace
@@ -67,10 +64,8 @@ void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>&
         if (polygon.size() < 3) continue;
         const auto first = static_cast<std::uint32_t>(leaves.positions.size());
         leaves.positions.insert(leaves.positions.end(), polygon.begin(), polygon.end());
-        for (std::uint32_t i = 1; i + 1 < polygon.size(); ++i) {
+        for (std::uint32_t i = 1; i + 1 < polygon.size(); ++i)
             leaves.triangles.push_back({first, first + i, first + i + 1});
-            leaves.triangles.push_back({first, first + i + 1, first + i});
-        }
     }
 }
 

@@ -1,8 +1,11 @@
 // Leaves (seed 001, 5.5): walk a grid over the crown's box and, at every (jittered) grid
 // point inside the crown field, place a small flat leaf with a random orientation and size.
-// Each leaf is its outline fanned into triangles facing up plus the same triangles facing
-// down ("two triangles up, two down" for the simplest shape), so it shows from both sides.
-// Leaves are open surfaces by design.
+// Each leaf is its outline fanned into triangles once, one-sided (two triangles for the
+// simplest shape): a back-facing copy would double the triangles, and sharing vertices with
+// it would cancel the smooth normals. Renderers show both sides from the material instead
+// (the glTF leaf material is doubleSided). Leaves are open surfaces by design; no two
+// leaves share a vertex, and a leaf's first vertex is where it is attached (its base), so
+// leaf_thinning.h can find, rank and grow each leaf.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +33,7 @@ struct LeafSettings {
 // tip (1), y across. Star-shaped around (0.5, 0), so a fan from there covers it.
 const std::vector<glm::vec2>& leaf_outline(LeafShape shape);
 
-// The turtle's polygons ({ . }), fanned into triangles facing both ways (at least three
+// The turtle's polygons ({ . }), each fanned once from its first vertex (at least three
 // vertices each), appended to `leaves`.
 void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>& polygons);
 

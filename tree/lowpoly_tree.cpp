@@ -1,7 +1,14 @@
 #include "tree/lowpoly_tree.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
+#include "tree/leaf_thinning.h"
 
 namespace sylva {
 namespace {
@@ -11,8 +18,6 @@ void append_note(std::string& notes, const std::string& part, const std::string&
     if (!notes.empty()) notes += "; ";
     notes += part.empty() ? note : part + ": " + note;
 }
-
-}  // namespace
 
 // Trunk and crown reduced to their own budgets.
 ReducedTree reduce_parts(const Mesh& trunk, const Mesh& crown, std::size_t trunk_budget,
@@ -33,14 +38,14 @@ ReducedTree reduce_parts(const Mesh& trunk, const Mesh& crown, std::size_t trunk
     return out;
 }
 
-ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
-                        const DecimateSettings& settings) {
-    // Hollows inside the trunk or crown are invisible and only cost triangles.
-    Mesh trunk = tree.trunk, crown = tree.crown;
-    remove_inner_shells(trunk);
-    remove_inner_shells(crown);
+// Trunk and crown to the budget (leaves untouched).
+ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget& budget,
+                          const DecimateSettings& settings) {
     ReducedTree out;
-    if (budget.trunk || budget.crown) {
+    if (budget.total == 0 && !budget.trunk && !budget.crown) {  // only the leaves budgeted
+        out.trunk = trunk;
+        out.crown = crown;
+    } else if (budget.trunk || budget.crown) {
         const std::size_t trunk_budget =
             budget.trunk ? *budget.trunk : budget.total - std::min(budget.total, *budget.crown);
         const std::size_t crown_budget =
@@ -74,6 +79,56 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
     return out;
 }
 
+// The tree's trunk and crown without inner shells: hollows are invisible and only cost
+// triangles (lowpoly/inner_shells.h).
+std::pair<Mesh, Mesh> solids_to_reduce(const Tree& tree) {
+    std::pair<Mesh, Mesh> solids{tree.trunk, tree.crown};
+    remove_inner_shells(solids.first);
+    remove_inner_shells(solids.second);
+    return solids;
+}
+
+float lowest_y(const Mesh& mesh) {
+    float y = std::numeric_limits<float>::max();
+    for (const glm::vec3& p : mesh.positions) y = std::min(y, p.y);
+    return y;
+}
+
+// Moves the trunk's lowest point to `ground` by stretching (or squeezing) its bottom: a
+// vertex at the lowest point moves the whole way, one `span` above it not at all, linearly
+// in between. The span is at least twice the move, so heights keep their order and no
+// triangle folds over.
+void pin_to_ground(Mesh& trunk, float ground) {
+    if (trunk.positions.empty()) return;
+    const float low = lowest_y(trunk);
+    const float move = ground - low;
+    if (std::abs(move) < 1e-5f) return;
+    float high = low;
+    for (const glm::vec3& p : trunk.positions) high = std::max(high, p.y);
+    const float span = std::max(2.0f * std::abs(move), 0.1f * (high - low));
+    for (glm::vec3& p : trunk.positions)
+        if (p.y < low + span) p.y += move * (1.0f - (p.y - low) / span);
+    // The lowest vertices land exactly on the ground, whatever the rounding.
+    for (glm::vec3& p : trunk.positions)
+        if (p.y < ground) p.y = ground;
+}
+
+}  // namespace
+
+std::size_t leaf_budget(const TreeBudget& budget) {
+    if (budget.leaves) return *budget.leaves;
+    return budget.total > 0 ? budget.total : std::numeric_limits<std::size_t>::max();
+}
+
+ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
+                        const DecimateSettings& settings) {
+    const auto [trunk, crown] = solids_to_reduce(tree);
+    ReducedTree out = reduce_solids(trunk, crown, budget, settings);
+    pin_to_ground(out.trunk, lowest_y(tree.trunk));
+    out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
+    return out;
+}
+
 std::vector<std::size_t> lod_budgets(std::size_t finest, std::size_t levels) {
     std::vector<std::size_t> budgets;
     for (std::size_t i = 0; i < levels; ++i)
@@ -81,13 +136,34 @@ std::vector<std::size_t> lod_budgets(std::size_t finest, std::size_t levels) {
     return budgets;
 }
 
-std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const std::size_t> budgets,
+std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels) {
+    std::vector<TreeBudget> budgets;
+    const std::size_t leaves = leaf_budget(finest);
+    for (std::size_t i = 0; i < levels; ++i) {
+        TreeBudget b;
+        b.total = std::max<std::size_t>(finest.total >> i, 4);
+        b.leaves = i < 64 ? leaves >> i : 0;  // SIZE_MAX (every leaf) halves like a number
+        budgets.push_back(b);
+    }
+    return budgets;
+}
+
+std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
                                         const DecimateSettings& settings) {
     std::vector<ReducedTree> levels;
-    for (std::size_t budget : budgets) {
-        TreeBudget b;
-        b.total = budget;
-        levels.push_back(reduce_tree(tree, b, settings));
+    const float ground = lowest_y(tree.trunk);
+    const auto [finest_trunk, finest_crown] = solids_to_reduce(tree);
+    for (const TreeBudget& budget : budgets) {
+        const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
+        const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
+        ReducedTree level = reduce_solids(trunk, crown, budget, settings);
+        // A reduction only removes triangles, but cutting a handle caps it with new ones.
+        if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
+        if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;
+        level.triangles = level.trunk.triangles.size() + level.crown.triangles.size();
+        pin_to_ground(level.trunk, ground);
+        level.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
+        levels.push_back(std::move(level));
     }
     return levels;
 }

@@ -1,6 +1,6 @@
 // The low-poly stage on a finished tree: trunk and crown reduced to a triangle budget
-// (lowpoly/decimate.h), LOD chains, the parts named and coloured for the exporters, and
-// how far a reduction strays from the tree's fine (resolution-200) surface.
+// (lowpoly/decimate.h), leaves thinned to a budget of their own (tree/leaf_thinning.h),
+// LOD chains, and how far a reduction strays from the tree's fine (resolution-200) surface.
 #pragma once
 
 #include <cstddef>
@@ -19,20 +19,32 @@ namespace sylva {
 // chain starts when no budget is given.
 constexpr std::size_t kDefaultTriangleBudget = 800;
 
-// How many triangles the solid parts keep (leaves are not reduced).
+// How many triangles a tree keeps. Trunk + crown (the solids) are decimated to `total`;
+// leaves are not part of `total` but have a share of their own, `leaves`, which by default
+// equals `total`: a default game tree is at most 800 solid + 800 leaf triangles. Leaves are
+// thinned out, not decimated (whole leaves are dropped, the rest grown to keep the crown
+// as dense; tree/leaf_thinning.h).
 struct TreeBudget {
     // Trunk + crown together: one decimation, so the quadric error decides the split
     // (a thin trunk gives up triangles before a round crown does). 800 is a game tree.
+    // 0 without part budgets: trunk and crown keep every triangle.
     std::size_t total = kDefaultTriangleBudget;
     // Per part instead: when either is set the parts are reduced separately, a part
     // without its own budget getting what the total leaves (total minus the other's).
     std::optional<std::size_t> trunk = std::nullopt;
     std::optional<std::size_t> crown = std::nullopt;
+    // Leaf triangles: at most this many (0: no leaves); unset: `total`, and every leaf
+    // when `total` is 0 (no reduction).
+    std::optional<std::size_t> leaves = std::nullopt;
 };
+
+// The leaf triangles `budget` allows; SIZE_MAX for every leaf.
+std::size_t leaf_budget(const TreeBudget& budget);
 
 struct ReducedTree {
     Mesh trunk;  // closed 2-manifolds, empty where the tree has none
     Mesh crown;
+    Mesh leaves;                // the tree's leaves thinned to the leaf budget (open)
     std::size_t triangles = 0;  // trunk + crown
     bool within_budget = true;
     int backoffs = 0;     // see DecimateResult
@@ -40,6 +52,8 @@ struct ReducedTree {
     std::string note;     // empty, or why the budget was missed / what was backed off
 };
 
+// Trunk + crown decimated together (or per part) and the leaves thinned, as `budget` says.
+// The reduced trunk's lowest point is pinned to the tree's (see make_lod_chain()).
 // `settings` supplies the guards, progress and cancel; its max_triangles is ignored.
 // Throws what decimate() throws (InputError (core/errors.h) for an open trunk or crown,
 // Cancelled).
@@ -49,10 +63,18 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
 // LOD0 gets `finest` triangles (trunk + crown), each further level half the one before.
 std::vector<std::size_t> lod_budgets(std::size_t finest = kDefaultTriangleBudget,
                                      std::size_t levels = 4);
+// The same for whole budgets: LOD0 gets `finest` (its total, at least 4), each further level
+// half the total and half the leaves of the one before (per-part budgets are not used).
+std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels);
 
-// One reduction per budget, each from the full-resolution tree (not from the level
-// before, which would compound the error).
-std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const std::size_t> budgets,
+// A LOD chain, finest first. Level 0 is reduced from the tree, every further level from the
+// level before, so no part ever gains triangles from one level to the next (a part that
+// would, as when a handle's cap adds some, keeps the level before's mesh). Every level's
+// trunk is pinned to the tree's ground: where a reduction lifted or sank the trunk's lowest
+// point, the bottom of the trunk is stretched back to it (the rest of the level stays put).
+// Leaves are thinned from the tree's for each level, so a coarser level keeps a subset of
+// the leaves of a finer one. Errors as reduce_tree().
+std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
                                         const DecimateSettings& settings = {});
 
 // The tree's fine surface: trunk and crown meshed at `resolution` cells along the longest

@@ -6,15 +6,18 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "core/errors.h"
@@ -26,6 +29,7 @@
 #include "export/ply_writer.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
+#include "tree/leaf_thinning.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
 
@@ -46,7 +50,7 @@ struct SmallTree {
     ReducedTree reduced;
     PartColors colors;
     std::vector<NamedMesh> parts() const {
-        return tree_parts(reduced.trunk, reduced.crown, tree.leaves, colors);
+        return tree_parts(reduced.trunk, reduced.crown, reduced.leaves, colors);
     }
 };
 
@@ -191,13 +195,15 @@ TEST(ExportGlb, FlatShadingSplitsVerticesAndCarriesColours) {
         EXPECT_NEAR(color[2].get<double>(), parts[i].color.b, 1e-6);
         EXPECT_EQ(material.value("doubleSided", false), !parts[i].closed);
     }
-    // Smooth shading shares vertices.
+    // Smooth shading shares vertices, but for the copies split at creases.
     std::ostringstream smooth;
     write_glb(smooth, parts, ExportOptions{.shading = Shading::Smooth});
     const nlohmann::json s = glb_json(smooth.str());
     const auto& primitive = s["meshes"][0]["primitives"][0];
     EXPECT_EQ(s["accessors"][primitive["attributes"]["POSITION"].get<int>()]["count"],
-              parts[0].mesh->positions.size());
+              smooth_shaded(*parts[0].mesh).mesh.positions.size());
+    EXPECT_LT(s["accessors"][primitive["attributes"]["POSITION"].get<int>()]["count"],
+              3 * parts[0].mesh->triangles.size());
 }
 
 TEST(ExportGlb, SameInputSameBytes) {
@@ -348,7 +354,15 @@ TEST(ExportObj, SmoothShadingHasOneNormalPerVertex) {
         else if (line.rfind("v ", 0) == 0)
             ++vertices;
     }
-    EXPECT_EQ(normals, vertices);
+    // Positions stay shared (the parts stay closed); normals split only at creases.
+    std::size_t positions = 0, faces = 0;
+    for (const NamedMesh& part : parts) {
+        positions += part.mesh->positions.size();
+        faces += part.mesh->triangles.size();
+    }
+    EXPECT_EQ(vertices, positions);
+    EXPECT_GE(normals, vertices);
+    EXPECT_LT(normals, 3 * faces);
 }
 
 TEST(ExportPly, HeaderAndBinaryBodyMatch) {
@@ -443,57 +457,231 @@ TEST(ExportErrors, NameThePathAndLeaveNothingBehind) {
     fs::remove_all(dir);
 }
 
-TEST(ExportLod, OneGlbWithSuffixedNodes) {
-    const SmallTree& t = small_tree();
-    const std::vector<std::size_t> budgets = lod_budgets(800, 4);
-    EXPECT_EQ(budgets, (std::vector<std::size_t>{800, 400, 200, 100}));
-    const std::vector<ReducedTree> chain = make_lod_chain(t.tree, budgets);
-    ASSERT_EQ(chain.size(), 4u);
-    std::vector<std::vector<NamedMesh>> levels;
-    for (const ReducedTree& level : chain)
-        levels.push_back(tree_parts(level.trunk, level.crown, t.tree.leaves, t.colors));
-    for (std::size_t i = 1; i < chain.size(); ++i)
-        EXPECT_LE(chain[i].triangles, chain[i - 1].triangles);
+// The small tree as `sylva export --lod` finishes it: four levels.
+const FinishedTree& small_chain() {
+    static const FinishedTree chain = [] {
+        FinishSettings finish;
+        finish.lod = true;
+        return finish_tree(small_tree().tree, finish);
+    }();
+    return chain;
+}
 
+const std::vector<std::string> kParts = {"trunk", "crown", "leaves"};
+
+std::size_t suffixes(const std::string& name) {
+    std::size_t count = 0;
+    for (std::size_t at = name.find("_LOD"); at != std::string::npos;
+         at = name.find("_LOD", at + 1))
+        ++count;
+    return count;
+}
+
+// Per part, its triangles at each level: never more at a coarser level; the leaves
+// strictly fewer (thinned per level).
+void expect_monotone(const std::map<std::string, std::vector<std::size_t>>& counts) {
+    for (const auto& [part, levels] : counts)
+        for (std::size_t i = 1; i < levels.size(); ++i) {
+            EXPECT_LE(levels[i], levels[i - 1]) << part << " at LOD" << i;
+            if (part == "leaves") {
+                EXPECT_LT(levels[i], levels[i - 1]) << "LOD" << i;
+            }
+        }
+}
+
+TEST(ExportLod, BudgetsHalveForSolidsAndLeaves) {
+    EXPECT_EQ(lod_budgets(800, 4), (std::vector<std::size_t>{800, 400, 200, 100}));
+    const FinishedTree& chain = small_chain();
+    EXPECT_EQ(chain.budgets, (std::vector<std::size_t>{800, 400, 200, 100}));
+    EXPECT_EQ(chain.leaf_budgets, (std::vector<std::size_t>{800, 400, 200, 100}));
+    ASSERT_EQ(chain.levels.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_LE(chain.levels[i].leaves.triangles.size(), chain.leaf_budgets[i]);
+}
+
+TEST(ExportLod, OneGlbWithOneSuffixPerNameAndThreeMaterials) {
+    const SmallTree& t = small_tree();
     const fs::path path = temp_dir() / "tree.glb";
-    EXPECT_EQ(write_lod_chain(path, levels), std::vector<fs::path>{path});
+    EXPECT_EQ(write_tree(path, t.tree, small_chain(), t.colors), std::vector<fs::path>{path});
     const AssimpInfo info = assimp_info(path);
-    // The leaves are the same in every level: stored once, used by four nodes.
-    EXPECT_EQ(info.meshes.size(), 9u) << info.raw;
+    std::map<std::string, std::vector<std::size_t>> counts;
     for (std::size_t i = 0; i < 4; ++i) {
         const std::string suffix = "_LOD" + std::to_string(i);
         EXPECT_TRUE(info.has_node("tree" + suffix)) << info.raw;
-        for (const NamedMesh& part : levels[i])
-            EXPECT_EQ(info.mesh_of(part.name + suffix).faces, part.mesh->triangles.size())
-                << info.raw;
+        for (const std::string& part : kParts)
+            counts[part].push_back(info.mesh_of(part + suffix).faces);
     }
-    EXPECT_EQ(info.materials.size(), 3u) << "materials are shared by the levels";
+    for (const auto& [name, mesh] : info.nodes)
+        EXPECT_EQ(suffixes(name), name == "tree" ? 0u : 1u) << name;
+    expect_monotone(counts);
+    EXPECT_EQ(info.materials, kParts) << "one material per part, shared by the levels";
     fs::remove_all(path.parent_path());
 }
 
-TEST(ExportLod, OneObjPerLevelAndOneMtl) {
+TEST(ExportLod, OneObjPerLevelGroundedWithOneMtl) {
     const SmallTree& t = small_tree();
-    const std::vector<std::size_t> budgets = lod_budgets(800, 3);
-    const std::vector<ReducedTree> chain = make_lod_chain(t.tree, budgets);
-    std::vector<std::vector<NamedMesh>> levels;
-    for (const ReducedTree& level : chain)
-        levels.push_back(tree_parts(level.trunk, level.crown, t.tree.leaves, t.colors));
     const fs::path dir = temp_dir();
-    const auto written = write_lod_chain(dir / "oak.obj", levels);
-    EXPECT_EQ(written, (std::vector<fs::path>{dir / "oak.mtl", dir / "oak_LOD0.obj",
-                                              dir / "oak_LOD1.obj", dir / "oak_LOD2.obj"}));
-    for (std::size_t i = 0; i < levels.size(); ++i) {
+    const auto written = write_tree(dir / "oak.obj", t.tree, small_chain(), t.colors);
+    ASSERT_EQ(written,
+              (std::vector<fs::path>{dir / "oak.mtl", dir / "oak_LOD0.obj", dir / "oak_LOD1.obj",
+                                     dir / "oak_LOD2.obj", dir / "oak_LOD3.obj"}));
+    std::map<std::string, std::vector<std::size_t>> counts;
+    std::vector<float> ground;
+    for (std::size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE(i);
         const ObjFile obj = read_obj_with_mtl(written[i + 1]);
         EXPECT_EQ(obj.mtllib, "oak.mtl");
         EXPECT_TRUE(obj.indices_valid);
-        for (const NamedMesh& part : levels[i]) {
-            EXPECT_EQ(obj.groups.at(part.name).faces, part.mesh->triangles.size());
-            EXPECT_EQ(obj.kd.count(part.name), 1u);
+        EXPECT_EQ(obj.kd.size(), 3u) << "one shared material per part";
+        const std::string suffix = "_LOD" + std::to_string(i);
+        for (const std::string& part : kParts) {
+            const ObjGroup& g = obj.groups.at(part + suffix);
+            EXPECT_EQ(g.material, part) << "materials carry no suffix";
+            EXPECT_EQ(obj.kd.count(part), 1u);
+            counts[part].push_back(g.faces);
+        }
+        for (const std::string& group : obj.group_order) EXPECT_EQ(suffixes(group), 1u) << group;
+        float low = std::numeric_limits<float>::max();
+        for (const glm::vec3& p : obj.groups.at("trunk" + suffix).mesh.positions)
+            low = std::min(low, p.y);
+        ground.push_back(low);
+    }
+    expect_monotone(counts);
+    for (float low : ground) EXPECT_NEAR(low, ground[0], 0.01f) << "every level on the ground";
+    fs::remove_all(dir);
+}
+
+TEST(ExportLod, EveryLevelStandsWhereTheTreeStands) {
+    // Seeds and a coarse mesh where independent reductions used to lift LOD1's trunk.
+    for (std::uint64_t seed : {1u, 2u, 3u, 7u}) {
+        TreeTemplate tmpl = load_template("oak");
+        tmpl.params.seed = seed;
+        tmpl.params.trunk_resolution = 48;
+        tmpl.params.crown_resolution = 32;
+        const Tree tree = generate_tree(tmpl);
+        float ground = std::numeric_limits<float>::max();
+        for (const glm::vec3& p : tree.trunk.positions) ground = std::min(ground, p.y);
+        const auto chain = make_lod_chain(tree, lod_budgets(TreeBudget{}, 4));
+        for (std::size_t i = 0; i < chain.size(); ++i) {
+            float low = std::numeric_limits<float>::max();
+            for (const glm::vec3& p : chain[i].trunk.positions) low = std::min(low, p.y);
+            EXPECT_NEAR(low, ground, 0.01f) << "seed " << seed << " LOD" << i;
+            EXPECT_TRUE(check_topology(chain[i].trunk).is_closed_manifold());
         }
     }
-    EXPECT_EQ(lod_file_names(dir / "oak.ply", 2),
-              (std::vector<fs::path>{dir / "oak_LOD0.ply", dir / "oak_LOD1.ply"}));
-    fs::remove_all(dir);
+}
+
+// Sorted corner positions: the same for a duplicate face and a back-to-back copy.
+std::array<std::array<float, 3>, 3> corners(const Mesh& mesh,
+                                            const std::array<std::uint32_t, 3>& t) {
+    std::array<std::array<float, 3>, 3> c;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec3& p = mesh.positions[t[k]];
+        c[k] = {p.x, p.y, p.z};
+    }
+    std::sort(c.begin(), c.end());
+    return c;
+}
+
+TEST(ExportLeaves, WrittenOnceWithoutBackToBackFaces) {
+    const SmallTree& t = small_tree();
+    const fs::path path = temp_dir() / "tree.obj";
+    write_model(path, t.parts());
+    const ObjFile obj = read_obj_with_mtl(path);
+    const Mesh& leaves = obj.groups.at("leaves").mesh;
+    ASSERT_GT(leaves.triangles.size(), 0u);
+    EXPECT_EQ(leaves.triangles.size(), t.reduced.leaves.triangles.size());
+    std::set<std::array<std::array<float, 3>, 3>> seen;
+    for (const auto& tri : leaves.triangles)
+        EXPECT_TRUE(seen.insert(corners(leaves, tri)).second) << "a duplicate or back copy";
+    // glTF shows the single side from both sides through the material.
+    std::ostringstream glb;
+    write_glb(glb, t.parts(), ExportOptions{});
+    const nlohmann::json gltf = glb_json(glb.str());
+    EXPECT_TRUE(gltf["materials"][2]["doubleSided"].get<bool>());
+    EXPECT_EQ(gltf["materials"][2]["name"], "leaves");
+    fs::remove_all(path.parent_path());
+}
+
+TEST(ExportLeaves, TheBudgetThinsLeavesEvenlyAndGrowsThem) {
+    const Tree& tree = small_tree().tree;
+    const std::size_t all = count_leaves(tree.leaves);
+    ASSERT_GT(all, 20u);
+    const std::size_t budget = tree.leaves.triangles.size() / 4;
+    const Mesh thin = thin_leaves(tree.leaves, budget);
+    EXPECT_LE(thin.triangles.size(), budget);
+    EXPECT_GT(thin.triangles.size(), budget * 3 / 4);
+    const Mesh thinner = thin_leaves(tree.leaves, budget / 2);
+    EXPECT_EQ(thin_leaves(tree.leaves, budget).positions, thin.positions) << "deterministic";
+    // A coarser budget keeps a subset of the leaves: every kept base is a base of the finer.
+    std::set<std::array<float, 3>> points;
+    for (const glm::vec3& p : thin.positions) points.insert({p.x, p.y, p.z});
+    std::size_t found = 0;
+    for (const glm::vec3& p : thinner.positions) found += points.count({p.x, p.y, p.z});
+    EXPECT_GT(found, 0u);
+    // Even: the kept leaves' centre stays near the crown's leaves' centre.
+    auto centre = [](const Mesh& m) {
+        glm::dvec3 sum(0.0);
+        for (const glm::vec3& p : m.positions) sum += glm::dvec3(p);
+        return glm::vec3(sum / double(m.positions.size()));
+    };
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& p : tree.leaves.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    EXPECT_LT(glm::length(centre(thin) - centre(tree.leaves)), 0.15f * glm::length(hi - lo));
+    // Grown: the kept leaves cover about the same area (the growth is capped at 2x).
+    auto area = [](const Mesh& m) {
+        double a = 0.0;
+        for (const auto& t : m.triangles)
+            a += 0.5 * glm::length(glm::cross(m.positions[t[1]] - m.positions[t[0]],
+                                              m.positions[t[2]] - m.positions[t[0]]));
+        return a;
+    };
+    EXPECT_NEAR(area(thin), area(tree.leaves), 0.25 * area(tree.leaves));
+    EXPECT_TRUE(thin_leaves(tree.leaves, 0).triangles.empty());
+}
+
+TEST(MeshNormals, SmoothNormalsFaceEveryTriangleOnEveryTemplate) {
+    for (const TreeTemplate* tmpl : builtin_templates()) {
+        SCOPED_TRACE(tmpl->name);
+        const Tree tree = generate_tree(*tmpl);
+        const ReducedTree reduced = reduce_tree(tree, TreeBudget{});
+        for (const Mesh* part : {&reduced.trunk, &reduced.crown, &reduced.leaves}) {
+            const ShadedMesh shaded = smooth_shaded(*part);
+            ASSERT_EQ(shaded.mesh.triangles.size(), part->triangles.size());
+            ASSERT_EQ(shaded.normals.size(), shaded.mesh.positions.size());
+            const std::vector<glm::vec3> faces = face_normals(shaded.mesh);
+            std::size_t bad = 0;
+            for (std::size_t f = 0; f < faces.size(); ++f)
+                for (std::uint32_t v : shaded.mesh.triangles[f]) {
+                    EXPECT_NEAR(glm::length(shaded.normals[v]), 1.0f, 1e-4f);
+                    if (faces[f] != glm::vec3(0.0f) &&
+                        !(glm::dot(shaded.normals[v], faces[f]) > 0.0f))
+                        ++bad;
+                }
+            EXPECT_EQ(bad, 0u) << "corners with a normal 90 degrees or more from their face";
+        }
+    }
+}
+
+TEST(MeshNormals, CreasesSplitACubeAndSmoothASphere) {
+    // A cube: every corner meets three faces at 90 degrees, so each vertex splits in three
+    // and every normal is its face's.
+    Mesh cube;
+    for (int i = 0; i < 8; ++i)
+        cube.positions.push_back({float(i & 1), float(i >> 1 & 1), float(i >> 2 & 1)});
+    cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    const ShadedMesh shaded = smooth_shaded(cube);
+    EXPECT_EQ(shaded.mesh.positions.size(), 24u);
+    const auto faces = face_normals(cube);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (std::uint32_t v : shaded.mesh.triangles[f])
+            EXPECT_NEAR(glm::dot(shaded.normals[v], faces[f]), 1.0f, 1e-5f);
+    // Past the crease angle (here 100 degrees) the cube is one smooth blob again.
+    EXPECT_EQ(smooth_shaded(cube, 100.0f).mesh.positions.size(), 8u);
 }
 
 TEST(MeshNormals, FaceAndVertexNormalsAreUnitAndOutward) {

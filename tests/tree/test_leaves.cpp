@@ -1,10 +1,13 @@
 // Leaves: placed only inside the crown, as many as the density asks, the same for the same
-// seed, and each shape drawn from both sides.
+// seed, each leaf written once (one-sided: the material shows the back).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <set>
 
 #include "marching/mesh_checks.h"
 #include "tree/leaves.h"
@@ -22,24 +25,57 @@ const Box kBox{glm::vec3(-2.5f), glm::vec3(2.5f)};
 
 std::size_t leaf_count(const Mesh& leaves, LeafShape shape) {
     const std::size_t outline = leaf_outline(shape).size();
-    const std::size_t per_leaf = outline == 4 ? 4 : 2 * outline;  // both sides
+    const std::size_t per_leaf = outline == 4 ? 2 : outline;  // one side
     EXPECT_EQ(leaves.triangles.size() % per_leaf, 0u);
     return leaves.triangles.size() / per_leaf;
 }
 
-TEST(Leaves, TheSeedsLeafIsTwoTrianglesUpAndTwoDown) {
+// The three corner positions of a triangle, sorted: equal for a duplicate and for a
+// back-to-back copy (same corners, opposite winding), whatever vertices they use.
+std::array<std::array<float, 3>, 3> corners(const Mesh& mesh,
+                                            const std::array<std::uint32_t, 3>& t) {
+    std::array<std::array<float, 3>, 3> c;
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec3& p = mesh.positions[t[static_cast<std::size_t>(k)]];
+        c[static_cast<std::size_t>(k)] = {p.x, p.y, p.z};
+    }
+    std::sort(c.begin(), c.end());
+    return c;
+}
+
+void expect_each_face_once(const Mesh& leaves) {
+    std::set<std::array<std::array<float, 3>, 3>> seen;
+    for (const auto& t : leaves.triangles)
+        EXPECT_TRUE(seen.insert(corners(leaves, t)).second) << "a duplicate or back-to-back face";
+}
+
+TEST(Leaves, TheSeedsLeafIsTwoTrianglesWrittenOnce) {
     LeafSettings s;
     s.density = 5;
     Mesh leaves = scatter_leaves(ball, kBox, s);
     ASSERT_GT(leaves.triangles.size(), 0u);
-    // Triangles come in pairs with opposite winding over the same three vertices.
-    for (size_t t = 0; t + 1 < leaves.triangles.size(); t += 2) {
-        auto up = leaves.triangles[t], down = leaves.triangles[t + 1];
-        EXPECT_EQ(up[0], down[0]);
-        EXPECT_EQ(up[1], down[2]);
-        EXPECT_EQ(up[2], down[1]);
+    EXPECT_EQ(leaves.triangles.size() % 2, 0u);
+    EXPECT_EQ(leaves.positions.size(), 2 * leaves.triangles.size()) << "four corners, two faces";
+    expect_each_face_once(leaves);
+    for (LeafShape shape : {LeafShape::Oak, LeafShape::Needle, LeafShape::Frond}) {
+        s.shape = shape;
+        expect_each_face_once(scatter_leaves(ball, kBox, s));
     }
-    EXPECT_EQ(leaves.triangles.size() % 4, 0u);
+}
+
+TEST(Leaves, PolygonsAreFannedOnce) {
+    Mesh leaves;
+    add_polygon_leaves(leaves, {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-0.5f, 0.5f, 0}},
+                                {{2, 0, 0}, {3, 0, 0}},  // too few corners: skipped
+                                {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}});
+    EXPECT_EQ(leaves.triangles.size(), 3u + 1u);
+    expect_each_face_once(leaves);
+    // One winding: every face of the flat polygons points the same way (+z).
+    for (const auto& t : leaves.triangles) {
+        const glm::vec3 n = glm::cross(leaves.positions[t[1]] - leaves.positions[t[0]],
+                                       leaves.positions[t[2]] - leaves.positions[t[0]]);
+        EXPECT_GT(n.z, 0.0f);
+    }
 }
 
 TEST(Leaves, CountFollowsTheDensityAndLeavesSitInsideTheCrown) {
