@@ -12,8 +12,9 @@
 
 namespace sylva {
 
-// Triangles a budget should leave each crown piece so it reads as a blob, not a token.
-inline constexpr std::size_t kTrianglesPerCrownPiece = 16;
+// Triangles a budget should leave each crown piece so it reads as a blob (an octahedron),
+// not a token (a tetrahedron).
+inline constexpr std::size_t kTrianglesPerCrownPiece = 8;
 
 // The number of pieces the union of the spheres forms when each radius grows by `grow`
 // (spheres whose grown balls touch are one piece).

@@ -65,21 +65,21 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"fir.obj", 0x07d5f62553f1a2abull},
         {"fir.glb", 0x38ac840a8a1094c0ull},
         {"fir.ply", 0xeafa6b95e2fbd6cbull},
-        {"honda.obj", 0xcac759de08e60632ull},
-        {"honda.glb", 0x056aef509c4edba2ull},
-        {"honda.ply", 0x6668e20cf5dbe173ull},
+        {"honda.obj", 0x31edb8dcdf86bee3ull},
+        {"honda.glb", 0xf8c220674b575337ull},
+        {"honda.ply", 0x6087728f97921443ull},
         {"palm.obj", 0x92d41c4a44f8ba15ull},
         {"palm.glb", 0x527c75e42282a2cdull},
         {"palm.ply", 0x74ecbe935aefb123ull},
         {"pine.obj", 0xf64d9e2ee496c8a5ull},
         {"pine.glb", 0xec6a0db38d0d5409ull},
         {"pine.ply", 0xc59fce0cf8db2330ull},
-        {"spruce.obj", 0xe7345133035ec9fbull},
-        {"spruce.glb", 0x87c37418fc6d25beull},
-        {"spruce.ply", 0xccc8836506335085ull},
-        {"ternary.obj", 0xb94284319777050dull},
-        {"ternary.glb", 0xe3fcab7ab247b42dull},
-        {"ternary.ply", 0x974c160308f8039aull},
+        {"spruce.obj", 0x567068d0736c4e6full},
+        {"spruce.glb", 0x03399d4130640816ull},
+        {"spruce.ply", 0xd531bb351f3c6dddull},
+        {"ternary.obj", 0x78e71652422a8070ull},
+        {"ternary.glb", 0x5ba7d37941c4248dull},
+        {"ternary.ply", 0xabb94036db8ccef1ull},
         {"willow.obj", 0x0e1e24b30c996e66ull},
         {"willow.glb", 0x8e8821ed90fea795ull},
         {"willow.ply", 0x501ef612fcb11c0eull},
@@ -100,10 +100,12 @@ class GoldenExports : public ::testing::Test {
 
     // Writes `name` + ext for each extension the way the CLI does, and checks the hashes.
     void check(const TreeTemplate& tmpl, const std::string& name, bool lod) {
-        const Tree tree = generate_tree(tmpl);
         FinishSettings finish;
         finish.budget.total = static_cast<std::size_t>(tmpl.params.triangle_budget);
         finish.lod = lod;
+        MeshOptions mesh;
+        mesh.budget = game_budget(finish);
+        const Tree tree = generate_tree(tmpl, mesh);
         const FinishedTree finished = finish_tree(tree, finish);
         for (const ExportFormat* format : export_formats()) {
             const std::string key = name + std::string(format->extension);
