@@ -523,6 +523,15 @@ std::size_t inward_pieces(const Mesh& mesh) {
         std::count_if(volumes.begin(), volumes.end(), [](double v) { return !(v > 0.0); }));
 }
 
+// About where collapses stop: every closed piece keeps at least 4 triangles and every
+// handle pins about a dozen more (lowpoly/handle_cutting.h).
+std::size_t triangle_floor(std::span<const Mesh* const> parts) {
+    std::size_t floor = 0;
+    for (const Mesh* m : parts)
+        if (!m->triangles.empty()) floor += 4 * component_volumes(*m).size() + 12 * genus(*m);
+    return floor;
+}
+
 // One reduction from scratch down to `target` triangles.
 std::vector<Mesh> reduce(std::span<const Mesh* const> parts, std::size_t target,
                          const DecimateSettings& settings, double min_twice_area) {
@@ -615,19 +624,30 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     }
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
     const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);
-    DecimateResult result = reduce_with_backoff(parts, settings, min_twice_area);
+    // Handles and pieces set a floor no collapse goes below. When it is above the budget
+    // the direct reduction is wasted work (the slowest part of a crossing-branch tree):
+    // go straight to the intermediate one and cut handles there.
+    const std::size_t floor = triangle_floor(parts);
+    const bool handles_pin = settings.cut_handles && floor > settings.max_triangles;
+    DecimateResult result;
+    if (!handles_pin) result = reduce_with_backoff(parts, settings, min_twice_area);
 
     // Over budget at the floor: handles pin the remaining triangles. Cut them where the
     // parts still have detail (an intermediate reduction to a few times the floor, so the
     // final one can still share the budget well between the parts), shortest loops
     // first, then reduce the cut parts to the budget; repeat while it helps.
-    if (!result.within_budget && settings.cut_handles && result.backoffs == 0) {
+    if (handles_pin || (!result.within_budget && settings.cut_handles && result.backoffs == 0)) {
         // Progress already reached 1; the passes below only poll the cancel flag.
         DecimateSettings quiet = settings;
         quiet.progress = nullptr;
         DecimateSettings intermediate = quiet;
-        intermediate.max_triangles = std::max(4 * settings.max_triangles, 2 * result.triangles);
+        intermediate.max_triangles =
+            std::max(4 * settings.max_triangles, 2 * (handles_pin ? floor : result.triangles));
         DecimateResult detailed = reduce_with_backoff(parts, intermediate, min_twice_area);
+        if (handles_pin) {
+            result = detailed;  // the best so far, measured against the real budget
+            result.within_budget = result.triangles <= settings.max_triangles;
+        }
         std::vector<Mesh> cut = std::move(detailed.parts);
         int handles_cut = 0;
         for (int round = 0; round < 8 && !result.within_budget && detailed.backoffs == 0; ++round) {

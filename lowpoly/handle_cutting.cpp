@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numeric>
@@ -215,6 +216,53 @@ bool cut_along(Mesh& mesh, const Connectivity& c, const std::vector<std::uint32_
     return true;
 }
 
+// check_topology() restricted to what a cut can change: the triangles around `changed`
+// vertices. Every edge at such a vertex must have one face on each side, in opposite
+// directions; every such vertex's faces must form one fan; no such face may be degenerate
+// (the same threshold as check_topology: twice the area at most 2e-12 of the squared
+// diagonal). A full check per cut costs a sort of every edge; this costs one scan.
+bool closed_manifold_around(const Mesh& mesh, const std::vector<std::uint32_t>& changed,
+                            double min_twice_area) {
+    std::vector<bool> is_changed(mesh.positions.size(), false);
+    for (std::uint32_t v : changed) is_changed[v] = true;
+    std::unordered_map<std::uint64_t, int> balance;  // undirected edge -> +1 / -1 sum
+    std::unordered_map<std::uint64_t, int> uses;     // undirected edge -> faces
+    std::unordered_map<std::uint32_t, std::vector<std::pair<std::uint32_t, std::uint32_t>>>
+        fans;  // vertex -> (a, b) of each face (v, a, b)
+    for (const Triangle& t : mesh.triangles) {
+        if (!is_changed[t[0]] && !is_changed[t[1]] && !is_changed[t[2]]) continue;
+        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+            !(glm::length(glm::cross(b - a, c - a)) > min_twice_area))
+            return false;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t u = t[k], v = t[(k + 1) % 3];
+            if (is_changed[u]) fans[u].emplace_back(v, t[(k + 2) % 3]);
+            if (!is_changed[u] && !is_changed[v]) continue;
+            const std::uint64_t e = u < v ? key(u, v) : key(v, u);
+            balance[e] += u < v ? 1 : -1;
+            ++uses[e];
+        }
+    }
+    for (const auto& [e, n] : uses)
+        if (n != 2 || balance[e] != 0) return false;
+    for (auto& [v, fan] : fans) {
+        // One cycle a -> b -> ... through all of v's faces.
+        std::unordered_map<std::uint32_t, std::uint32_t> next;
+        for (const auto& [a, b] : fan)
+            if (!next.emplace(a, b).second) return false;
+        std::uint32_t at = fan.front().first;
+        for (std::size_t steps = 0; steps < fan.size(); ++steps) {
+            auto found = next.find(at);
+            if (found == next.end()) return false;
+            at = found->second;
+            if (at == fan.front().first && steps + 1 != fan.size()) return false;
+        }
+        if (at != fan.front().first) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::size_t genus(const Mesh& mesh) {
@@ -240,6 +288,14 @@ std::size_t genus(const Mesh& mesh) {
 std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
     constexpr std::size_t kRoots = 64;  // loops are sought through this many sample vertices
     std::size_t cuts = 0;
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double diagonal2 =
+        mesh.positions.empty() ? 0.0 : glm::dot(glm::dvec3(hi - lo), glm::dvec3(hi - lo));
+    const double min_twice_area = 2e-12 * diagonal2;  // check_topology's threshold
     while (cuts < max_cuts) {
         std::size_t g = genus(mesh);
         if (g == 0) break;
@@ -267,7 +323,11 @@ std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
                 continue;
             const Mesh before = mesh;
             if (!cut_along(mesh, c, loop.vertices)) continue;
-            if (genus(mesh) + 1 != g || !check_topology(mesh).is_closed_manifold()) {
+            std::vector<std::uint32_t> changed = loop.vertices;
+            for (auto v = static_cast<std::uint32_t>(before.positions.size());
+                 v < mesh.positions.size(); ++v)
+                changed.push_back(v);  // twins and cap centres
+            if (genus(mesh) + 1 != g || !closed_manifold_around(mesh, changed, min_twice_area)) {
                 mesh = before;
                 continue;
             }
