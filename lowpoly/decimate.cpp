@@ -642,7 +642,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         quiet.progress = nullptr;
         DecimateSettings intermediate = quiet;
         intermediate.max_triangles =
-            std::max(4 * settings.max_triangles, 2 * (handles_pin ? floor : result.triangles));
+            std::max(4 * settings.max_triangles, 4 * (handles_pin ? floor : result.triangles));
         DecimateResult detailed = reduce_with_backoff(parts, intermediate, min_twice_area);
         if (handles_pin) {
             result = detailed;  // the best so far, measured against the real budget
