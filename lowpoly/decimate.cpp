@@ -271,7 +271,13 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
                 if (!std::isfinite(candidate[0]) || !std::isfinite(candidate[1]) ||
                     !std::isfinite(candidate[2]))
                     break;
-                if (guards_.allow_move(mesh_, v, candidate)) {
+                const std::size_t p_of_v = piece(v);
+                const double change =
+                    volume_change(v, candidate, OmMesh::FaceHandle(), OmMesh::FaceHandle());
+                const bool keeps = !(piece_floor_[p_of_v] > 0.0) ||
+                                   piece_volume_[p_of_v] + change > piece_floor_[p_of_v];
+                if (keeps && guards_.allow_move(mesh_, v, candidate)) {
+                    piece_volume_[p_of_v] += change;
                     mesh_.set_point(v, candidate);
                     for (auto f : mesh_.vf_range(v)) mesh_.set_normal(f, mesh_.calc_face_normal(f));
                     break;
@@ -346,12 +352,18 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     // measured from v0, every face through v0 starts with no volume, so the change is the
     // volume each remaining face sweeps with its corner moving to p1.
     double volume_change(const CollapseInfo& ci) const {
-        const auto& o = ci.p0;
-        const auto d = ci.p1 - o;
+        return volume_change(ci.v0, ci.p1, ci.fl, ci.fr);
+    }
+
+    // The same for v moving to `to`, faces skip_a and skip_b (if valid) left out.
+    double volume_change(VertexHandle v, const OmMesh::Point& to, OmMesh::FaceHandle skip_a,
+                         OmMesh::FaceHandle skip_b) const {
+        const auto& o = mesh_.point(v);
+        const auto d = to - o;
         double six = 0.0;
-        mesh_.all_outgoing(ci.v0, [&](HalfedgeHandle h) {
+        mesh_.all_outgoing(v, [&](HalfedgeHandle h) {
             const auto f = mesh_.face_handle(h);
-            if (!f.is_valid() || f == ci.fl || f == ci.fr) return true;
+            if (!f.is_valid() || f == skip_a || f == skip_b) return true;
             const auto a = mesh_.point(mesh_.to_vertex_handle(h)) - o;
             const auto b = mesh_.point(mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h))) - o;
             six += d | (a % b);
@@ -670,7 +682,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
             for (const Mesh& m : cut) pointers.push_back(&m);
             DecimateResult again = reduce_with_backoff(pointers, quiet, min_twice_area);
             // Keep the last clean result, and only take a better one.
-            if (again.backoffs > 0 || again.triangles >= result.triangles) break;
+            if (again.triangles >= result.triangles) break;
             again.handles_cut = handles_cut;
             result = std::move(again);
         }

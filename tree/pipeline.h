@@ -42,10 +42,18 @@ struct MeshOptions {
     // Reaches every stage (growth, meshing, leaves); once it is true, generate_tree throws
     // Cancelled.
     CancelFlag cancel = nullptr;
-    // The trunk + crown triangles the meshes will be reduced to (0: not reduced). A low
-    // budget merges a many-blob crown into a few pieces (crown_merge.h).
+    // The trunk + crown triangles the meshes will be reduced to (0: not reduced). It sets
+    // the crown's resolution (crown_resolution_for_budget), and a low budget merges a
+    // many-blob crown into a few pieces (crown_merge.h).
     std::size_t budget = 0;
 };
+
+// The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown
+// triangles: the template's, or less when the budget cannot show more (24 at 200, 32 at
+// 800, 62 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
+// coarse grid already draws as well as a small budget can; the trunk keeps its resolution,
+// since thin branches need it.
+int crown_resolution_for_budget(int resolution, std::size_t budget);
 
 // Runs the whole pipeline on a template (its params as the caller set them).
 // Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.

@@ -21,7 +21,8 @@ namespace {
 void jitter(TreeParams& params, std::string_view key, double spread, Random& random) {
     for (const ParamInfo& info : param_infos()) {
         if (info.key != key) continue;
-        const double value = *get_param(params, key) * (1.0 + spread * (2.0 * random.uniform() - 1.0));
+        const double value =
+            *get_param(params, key) * (1.0 + spread * (2.0 * random.uniform() - 1.0));
         set_param(params, key, std::clamp(value, info.min, info.max));
     }
 }

@@ -1,0 +1,108 @@
+// The game mesh, end to end (issue 11): for every built-in template and budgets 200, 800
+// and 3000, the whole `sylva export -o tree.glb` path (derive, turtle, fields, meshing,
+// leaves, reduction, LOD-free finish, glb written) timed from one run, side by side with
+// meshoptimizer's meshopt_simplify called alone on the same raw trunk and crown (each part
+// to its share of the budget by triangle count), and whether meshopt's parts stay closed
+// 2-manifolds (check_topology). Speed goals live here, not in unit tests.
+//
+// Columns: raw = trunk + crown triangles as meshed; export ms = whole export, wall;
+// reduce ms = its finish_tree share; meshopt ms = meshopt_simplify on both parts;
+// ratio = export / meshopt; closed = Sylva's / meshopt's parts closed.
+//
+// Usage: sylva-bench-export [TEMPLATE...]
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/stopwatch.h"
+#include "export/export_tree.h"
+#include "marching/mesh_checks.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
+
+namespace {
+
+using namespace sylva;
+
+bool closed(const Mesh& m) { return m.triangles.empty() || check_topology(m).is_closed_manifold(); }
+
+// meshopt_simplify of one part to `target` triangles; the result keeps the part's
+// positions (unused ones are harmless for check_topology's edge tests).
+Mesh meshopt_reduce(const Mesh& m, std::size_t target) {
+    Mesh out;
+    if (m.triangles.empty()) return out;
+    std::vector<unsigned> indices;
+    indices.reserve(3 * m.triangles.size());
+    for (const auto& t : m.triangles) indices.insert(indices.end(), t.begin(), t.end());
+    std::vector<unsigned> reduced(indices.size());
+    const std::size_t n =
+        meshopt_simplify(reduced.data(), indices.data(), indices.size(), &m.positions[0].x,
+                         m.positions.size(), sizeof(glm::vec3), 3 * target, 1.0f, 0, nullptr);
+    out.positions = m.positions;
+    for (std::size_t i = 0; i + 2 < n; i += 3)
+        out.triangles.push_back({reduced[i], reduced[i + 1], reduced[i + 2]});
+    return out;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> names(argv + 1, argv + argc);
+    if (names.empty())
+        for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "sylva_bench.glb";
+
+    for (std::size_t budget : {200, 800, 3000}) {
+        std::printf("budget %zu (trunk + crown; leaves thinned to the same number)\n", budget);
+        std::printf("%-9s %7s %9s %9s %10s %7s %7s\n", "template", "raw", "export ms",
+                    "reduce ms", "meshopt ms", "ratio", "closed");
+        std::vector<double> exports, ratios;
+        for (const std::string& name : names) {
+            const TreeTemplate tmpl = load_template(name);
+            FinishSettings finish;
+            finish.budget.total = budget;
+            MeshOptions options;
+            options.budget = game_budget(finish);
+
+            Stopwatch whole;
+            const Tree tree = generate_tree(tmpl, options);
+            Stopwatch reduce;
+            const FinishedTree finished = finish_tree(tree, finish);
+            const double reduce_ms = reduce.lap_ms();
+            write_tree(out, tree, finished, tmpl.colors);
+            const double export_ms = whole.lap_ms();
+
+            const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
+            const std::size_t trunk_share = budget * tree.trunk.triangles.size() / raw;
+            Stopwatch peer;
+            const Mesh trunk = meshopt_reduce(tree.trunk, trunk_share);
+            const Mesh crown = meshopt_reduce(tree.crown, budget - trunk_share);
+            const double meshopt_ms = peer.lap_ms();
+
+            const ReducedTree& r = finished.levels.at(0);
+            const bool ours = closed(r.trunk) && closed(r.crown);
+            const bool theirs = closed(trunk) && closed(crown);
+            std::printf("%-9s %7zu %9.1f %9.1f %10.1f %6.1fx %3s/%-3s\n", name.c_str(), raw,
+                        export_ms, reduce_ms, meshopt_ms, export_ms / meshopt_ms,
+                        ours ? "yes" : "NO", theirs ? "yes" : "no");
+            std::fflush(stdout);
+            exports.push_back(export_ms);
+            ratios.push_back(export_ms / meshopt_ms);
+        }
+        std::printf("export: median %.1f ms, worst %.1f ms (targets 25 / 50 ms); "
+                    "export / meshopt_simplify alone: median %.1fx (target <= 1)\n\n",
+                    median(exports), *std::max_element(exports.begin(), exports.end()),
+                    median(ratios));
+    }
+    std::filesystem::remove(out);
+    return 0;
+}
