@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -26,10 +27,9 @@ struct BallGrid {
     glm::ivec3 cell_of(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell)); }
 };
 
-}  // namespace
-
-std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
-    if (balls.empty()) return 0;
+// Calls f(i, j, gap) for every pair i < j of spheres closer than twice `grow`.
+template <class F>
+void for_each_close_pair(std::span<const Ball> balls, float grow, F&& f) {
     float largest = 0.0f;
     for (const Ball& b : balls) largest = std::max(largest, b.radius);
     // Two balls touch only when their centres are closer than twice the largest grown
@@ -37,14 +37,6 @@ std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
     BallGrid grid{std::max(2.0f * (largest + grow), 1e-6f), {}};
     for (std::uint32_t i = 0; i < balls.size(); ++i)
         grid.cells[BallGrid::key(grid.cell_of(balls[i].center))].push_back(i);
-
-    std::vector<std::uint32_t> parent(balls.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](std::uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    };
-    std::size_t pieces = balls.size();
     for (std::uint32_t i = 0; i < balls.size(); ++i) {
         const glm::ivec3 c = grid.cell_of(balls[i].center);
         for (int dz = -1; dz <= 1; ++dz)
@@ -54,15 +46,41 @@ std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
                     if (found == grid.cells.end()) continue;
                     for (std::uint32_t j : found->second) {
                         if (j <= i) continue;
-                        const float reach = balls[i].radius + balls[j].radius + 2.0f * grow;
-                        if (glm::distance(balls[i].center, balls[j].center) >= reach) continue;
-                        const std::uint32_t a = find(i), b = find(j);
-                        if (a == b) continue;
-                        parent[a] = b;
-                        --pieces;
+                        const float gap = glm::distance(balls[i].center, balls[j].center) -
+                                          balls[i].radius - balls[j].radius;
+                        if (gap < 2.0f * grow) f(i, j, gap);
                     }
                 }
     }
+}
+
+struct DisjointSets {
+    std::vector<std::uint32_t> parent;
+    explicit DisjointSets(std::size_t n) : parent(n) {
+        std::iota(parent.begin(), parent.end(), 0u);
+    }
+    std::uint32_t find(std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    }
+    // False when a and b were one set already.
+    bool unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return false;
+        parent[a] = b;
+        return true;
+    }
+};
+
+}  // namespace
+
+std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
+    DisjointSets sets(balls.size());
+    std::size_t pieces = balls.size();
+    for_each_close_pair(balls, grow, [&](std::uint32_t i, std::uint32_t j, float) {
+        if (sets.unite(i, j)) --pieces;
+    });
     return pieces;
 }
 
@@ -84,6 +102,33 @@ float crown_merge_radius(std::span<const Ball> balls, std::size_t max_pieces) {
             low = mid;
     }
     return high;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> crown_bridges(std::span<const Ball> balls,
+                                                                   std::size_t max_pieces) {
+    const float grow = crown_merge_radius(balls, max_pieces);
+    if (grow <= 0.0f) return {};
+    struct Gap {
+        float gap;
+        std::uint32_t i, j;
+    };
+    std::vector<Gap> gaps;
+    for_each_close_pair(balls, grow, [&](std::uint32_t i, std::uint32_t j, float gap) {
+        gaps.push_back({gap, i, j});
+    });
+    std::sort(gaps.begin(), gaps.end(), [](const Gap& a, const Gap& b) {
+        return std::tie(a.gap, a.i, a.j) < std::tie(b.gap, b.i, b.j);
+    });
+    DisjointSets sets(balls.size());
+    std::size_t pieces = balls.size();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges;
+    for (const Gap& g : gaps) {
+        if (pieces <= max_pieces && g.gap > 0.0f) break;  // what touches is joined anyway
+        if (!sets.unite(g.i, g.j)) continue;
+        --pieces;
+        if (g.gap > 0.0f) bridges.emplace_back(g.i, g.j);
+    }
+    return bridges;
 }
 
 }  // namespace sylva

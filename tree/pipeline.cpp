@@ -93,21 +93,37 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
     }
 }
 
-// The crown as a budget of `budget` trunk + crown triangles can draw it: with crown_merge
-// on and more blobs than half the budget leaves kTrianglesPerCrownPiece each, every sphere
-// grows by the radius that merges them into that many pieces (crown_merge.h): `merged`
-// gets that crown. Returns the growth, 0 when the crown is meshed as it is.
-float merge_crown_for_budget(const SphereField& crown, std::size_t budget, const TreeParams& p,
-                             TreeFields& merged) {
-    if (budget == 0 || p.crown_merge == 0) return 0.0f;
-    const std::size_t max_pieces = std::max<std::size_t>(1, budget / 2 / kTrianglesPerCrownPiece);
-    const float grow = crown_merge_radius(crown.balls(), max_pieces);
-    if (grow <= 0.0f) return 0.0f;
-    std::vector<Ball> grown = crown.balls();
-    for (Ball& b : grown) b.radius += grow;
-    add_crown_field(merged, std::move(grown), p);
-    return grow;
+// The bridges that let a budget of `budget` trunk + crown triangles draw the crown: with
+// crown_merge on and more blobs than half the budget leaves kTrianglesPerCrownPiece each,
+// struts between the nearest blobs (crown_merge.h), each a cone from one sphere's centre to
+// the other's, 0.6 times as thick as its sphere (and at least a cell, so the grid sees it).
+std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
+                                           const TreeParams& p, const Box& box) {
+    if (budget == 0 || p.crown_merge == 0) return {};
+    const std::vector<Ball>& balls = crown.balls();
+    if (count_crown_pieces(balls, 0.0f) * kTrianglesPerCrownPiece <= budget / 2) return {};
+    const std::size_t max_pieces = std::max<std::size_t>(1, budget / 2 / kTrianglesPerMergedPiece);
+    const float cell = cell_size(box, p.crown_resolution);
+    std::vector<CappedCone> cones;
+    for (const auto& [i, j] : crown_bridges(balls, max_pieces))
+        cones.push_back({balls[i].center, balls[j].center, std::max(balls[i].radius, cell),
+                         std::max(balls[j].radius, cell)});
+    return cones;
 }
+
+// The crown and its bridges as one field: the hard union of two distance bounds, still a
+// distance bound, so the sparse meshers may skip space.
+struct BridgedCrown {
+    const SphereField& crown;
+    const ConeField& bridges;
+    void evaluate(std::span<const glm::vec3> points, std::span<float> values) const {
+        crown.evaluate(points, values);
+        std::vector<float> strut(points.size());
+        bridges.evaluate(points, strut);
+        for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::min(values[i], strut[i]);
+    }
+    bool is_distance_bound() const { return crown.is_distance_bound(); }
+};
 
 }  // namespace
 
@@ -172,11 +188,6 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
     const bool mesh_crown = fields.crown && p.crown_mesh != 0;
-    // A crown merged for a low budget is only meshed; leaves fill the crown as grown.
-    TreeFields merged;
-    if (mesh_crown)
-        out.crown_growth = merge_crown_for_budget(*fields.crown, options.budget, p, merged);
-    const TreeFields& meshed = merged.crown ? merged : fields;
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
     out.trunk =
         mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
@@ -184,10 +195,20 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     if (mesh_crown) {
         MeshOptions crown_options = options;
         // Skipping empty space needs a distance bound; the Pasko-Savchenko blend is not one.
-        if (!meshed.crown->is_distance_bound() && options.mesher != Mesher::Dense)
+        if (!fields.crown->is_distance_bound() && options.mesher != Mesher::Dense)
             crown_options.mesher = Mesher::Dense;
-        out.crown = mesh_field(*meshed.crown, meshed.crown_box, p.crown_resolution, crown_options,
-                               trunk_share, 1.0f);
+        std::vector<CappedCone> bridges =
+            crown_bridge_cones(*fields.crown, options.budget, p, fields.crown_box);
+        out.crown_bridges = bridges.size();
+        if (bridges.empty()) {
+            out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution,
+                                   crown_options, trunk_share, 1.0f);
+        } else {
+            const float cell = cell_size(fields.crown_box, p.crown_resolution);
+            const ConeField struts(std::move(bridges), kFieldMarginInCells * cell);
+            out.crown = mesh_field(BridgedCrown{*fields.crown, struts}, fields.crown_box,
+                                   p.crown_resolution, crown_options, trunk_share, 1.0f);
+        }
         out.times.push_back({"crown mesh", clock.lap_ms()});
     }
     if (fields.crown && p.leaf_density > 0.0) {

@@ -25,9 +25,9 @@ struct Tree {
     Mesh trunk;
     Mesh crown;   // empty without tips, with sphere_diameter 0 or crown_mesh 0
     Mesh leaves;  // open quads by design (two triangles up, two down per leaf); may be empty
-    // How far every crown sphere grew so a low budget can draw the crown (crown_merge.h);
+    // Struts added between crown blobs so a low budget can draw the crown (crown_merge.h);
     // 0 when the crown is meshed as grown.
-    float crown_growth = 0.0f;
+    std::size_t crown_bridges = 0;
     std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
 };
 

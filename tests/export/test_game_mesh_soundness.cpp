@@ -97,7 +97,7 @@ TEST(GameMesh, HondaAtALowBudgetHasARealTrunkAndAFewCrownPieces) {
     MeshOptions options;
     options.budget = game_budget(finish);
     const Tree tree = generate_tree(load_template("honda"), options);
-    EXPECT_GT(tree.crown_growth, 0.0f) << "the crown's blobs were not merged";
+    EXPECT_GT(tree.crown_bridges, 0u) << "the crown's blobs were not bridged";
     const FinishedTree finished = finish_tree(tree, finish);
     const ReducedTree& reduced = finished.levels.at(0);
     expect_sound(reduced.trunk, "trunk");
