@@ -28,7 +28,9 @@ namespace {
 
 using namespace sylva;
 
-bool closed(const Mesh& m) { return m.triangles.empty() || check_topology(m).is_closed_manifold(); }
+bool closed(const Mesh& m) {
+    return m.triangles.empty() || check_topology(m).is_closed_manifold();
+}
 
 // meshopt_simplify of one part to `target` triangles; the result keeps the part's
 // positions (unused ones are harmless for check_topology's edge tests).
@@ -63,8 +65,8 @@ int main(int argc, char** argv) {
 
     for (std::size_t budget : {200, 800, 3000}) {
         std::printf("budget %zu (trunk + crown; leaves thinned to the same number)\n", budget);
-        std::printf("%-9s %7s %9s %9s %10s %7s %7s\n", "template", "raw", "export ms",
-                    "reduce ms", "meshopt ms", "ratio", "closed");
+        std::printf("%-9s %7s %9s %9s %10s %7s %7s\n", "template", "raw", "export ms", "reduce ms",
+                    "meshopt ms", "ratio", "closed");
         std::vector<double> exports, ratios;
         for (const std::string& name : names) {
             const TreeTemplate tmpl = load_template(name);
@@ -98,10 +100,10 @@ int main(int argc, char** argv) {
             exports.push_back(export_ms);
             ratios.push_back(export_ms / meshopt_ms);
         }
-        std::printf("export: median %.1f ms, worst %.1f ms (targets 25 / 50 ms); "
-                    "export / meshopt_simplify alone: median %.1fx (target <= 1)\n\n",
-                    median(exports), *std::max_element(exports.begin(), exports.end()),
-                    median(ratios));
+        std::printf(
+            "export: median %.1f ms, worst %.1f ms (targets 25 / 50 ms); "
+            "export / meshopt_simplify alone: median %.1fx (target <= 1)\n\n",
+            median(exports), *std::max_element(exports.begin(), exports.end()), median(ratios));
     }
     std::filesystem::remove(out);
     return 0;
