@@ -228,14 +228,20 @@ void start_generation(StudioState& state) {
         state.requested_draft = false;
         return;
     }
+    state.requested = state.tree_template;
+    state.requested_budget = budget;
+    state.requested_draft = draft;
+    // Cancelling each step of a drag would show nothing while the slider moves: the drag's
+    // job runs to its end and the newest value follows it (poll_jobs starts it).
+    if (state.dragging && state.job && state.job->during_drag) {
+        state.generate_wanted = true;
+        return;
+    }
     if (state.job) {
         state.job->progress->cancel = true;
         state.stale.push_back(std::move(*state.job));
         state.job.reset();
     }
-    state.requested = state.tree_template;
-    state.requested_budget = budget;
-    state.requested_draft = draft;
     // A cancelled job stops at its next check, which in some meshing phases is a second
     // away. The new job starts at once beside one or two winding down; past that it waits
     // (poll_jobs starts it), so a slider drag keeps at most three workers alive.
@@ -248,6 +254,7 @@ void start_generation(StudioState& state) {
     job.tree_template = state.tree_template;
     job.budget = budget;
     job.progress->draft = draft;
+    job.during_drag = state.dragging;
     // Only the reduction changes (low poly switched on, a draft let go): keep the meshes.
     if (state.tree && same_tree_input(state.shown_template, state.tree_template))
         job.base = state.tree;
@@ -275,11 +282,6 @@ void poll_jobs(StudioState& state) {
         }
         return true;
     });
-    if (state.generate_wanted && state.stale.empty()) {
-        // The edit may have moved on while the worker wound down: generate the newest.
-        state.generate_wanted = false;
-        start_generation(state);
-    }
     if (state.job && ready(state.job->result)) {
         GenerationJob job = std::move(*state.job);
         state.job.reset();
@@ -304,6 +306,12 @@ void poll_jobs(StudioState& state) {
             state.error = e.what();
             state.error_line = state.error_column = 0;
         }
+    }
+    if (state.generate_wanted && state.stale.empty()) {
+        // The edit may have moved on while the workers wound down (or the drag's job ran):
+        // generate the newest.
+        state.generate_wanted = false;
+        start_generation(state);
     }
     if (ready(state.export_job)) {
         try {

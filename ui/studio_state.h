@@ -88,6 +88,7 @@ struct GenerationJob {
     // The tree on screen when it is the same tree (only the reduction changes): its meshes
     // are reused and only the reduction runs.
     std::shared_ptr<const GeneratedTree> base;
+    bool during_drag = false;  // started while a slider was held
 };
 
 struct ViewToggles {
@@ -160,9 +161,11 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template);
 
 // Cancels the running generation, if any, and starts one of the edited template. While two
 // cancelled jobs still wind down, the start waits (generate_wanted), so dragging a slider
-// never piles up workers. While a slider is held (draft_wanted) the job skips the reduction;
-// on release a running draft of the same tree is told to reduce, and a finished one is
-// reduced without running the pipeline again.
+// never piles up workers. While a slider is held a job of the drag is not cancelled: the
+// newest value waits for it (generate_wanted), so a moving slider still shows a tree every
+// job's time rather than none until it pauses; with the low-poly view on those jobs skip the
+// reduction (draft_wanted). On release a running draft of the same tree is told to reduce,
+// and a finished one is reduced without running the pipeline again.
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);

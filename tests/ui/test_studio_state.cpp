@@ -207,6 +207,45 @@ TEST(StudioState, ADraggedSliderShowsDraftsAndTheGameMeshOnRelease) {
     EXPECT_FALSE(edit_pending(state));
 }
 
+TEST(StudioState, AMovingSliderShowsEachDraftInsteadOfCancellingIt) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    state.tree_template.params.triangle_budget = 300;
+    state.dragging = true;
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    const JobProgress* first = state.job->progress.get();
+    const double first_tropism = state.tree_template.params.tropism;
+
+    // The slider moves on while the first draft meshes: it is not cancelled, the new value
+    // waits for it.
+    state.tree_template.params.tropism += 0.2;
+    ASSERT_TRUE(edit_pending(state));
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    EXPECT_EQ(state.job->progress.get(), first);
+    EXPECT_FALSE(first->cancel);
+    EXPECT_TRUE(state.stale.empty());
+    EXPECT_TRUE(state.generate_wanted);
+    EXPECT_FALSE(edit_pending(state));
+
+    // Both drafts reach the screen, the newest last.
+    std::vector<double> shown;
+    const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
+    while (generation_running(state) && Clock::now() < end) {
+        poll_jobs(state);
+        if (state.tree_changed) {
+            EXPECT_TRUE(state.tree->draft);
+            shown.push_back(state.shown_template.params.tropism);
+            state.tree_changed = false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_EQ(shown[0], first_tropism);
+    EXPECT_EQ(shown[1], state.tree_template.params.tropism);
+}
+
 TEST(StudioState, ReleasingWhileTheDraftMeshesLetsThatJobReduce) {
     StudioState state = state_with(small_tree());
     state.view.low_poly = true;
