@@ -81,19 +81,6 @@ GLFWwindow* create_window() {
     return window;
 }
 
-// The meshes on screen: trunk and crown reduced when the low-poly view made them so.
-struct ShownMeshes {
-    const sylva::Mesh& trunk;
-    const sylva::Mesh& crown;
-    const sylva::Mesh& leaves;
-};
-
-ShownMeshes shown_meshes(const GeneratedTree& generated) {
-    const sylva::Tree& tree = generated.tree;
-    const sylva::SolidParts solids = sylva::finest_solids(tree, generated.finished);
-    return {solids.trunk, solids.crown, tree.leaves};
-}
-
 // The turtle graphic: every segment, and the outline of every polygon ({ . } leaves).
 std::vector<glm::vec3> skeleton_lines(const sylva::Skeleton& skeleton) {
     std::vector<glm::vec3> lines;
@@ -106,9 +93,10 @@ std::vector<glm::vec3> skeleton_lines(const sylva::Skeleton& skeleton) {
 }
 
 // Every vertex of the parts switched on (the skeleton when none is): what "frame tree" fits.
+// Level 0's, whatever level is shown, so stepping through the LODs keeps the same framing.
 std::vector<glm::vec3> visible_points(const StudioState& state) {
     std::vector<glm::vec3> points;
-    const ShownMeshes meshes = shown_meshes(*state.tree);
+    const ShownParts meshes = shown_parts(*state.tree, 0);
     const ViewToggles& show = state.view;
     for (auto [on, mesh] :
          {std::pair{show.trunk, &meshes.trunk}, std::pair{show.crown, &meshes.crown},
@@ -120,13 +108,15 @@ std::vector<glm::vec3> visible_points(const StudioState& state) {
     return points;
 }
 
-// A freshly generated tree: upload its parts and skeleton.
-void upload_tree(Viewport& viewport, const GeneratedTree& generated) {
-    const ShownMeshes meshes = shown_meshes(generated);
+// A freshly generated tree, or another LOD level of it: upload its parts and skeleton.
+// Returns the level shown.
+int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
+    const ShownParts meshes = shown_parts(generated, level);
     viewport.trunk.upload(meshes.trunk);
     viewport.crown.upload(meshes.crown);
     viewport.leaves.upload(meshes.leaves);
     viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
+    return meshes.level;
 }
 
 // Fits the camera to the tree and lays the ground grid under it.
@@ -157,8 +147,9 @@ void handle_camera_input(StudioState& state, float view_height) {
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
 }
 
-// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame. While a text field has
-// the keyboard, Ctrl+Z / Ctrl+Y are its own undo of the typing, and F is a letter.
+// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame, 0-3 show that LOD level
+// of the game mesh (switching the low-poly view on). While a text field has the keyboard,
+// Ctrl+Z / Ctrl+Y are its own undo of the typing, and F and the digits are text.
 void handle_shortcuts(StudioState& state) {
     const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& press : g_key_presses) {
@@ -168,6 +159,11 @@ void handle_shortcuts(StudioState& state) {
         if (ctrl && press.key == GLFW_KEY_Z) shift ? redo(state) : undo(state);
         if (ctrl && press.key == GLFW_KEY_Y) redo(state);
         if (!ctrl && press.key == GLFW_KEY_F) state.frame_requested = true;
+        for (int level = 0; level < kLodLevels; ++level)
+            if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
+                state.view.low_poly = true;
+                state.view.lod_level = level;
+            }
     }
     g_key_presses.clear();
 }
@@ -243,9 +239,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     RulesEditorState editor;
     state.view.low_poly = options.low_poly;
     state.tree_template = state.committed = sylva::load_template(options.tree_template);
+
+    state.view.lod_level = options.lod_level;
     start_generation(state);
 
     int frames_with_tree = 0;
+    int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
         // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
@@ -272,10 +271,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 
         poll_jobs(state);
         if (state.tree_changed) {
-            upload_tree(viewport, *state.tree);
+            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
             state.frame_next_tree = false;
+        } else if (state.tree &&
+                   shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
+            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
         }
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
@@ -294,8 +296,10 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         handle_shortcuts(state);
         ImGui::Render();
 
-        // Live mode follows every edit; a new generation cancels the stale one. The undo
-        // history records an edit once the widget is let go.
+        // Live mode follows every edit; a new generation cancels the stale one. While a slider
+        // is held the low-poly view shows drafts (no reduction); the game mesh follows on
+        // release. The undo history records an edit once the widget is let go.
+        state.dragging = ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left);
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 

@@ -16,6 +16,7 @@ namespace sylva::studio {
 namespace {
 
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kWarningColor(1.0f, 0.75f, 0.25f, 1.0f);
 // Panels sit at fixed places along the window's edges; their sections carry the titles.
 constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
                                      ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -200,6 +201,20 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
         ImGui::TextDisabled("(the tree on screen is the last one that worked)");
 }
 
+// One level's totals against its budget; over budget in the warning colour, with the
+// reducer's note (why the budget was missed, what was backed off) as the tooltip. Wrapped in
+// a panel, one line in the status bar.
+void totals_line(const std::string& label, const GameMeshTotals& totals, bool wrap) {
+    const std::string text =
+        label + totals_text(totals) + (totals.over_budget ? " over budget" : "");
+    if (totals.over_budget) ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+    if (wrap) ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(text.c_str());
+    if (wrap) ImGui::PopTextWrapPos();
+    if (totals.over_budget) ImGui::PopStyleColor();
+    if (!totals.note.empty()) tooltip(totals.note.c_str());
+}
+
 void view_section(StudioState& state) {
     section("View");
     ViewToggles& v = state.view;
@@ -211,10 +226,20 @@ void view_section(StudioState& state) {
     ImGui::Checkbox("crown", &v.crown);
     ImGui::SameLine();
     ImGui::Checkbox("leaves", &v.leaves);
-    ImGui::Checkbox("wireframe", &v.wireframe);
     ImGui::SameLine();
+    ImGui::Checkbox("wireframe", &v.wireframe);
     ImGui::Checkbox("low poly", &v.low_poly);
-    tooltip("trunk and crown reduced to triangle_budget: the mesh an export writes");
+    tooltip(
+        "the game mesh: trunk and crown reduced to triangle_budget, leaves thinned to their "
+        "share, exactly what an export writes");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!v.low_poly);
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::SliderInt("##lod", &v.lod_level, 0, kLodLevels - 1, "LOD %d");
+    tooltip(
+        "the level of the LOD chain an export with \"LOD chain\" writes: budget, 1/2, 1/4, "
+        "1/8 (keys 0-3)");
+    ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
@@ -243,6 +268,17 @@ void export_section(StudioState& state) {
     ImGui::BeginDisabled(state.export_job.valid() || !state.tree);
     if (ImGui::Button("Export (Ctrl+E)")) start_export(state);
     ImGui::EndDisabled();
+    // What the export writes, level by level, when the view has it at this budget.
+    const GeneratedTree* shown = state.tree.get();
+    if (shown && shown->reduced() && static_cast<int>(shown->budget) == budget) {
+        const int levels = e.lod ? static_cast<int>(shown->finished.levels.size()) : 1;
+        for (int level = 0; level < levels; ++level) {
+            const std::string label = e.lod ? "LOD" + std::to_string(level) + ": " : "writes ";
+            totals_line(label, game_mesh_totals(*shown, level), true);
+        }
+    } else {
+        ImGui::TextDisabled("(switch low poly on to see the game mesh's triangles)");
+    }
     wrapped_text(state.export_message, state.export_failed);
 }
 
@@ -287,7 +323,7 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
     ImGui::Begin("Rules and export", nullptr, kDocked);
     ImGui::PushItemWidth(-80.0f);
     // The editor takes what the other sections leave.
-    const float below = 15.0f * ImGui::GetFrameHeightWithSpacing();
+    const float below = 18.0f * ImGui::GetFrameHeightWithSpacing();
     rules_section(state, editor, std::max(ImGui::GetContentRegionAvail().y - below, 120.0f));
     view_section(state);
     export_section(state);
@@ -314,25 +350,39 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
         ImGui::SameLine();
     }
     if (state.tree) {
-        const Tree& t = state.tree->tree;
-        const bool reduced = state.tree->reduced();
-        const SolidParts solids = finest_solids(t, state.tree->finished);
-        const Mesh& trunk = solids.trunk;
-        const Mesh& crown = solids.crown;
-        ImGui::Text("%s   trunk %zu  crown %zu  leaves %zu triangles%s   |",
-                    state.shown_template.name.c_str(), trunk.triangles.size(),
-                    crown.triangles.size(), t.leaves.triangles.size(),
-                    reduced ? " (low poly)" : "");
-        for (const StageTime& stage : t.times) {
-            ImGui::SameLine(0.0f, 0.0f);
-            ImGui::Text("  %s %.1f", stage.name.c_str(), stage.ms);
-        }
-        if (reduced) {
-            ImGui::SameLine(0.0f, 0.0f);
-            ImGui::Text("  reduce %.1f", state.tree->reduce_ms);
-        }
+        const GeneratedTree& shown = *state.tree;
+        const Tree& t = shown.tree;
+        ImGui::Text("%s  ", state.shown_template.name.c_str());
         ImGui::SameLine(0.0f, 0.0f);
-        ImGui::Text(" ms  (%.0f ms in all)", state.last_wall_ms);
+        if (shown.reduced()) {
+            const GameMeshTotals totals = game_mesh_totals(shown, state.view.lod_level);
+            const std::string label = "game mesh LOD" + std::to_string(totals.level) + ": ";
+            totals_line(label, totals, false);
+        } else {
+            const ShownParts parts = shown_parts(shown, 0);
+            ImGui::Text("trunk %zu  crown %zu  leaves %zu triangles%s",
+                        parts.trunk.triangles.size(), parts.crown.triangles.size(),
+                        parts.leaves.triangles.size(),
+                        shown.draft ? " (draft: the game mesh follows on release)" : "");
+        }
+        // The time to the tree on screen; each stage's in the tooltip (the line is full).
+        ImGui::SameLine(0.0f, 0.0f);
+        if (shown.reduced())
+            ImGui::Text("   |   reduce %.0f ms, %.0f ms in all", shown.reduce_ms,
+                        state.last_wall_ms);
+        else
+            ImGui::Text("   |   %.0f ms in all", state.last_wall_ms);
+        if (ImGui::IsItemHovered()) {
+            std::string stages;
+            for (const StageTime& stage : t.times) {
+                char line[96];
+                std::snprintf(line, sizeof line, "%s %.1f ms\n", stage.name.c_str(), stage.ms);
+                stages += line;
+            }
+            stages +=
+                "in all: from the job's start (an edit, a slider let go) to the tree on screen";
+            ImGui::SetTooltip("%s", stages.c_str());
+        }
     } else if (!generation_running(state)) {
         ImGui::TextUnformatted("no tree yet");
     }

@@ -22,7 +22,8 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout);
 // Right: the rules editor with the grammar error, the view toggles, and export.
 void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout);
 
-// Along the bottom: progress, triangles per part, time per stage, and the frame rate while the
+// Along the bottom: progress, triangles per part (the game mesh against its budget in the
+// low-poly view), time per stage, and the frame rate while the
 // window draws continuously (`fps` < 0: idle, not shown).
 void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps);
 

@@ -26,6 +26,15 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
             options.tree_template = std::string(name);
         } else if (arg == "--low-poly") {
             options.low_poly = true;
+        } else if (arg == "--lod") {
+            std::string_view text = value();
+            int level = -1;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), level);
+            if (error != std::errc() || end != text.data() + text.size() || level < 0 || level > 3)
+                throw UsageError("--lod takes a level from 0 to 3, got '" + std::string(text) +
+                                 "'");
+            options.lod_level = level;
+            options.low_poly = true;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -47,13 +56,15 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--screenshot PATH [--frames "
-           "N]]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--screenshot PATH "
+           "[--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
            "  -t, --template T   start with a built-in template or a template/grammar file\n"
-           "  --low-poly         show trunk and crown reduced to 800 triangles (the game mesh)\n"
+           "  --low-poly         show the game mesh: what an export at the template's budget\n"
+           "                     writes (trunk + crown reduced, leaves thinned)\n"
+           "  --lod N            show level N (0-3) of its LOD chain; implies --low-poly\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

@@ -13,6 +13,7 @@ struct StudioOptions {
     int screenshot_frames = 5;                   // frames drawn before the capture
     std::string tree_template = "default";       // a built-in name or a template file
     bool low_poly = false;                       // start with the low-poly preview on
+    int lod_level = 0;                           // ... showing this LOD level (--lod sets both)
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.
@@ -20,8 +21,8 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Throws UsageError for an unknown option, a missing or malformed value, or --frames without
-// --screenshot.
+// Throws UsageError for an unknown option, a missing or malformed value, --lod outside 0-3,
+// or --frames without --screenshot.
 StudioOptions parse_studio_options(int argc, const char* const* argv);
 
 std::string studio_usage();

@@ -1,6 +1,8 @@
 #include "ui/studio_state.h"
 
 #include <algorithm>
+#include <cassert>
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <thread>
@@ -40,26 +42,40 @@ int worker_threads() {
     return static_cast<int>(std::max(1u, std::thread::hardware_concurrency() - 1));
 }
 
-// The worker: the whole pipeline, then the low-poly reduction when a budget is given.
+// The worker: the whole pipeline (or the shown tree's meshes, `base`), then the export's
+// LOD chain when a budget is given and the job is no draft. The chain's further levels are
+// reduced from level 0's few hundred triangles, so they cost little beside it.
 GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
-                       const std::shared_ptr<JobProgress>& progress) {
-    MeshOptions options;
-    options.threads = worker_threads();
-    // The crown as the export at the template's budget meshes it, low-poly view or not.
-    options.budget = static_cast<std::size_t>(std::max(tree_template.params.triangle_budget, 0));
-    options.cancel = &progress->cancel;
-    options.progress = [&progress](float f) {
-        progress->stage = JobProgress::Meshing;
-        progress->fraction = f;
-    };
+                       const std::shared_ptr<JobProgress>& progress,
+                       const std::shared_ptr<const GeneratedTree>& base) {
     GeneratedTree out;
-    out.tree = generate_tree(tree_template, options);
+    if (base) {
+        out.tree = base->tree;
+    } else {
+        MeshOptions options;
+        options.threads = worker_threads();
+        // The crown as the export at the template's budget meshes it, low-poly view or not.
+        options.budget =
+            static_cast<std::size_t>(std::max(tree_template.params.triangle_budget, 0));
+        options.cancel = &progress->cancel;
+        options.progress = [&progress](float f) {
+            progress->stage = JobProgress::Meshing;
+            progress->fraction = f;
+        };
+        out.tree = generate_tree(tree_template, options);
+    }
     if (budget == 0) return out;
+    if (progress->draft) {
+        out.draft = true;
+        return out;
+    }
     progress->stage = JobProgress::Reducing;
     progress->fraction = 0.0f;
     const Clock::time_point start = Clock::now();
     FinishSettings finish;
     finish.budget.total = budget;
+    finish.lod = true;
+    finish.lod_levels = kLodLevels;
     finish.decimate.cancel = &progress->cancel;  // a newer edit stops a long reduction too
     finish.decimate.progress = [&progress](float f) { progress->fraction = f; };
     out.finished = finish_tree(out.tree, finish);
@@ -89,8 +105,15 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
                         std::size_t budget, const ExportSettings& settings) {
     const Tree& tree = shown->tree;
     FinishedTree finished;
-    if (!settings.lod && budget > 0 && shown->reduced() && shown->budget == budget) {
+    if (budget > 0 && shown->reduced() && shown->budget == budget) {
+        // The view's chain is the export's: the whole of it, or level 0 alone.
         finished = shown->finished;
+        if (!settings.lod) {
+            finished.levels.resize(1);
+            finished.budgets.resize(1);
+            finished.leaf_budgets.resize(1);
+            finished.lod = false;
+        }
     } else {
         FinishSettings finish;
         finish.budget.total = budget;
@@ -132,6 +155,48 @@ bool same_template(const TreeTemplate& a, const TreeTemplate& b) {
            a.colors.leaves == b.colors.leaves;
 }
 
+ShownParts shown_parts(const GeneratedTree& generated, int level) {
+    const std::vector<ReducedTree>& levels = generated.finished.levels;
+    if (levels.empty())
+        return {generated.tree.trunk, generated.tree.crown, generated.tree.leaves, 0};
+    const int shown = std::clamp(level, 0, static_cast<int>(levels.size()) - 1);
+    const ReducedTree& r = levels[static_cast<std::size_t>(shown)];
+    return {r.trunk, r.crown, r.leaves, shown};
+}
+
+GameMeshTotals game_mesh_totals(const GeneratedTree& generated, int level) {
+    assert(generated.reduced());
+    const ShownParts parts = shown_parts(generated, level);
+    const auto i = static_cast<std::size_t>(parts.level);
+    const ReducedTree& reduced = generated.finished.levels[i];
+    GameMeshTotals totals;
+    totals.level = parts.level;
+    totals.trunk = parts.trunk.triangles.size();
+    totals.crown = parts.crown.triangles.size();
+    totals.leaves = parts.leaves.triangles.size();
+    totals.budget = generated.finished.budgets[i];
+    totals.leaf_budget = generated.finished.leaf_budgets[i];
+    totals.over_budget = !reduced.within_budget || totals.trunk + totals.crown > totals.budget ||
+                         totals.leaves > totals.leaf_budget;
+    totals.note = reduced.note;
+    return totals;
+}
+
+std::string totals_text(const GameMeshTotals& t) {
+    std::string text = "trunk " + std::to_string(t.trunk) + " + crown " + std::to_string(t.crown) +
+                       " + leaves " + std::to_string(t.leaves) + " = " + std::to_string(t.total()) +
+                       " triangles (budget " + std::to_string(t.budget);
+    if (t.leaf_budget == SIZE_MAX)
+        text += " + every leaf)";
+    else
+        text += " + " + std::to_string(t.leaf_budget) + " leaves)";
+    return text;
+}
+
+bool draft_wanted(const StudioState& state) {
+    return state.dragging && preview_budget(state) > 0;
+}
+
 std::size_t preview_budget(const StudioState& state) {
     return state.view.low_poly
                ? static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0))
@@ -150,13 +215,33 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
 }
 
 void start_generation(StudioState& state) {
+    const bool draft = draft_wanted(state);
+    const std::size_t budget = preview_budget(state);
+    // A slider let go while its draft still meshes: that job reduces when it is done, and the
+    // time to the game mesh counts from now.
+    if (state.job && !draft && state.job->progress->draft && state.job->budget == budget &&
+        same_tree_input(state.job->tree_template, state.tree_template)) {
+        state.job->progress->draft = false;
+        state.job->started = Clock::now();
+        state.job->tree_template = state.tree_template;  // colours may have changed
+        state.requested = state.tree_template;
+        state.requested_draft = false;
+        return;
+    }
+    state.requested = state.tree_template;
+    state.requested_budget = budget;
+    state.requested_draft = draft;
+    // Cancelling each step of a drag would show nothing while the slider moves: the drag's
+    // job runs to its end and the newest value follows it (poll_jobs starts it).
+    if (state.dragging && state.job && state.job->during_drag) {
+        state.generate_wanted = true;
+        return;
+    }
     if (state.job) {
         state.job->progress->cancel = true;
         state.stale.push_back(std::move(*state.job));
         state.job.reset();
     }
-    state.requested = state.tree_template;
-    state.requested_budget = preview_budget(state);
     // A cancelled job stops at its next check, which in some meshing phases is a second
     // away. The new job starts at once beside one or two winding down; past that it waits
     // (poll_jobs starts it), so a slider drag keeps at most three workers alive.
@@ -167,10 +252,15 @@ void start_generation(StudioState& state) {
     GenerationJob job;
     job.started = Clock::now();
     job.tree_template = state.tree_template;
-    job.budget = state.requested_budget;
+    job.budget = budget;
+    job.progress->draft = draft;
+    job.during_drag = state.dragging;
+    // Only the reduction changes (low poly switched on, a draft let go): keep the meshes.
+    if (state.tree && same_tree_input(state.shown_template, state.tree_template))
+        job.base = state.tree;
     // The worker gets its own copies: editing while it runs is safe.
-    job.result =
-        std::async(std::launch::async, generate, job.tree_template, job.budget, job.progress);
+    job.result = std::async(std::launch::async, generate, job.tree_template, job.budget,
+                            job.progress, job.base);
     state.job = std::move(job);
 }
 
@@ -192,11 +282,6 @@ void poll_jobs(StudioState& state) {
         }
         return true;
     });
-    if (state.generate_wanted && state.stale.empty()) {
-        // The edit may have moved on while the worker wound down: generate the newest.
-        state.generate_wanted = false;
-        start_generation(state);
-    }
     if (state.job && ready(state.job->result)) {
         GenerationJob job = std::move(*state.job);
         state.job.reset();
@@ -208,6 +293,9 @@ void poll_jobs(StudioState& state) {
             state.tree_changed = true;
             state.error.clear();
             state.error_line = state.error_column = 0;
+            // Let go just as the draft finished: reduce it now (edit_pending does not see it,
+            // the request was already turned into a real one).
+            if (state.tree->draft && !job.progress->draft && !state.job) start_generation(state);
         } catch (const GrammarError& e) {
             // The GUI's error boundary: bad input becomes a message; the last tree stays.
             state.error = e.what();
@@ -218,6 +306,12 @@ void poll_jobs(StudioState& state) {
             state.error = e.what();
             state.error_line = state.error_column = 0;
         }
+    }
+    if (state.generate_wanted && state.stale.empty()) {
+        // The edit may have moved on while the workers wound down (or the drag's job ran):
+        // generate the newest.
+        state.generate_wanted = false;
+        start_generation(state);
     }
     if (ready(state.export_job)) {
         try {
@@ -232,7 +326,8 @@ void poll_jobs(StudioState& state) {
 
 bool edit_pending(const StudioState& state) {
     return !same_tree_input(state.tree_template, state.requested) ||
-           preview_budget(state) != state.requested_budget;
+           preview_budget(state) != state.requested_budget ||
+           (state.requested_draft && !draft_wanted(state));
 }
 
 bool commit_edit(StudioState& state) {

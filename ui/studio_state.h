@@ -21,17 +21,50 @@ namespace sylva::studio {
 // colours, name. What undo / redo step through.
 bool same_template(const TreeTemplate& a, const TreeTemplate& b);
 
-// A finished generation: the tree, and with the low-poly view its trunk and crown reduced to
-// the triangle budget, as an export with that budget writes them.
+// LOD levels the low-poly view offers: the chain an export with "LOD chain" writes.
+constexpr int kLodLevels = 4;
+
+// A finished generation: the tree, and with the low-poly view the game mesh an export with
+// that budget writes, as a LOD chain (level 0 is the plain export).
 struct GeneratedTree {
     Tree tree;
-    // Trunk and crown as shown, and as an export with `budget` writes them; no levels: the
-    // marching-cubes meshes (the low-poly view is off).
+    // The export's LOD chain at `budget` (FinishSettings{.lod = true}): trunk, crown and
+    // thinned leaves per level. No levels: the marching-cubes meshes and every leaf (the
+    // low-poly view is off, or this is a draft).
     FinishedTree finished;
     std::size_t budget = 0;  // what `finished` was reduced to
+    // The low-poly view wanted a reduction but a slider was being dragged: the raw meshes
+    // stand in until it is let go.
+    bool draft = false;
     bool reduced() const { return !finished.levels.empty(); }
     double reduce_ms = 0;
 };
+
+// The meshes the view draws for LOD `level` (clamped to the levels there are): that level's
+// trunk, crown and thinned leaves when reduced, the tree's own otherwise. Exactly the parts an
+// export of that level writes.
+struct ShownParts {
+    const Mesh& trunk;
+    const Mesh& crown;
+    const Mesh& leaves;
+    int level;  // the level shown; 0 when not reduced
+};
+ShownParts shown_parts(const GeneratedTree& generated, int level);
+
+// Triangles of one level of the game mesh against its budgets, for the status bar and export.
+struct GameMeshTotals {
+    int level = 0;
+    std::size_t trunk = 0, crown = 0, leaves = 0;
+    std::size_t budget = 0;       // trunk + crown
+    std::size_t leaf_budget = 0;  // SIZE_MAX: every leaf
+    bool over_budget = false;     // a part over its share, or the reducer missed the budget
+    std::string note;             // the reducer's: why the budget was missed / what backed off
+    std::size_t total() const { return trunk + crown + leaves; }
+};
+// Needs a reduced tree.
+GameMeshTotals game_mesh_totals(const GeneratedTree& generated, int level);
+// "trunk 484 + crown 316 + leaves 800 = 1600 triangles (budget 800 + 800 leaves)".
+std::string totals_text(const GameMeshTotals& totals);
 
 // What a worker reports while it runs; shared with it, so it outlives a cancelled job.
 struct JobProgress {
@@ -39,6 +72,9 @@ struct JobProgress {
     std::atomic<bool> cancel{false};
     std::atomic<int> stage{Growing};
     std::atomic<float> fraction{0.0f};  // of the current stage
+    // Skip the reduction (a slider is held). Cleared when it is let go while the job still
+    // meshes, so the same job goes on to reduce instead of a new one starting over.
+    std::atomic<bool> draft{false};
 };
 
 // A generation on a worker thread. Cancelling only asks; the job is kept until its future is
@@ -49,6 +85,10 @@ struct GenerationJob {
     std::chrono::steady_clock::time_point started;
     TreeTemplate tree_template;  // what it generates (and the colours it is drawn with)
     std::size_t budget = 0;      // 0: no low-poly reduction
+    // The tree on screen when it is the same tree (only the reduction changes): its meshes
+    // are reused and only the reduction runs.
+    std::shared_ptr<const GeneratedTree> base;
+    bool during_drag = false;  // started while a slider was held
 };
 
 struct ViewToggles {
@@ -57,7 +97,8 @@ struct ViewToggles {
     bool crown = true;
     bool leaves = true;
     bool wireframe = false;
-    bool low_poly = false;  // show trunk and crown reduced to the triangle budget
+    bool low_poly = false;  // show the game mesh: what an export at the budget writes
+    int lod_level = 0;      // which level of the LOD chain the low-poly view shows
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -77,7 +118,9 @@ struct StudioState {
     std::vector<GenerationJob> stale;  // cancelled generations still finishing
     TreeTemplate requested;            // what the last started generation is for
     std::size_t requested_budget = 0;  // ... and the budget it reduces to
-    bool generate_wanted = false;      // a start deferred until the cancelled jobs finished
+    bool requested_draft = false;      // ... or that it skips the reduction (a slider is held)
+    bool dragging = false;         // a slider is held (main sets it each frame): reductions wait
+    bool generate_wanted = false;  // a start deferred until the cancelled jobs finished
     double last_wall_ms = 0;
     bool live = true;  // regenerate on every edit
 
@@ -105,6 +148,10 @@ struct StudioState {
     bool quit_requested = false;
 };
 
+// True when the next generation should be a draft: the low-poly view is on and a slider is
+// held, so a reduction per step of the drag would only be cancelled by the next.
+bool draft_wanted(const StudioState& state);
+
 // The budget trunk and crown are shown at: the template's triangle_budget with the low-poly
 // view on, 0 (the marching-cubes meshes) otherwise.
 std::size_t preview_budget(const StudioState& state);
@@ -114,7 +161,11 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template);
 
 // Cancels the running generation, if any, and starts one of the edited template. While two
 // cancelled jobs still wind down, the start waits (generate_wanted), so dragging a slider
-// never piles up workers.
+// never piles up workers. While a slider is held a job of the drag is not cancelled: the
+// newest value waits for it (generate_wanted), so a moving slider still shows a tree every
+// job's time rather than none until it pauses; with the low-poly view on those jobs skip the
+// reduction (draft_wanted). On release a running draft of the same tree is told to reduce,
+// and a finished one is reduced without running the pipeline again.
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);
@@ -126,7 +177,8 @@ void cancel_generations(StudioState& state);
 // `error`, keeping the last good tree), a finished export sets `export_message`.
 void poll_jobs(StudioState& state);
 
-// True when the edited template differs from what was last generated in what shapes the tree.
+// True when the edited template differs from what was last generated in what shapes the tree,
+// in the budget shown, or when a slider was let go after a draft.
 bool edit_pending(const StudioState& state);
 
 // Records an edit into the undo history once the template differs from the last committed
@@ -136,7 +188,7 @@ void undo(StudioState& state);
 void redo(StudioState& state);
 
 // Writes the tree on screen to export_settings.path on a worker thread, reduced to the edited
-// template's triangle_budget.
+// template's triangle_budget; the low-poly view's chain is reused when its budget matches.
 void start_export(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.

@@ -29,6 +29,16 @@ TEST(StudioOptions, ScreenshotWithTemplateAndFrames) {
     EXPECT_EQ(parse({"-t", "my.toml"}).tree_template, "my.toml");
 }
 
+TEST(StudioOptions, LodPicksALevelOfTheLowPolyView) {
+    StudioOptions o = parse({"--lod", "3"});
+    EXPECT_TRUE(o.low_poly);
+    EXPECT_EQ(o.lod_level, 3);
+    EXPECT_EQ(parse({"--low-poly"}).lod_level, 0);
+    EXPECT_THROW(parse({"--lod", "4"}), UsageError);
+    EXPECT_THROW(parse({"--lod", "-1"}), UsageError);
+    EXPECT_THROW(parse({"--lod"}), UsageError);
+}
+
 TEST(StudioOptions, RejectsMistakesWithAUsageError) {
     EXPECT_THROW(parse({"--frames", "3"}), UsageError);  // without --screenshot
     EXPECT_THROW(parse({"--screenshot", "a.png", "--frames", "0"}), UsageError);

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "tree/template_library.h"
 #include "ui/studio_state.h"
@@ -67,6 +70,204 @@ TEST(StudioState, LowPolyViewReducesToTheBudget) {
     // Changing the budget is an edit the view must follow.
     state.tree_template.params.triangle_budget = 200;
     EXPECT_TRUE(edit_pending(state));
+}
+
+// A tree in the low-poly view at `budget`, generated and shown.
+StudioState low_poly_state(int budget) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    state.tree_template.params.triangle_budget = budget;
+    start_generation(state);
+    EXPECT_TRUE(wait_for_generations(state));
+    return state;
+}
+
+std::size_t part_triangles(const ModelParts& parts, const std::string& name) {
+    for (const NamedMesh& part : parts)
+        if (part.name == name) return part.mesh->triangles.size();
+    return 0;
+}
+
+TEST(StudioState, LowPolyViewShowsTheThinnedLeavesAnExportWrites) {
+    StudioState state = low_poly_state(200);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const GeneratedTree& shown = *state.tree;
+    ASSERT_GT(shown.tree.leaves.triangles.size(), 200u);  // else nothing would be thinned
+    const ShownParts parts = shown_parts(shown, 0);
+    EXPECT_LE(parts.leaves.triangles.size(), 200u);
+    EXPECT_GT(parts.leaves.triangles.size(), 0u);
+    EXPECT_LT(parts.leaves.triangles.size(), shown.tree.leaves.triangles.size());
+    // The very meshes of level 0 of the finished tree, as the writers get them.
+    const std::vector<ModelParts> written = finished_parts(shown.tree, shown.finished, {});
+    EXPECT_EQ(part_triangles(written[0], "leaves"), parts.leaves.triangles.size());
+    EXPECT_EQ(&parts.leaves, &shown.finished.levels[0].leaves);
+    EXPECT_EQ(&parts.trunk, &shown.finished.levels[0].trunk);
+
+    // Low poly off: every leaf and the marching-cubes meshes, whatever level is asked for.
+    StudioState raw = state_with(small_tree());
+    start_generation(raw);
+    ASSERT_TRUE(wait_for_generations(raw));
+    const ShownParts all = shown_parts(*raw.tree, 2);
+    EXPECT_EQ(all.level, 0);
+    EXPECT_EQ(&all.leaves, &raw.tree->tree.leaves);
+    EXPECT_EQ(&all.crown, &raw.tree->tree.crown);
+}
+
+TEST(StudioState, LodSelectorShowsEachLevelOfTheExportsChain) {
+    StudioState state = low_poly_state(400);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const GeneratedTree& shown = *state.tree;
+    ASSERT_EQ(shown.finished.levels.size(), static_cast<std::size_t>(kLodLevels));
+    EXPECT_TRUE(shown.finished.lod);
+    const std::vector<ModelParts> written = finished_parts(shown.tree, shown.finished, {});
+    std::size_t previous_solids = SIZE_MAX, previous_leaves = SIZE_MAX;
+    for (int level = 0; level < kLodLevels; ++level) {
+        const ShownParts parts = shown_parts(shown, level);
+        EXPECT_EQ(parts.level, level);
+        const std::size_t solids = parts.trunk.triangles.size() + parts.crown.triangles.size();
+        const std::size_t leaves = parts.leaves.triangles.size();
+        EXPECT_LE(solids, previous_solids) << "level " << level;
+        EXPECT_LE(leaves, previous_leaves) << "level " << level;
+        EXPECT_LE(leaves, 400u >> level);
+        const auto i = static_cast<std::size_t>(level);
+        EXPECT_EQ(part_triangles(written[i], "trunk"), parts.trunk.triangles.size());
+        EXPECT_EQ(part_triangles(written[i], "crown"), parts.crown.triangles.size());
+        EXPECT_EQ(part_triangles(written[i], "leaves"), leaves);
+        previous_solids = solids;
+        previous_leaves = leaves;
+    }
+    // The coarsest level is much lighter than the finest, and a level past the chain's end
+    // shows the coarsest.
+    const ShownParts finest = shown_parts(shown, 0), coarsest = shown_parts(shown, 3);
+    EXPECT_LT(2 * (coarsest.trunk.triangles.size() + coarsest.crown.triangles.size()),
+              finest.trunk.triangles.size() + finest.crown.triangles.size());
+    EXPECT_LT(coarsest.leaves.triangles.size(), finest.leaves.triangles.size());
+    EXPECT_EQ(shown_parts(shown, 9).level, kLodLevels - 1);
+    // Picking a level is not an edit: nothing to generate.
+    state.view.lod_level = 3;
+    EXPECT_FALSE(edit_pending(state));
+}
+
+TEST(StudioState, TotalsCountTheFinishedPartsAgainstTheBudget) {
+    StudioState state = low_poly_state(400);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const GeneratedTree& shown = *state.tree;
+    const std::vector<ModelParts> written = finished_parts(shown.tree, shown.finished, {});
+    for (int level = 0; level < kLodLevels; ++level) {
+        const GameMeshTotals totals = game_mesh_totals(shown, level);
+        const auto i = static_cast<std::size_t>(level);
+        EXPECT_EQ(totals.level, level);
+        EXPECT_EQ(totals.trunk, part_triangles(written[i], "trunk"));
+        EXPECT_EQ(totals.crown, part_triangles(written[i], "crown"));
+        EXPECT_EQ(totals.leaves, part_triangles(written[i], "leaves"));
+        std::size_t all = 0;
+        for (const NamedMesh& part : written[i]) all += part.mesh->triangles.size();
+        EXPECT_EQ(totals.total(), all);
+        EXPECT_EQ(totals.budget, 400u >> level);
+        EXPECT_EQ(totals.leaf_budget, 400u >> level);  // the leaves' share equals the total
+        const bool over = totals.trunk + totals.crown > totals.budget ||
+                          totals.leaves > totals.leaf_budget ||
+                          !shown.finished.levels[i].within_budget;
+        EXPECT_EQ(totals.over_budget, over) << "level " << level;
+        EXPECT_EQ(totals.note, shown.finished.levels[i].note);
+        const std::string text = totals_text(totals);
+        EXPECT_NE(text.find("= " + std::to_string(all) + " triangles"), std::string::npos) << text;
+        EXPECT_NE(text.find("budget " + std::to_string(400u >> level)), std::string::npos) << text;
+    }
+}
+
+TEST(StudioState, ADraggedSliderShowsDraftsAndTheGameMeshOnRelease) {
+    StudioState state = low_poly_state(300);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+
+    // A drag step: the view gets the tree without a reduction.
+    state.dragging = true;
+    state.tree_template.params.tropism += 0.1;
+    ASSERT_TRUE(edit_pending(state));
+    start_generation(state);
+    EXPECT_TRUE(state.requested_draft);
+    ASSERT_TRUE(wait_for_generations(state));
+    ASSERT_TRUE(state.tree);
+    EXPECT_TRUE(state.tree->draft);
+    EXPECT_FALSE(state.tree->reduced());
+    EXPECT_FALSE(edit_pending(state));  // still held: nothing more to do
+    const auto draft = state.tree;
+
+    // Let go: the draft's meshes are reduced, the pipeline does not run again.
+    state.dragging = false;
+    ASSERT_TRUE(edit_pending(state));
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    EXPECT_EQ(state.job->base, draft);
+    ASSERT_TRUE(wait_for_generations(state));
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    EXPECT_FALSE(state.tree->draft);
+    EXPECT_EQ(state.tree->tree.crown.triangles.size(), draft->tree.crown.triangles.size());
+    EXPECT_LE(state.tree->finished.levels[0].triangles, 300u);
+    EXPECT_FALSE(edit_pending(state));
+}
+
+TEST(StudioState, AMovingSliderShowsEachDraftInsteadOfCancellingIt) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    state.tree_template.params.triangle_budget = 300;
+    state.dragging = true;
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    const JobProgress* first = state.job->progress.get();
+    const double first_tropism = state.tree_template.params.tropism;
+
+    // The slider moves on while the first draft meshes: it is not cancelled, the new value
+    // waits for it.
+    state.tree_template.params.tropism += 0.2;
+    ASSERT_TRUE(edit_pending(state));
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    EXPECT_EQ(state.job->progress.get(), first);
+    EXPECT_FALSE(first->cancel);
+    EXPECT_TRUE(state.stale.empty());
+    EXPECT_TRUE(state.generate_wanted);
+    EXPECT_FALSE(edit_pending(state));
+
+    // Both drafts reach the screen, the newest last.
+    std::vector<double> shown;
+    const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
+    while (generation_running(state) && Clock::now() < end) {
+        poll_jobs(state);
+        if (state.tree_changed) {
+            EXPECT_TRUE(state.tree->draft);
+            shown.push_back(state.shown_template.params.tropism);
+            state.tree_changed = false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_EQ(shown[0], first_tropism);
+    EXPECT_EQ(shown[1], state.tree_template.params.tropism);
+}
+
+TEST(StudioState, ReleasingWhileTheDraftMeshesLetsThatJobReduce) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    state.tree_template.params.triangle_budget = 300;
+    state.tree_template.params.trunk_resolution = 200;  // meshing takes a while
+    state.dragging = true;
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    const JobProgress* running = state.job->progress.get();
+
+    state.dragging = false;  // let go at once, before the draft is done
+    ASSERT_TRUE(edit_pending(state));
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    EXPECT_EQ(state.job->progress.get(), running);  // the same job, not a new one
+    EXPECT_TRUE(state.stale.empty());
+    EXPECT_FALSE(edit_pending(state));
+    ASSERT_TRUE(wait_for_generations(state));
+    // Whether the job saw the release in time or a reduction followed it: the game mesh.
+    ASSERT_TRUE(state.tree);
+    EXPECT_FALSE(state.tree->draft);
+    EXPECT_TRUE(state.tree->reduced());
 }
 
 TEST(StudioState, ABrokenRuleKeepsTheLastGoodTreeAndNamesTheLine) {
@@ -225,6 +426,32 @@ TEST(StudioState, ExportsTheTreeOnScreenAndReports) {
             EXPECT_TRUE(std::filesystem::exists(path)) << path;
         }
     }
+}
+
+TEST(StudioState, ExportWritesTheGameMeshTheViewShows) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sylva_test_ui";
+    std::filesystem::create_directories(dir);
+    StudioState state = low_poly_state(300);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    auto export_now = [&state](bool lod) {
+        state.export_settings.lod = lod;
+        start_export(state);
+        const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
+        while (state.export_job.valid() && Clock::now() < end) {
+            poll_jobs(state);
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        EXPECT_FALSE(state.export_failed) << state.export_message;
+        return state.export_message;
+    };
+    state.export_settings.path = (dir / "game.obj").string();
+    const GameMeshTotals totals = game_mesh_totals(*state.tree, 0);
+    const std::string one = export_now(false);
+    EXPECT_NE(one.find("trunk " + std::to_string(totals.trunk)), std::string::npos) << one;
+    EXPECT_NE(one.find("crown " + std::to_string(totals.crown)), std::string::npos) << one;
+    EXPECT_NE(one.find("leaves " + std::to_string(totals.leaves)), std::string::npos) << one;
+    const std::string chain = export_now(true);
+    EXPECT_NE(chain.find("LOD0-LOD3"), std::string::npos) << chain;
 }
 
 }  // namespace
