@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 
 #include "core/errors.h"
@@ -125,6 +126,25 @@ struct BridgedCrown {
     bool is_distance_bound() const { return crown.is_distance_bound(); }
 };
 
+// A game mesh needs no branch the crown hides (drop_hidden): such segments, every point of
+// the cone at least its radius inside the crown (sampled along the axis at most half a
+// radius apart), are left out of the trunk's field. They are most of a dense crown's
+// twigs, and where twigs cross they make the handles that cost a reduction most of its
+// time.
+std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereField& crown,
+                                      float min_radius) {
+    std::vector<Segment> visible;
+    for (const Segment& s : skeleton.segments) {
+        const float r = std::max({s.ra, s.rb, min_radius});
+        const int samples = 2 + static_cast<int>(glm::distance(s.a, s.b) / (0.5f * r));
+        bool hidden = true;
+        for (int k = 0; k <= samples && hidden; ++k)
+            hidden = crown(glm::mix(s.a, s.b, static_cast<float>(k) / samples)) < -r;
+        if (!hidden) visible.push_back(s);
+    }
+    return visible;
+}
+
 }  // namespace
 
 int crown_resolution_for_budget(int resolution, std::size_t budget) {
@@ -188,9 +208,28 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
     const bool mesh_crown = fields.crown && p.crown_mesh != 0;
+    // The trunk as meshed: for a game mesh, without the branches the crown hides.
+    std::optional<ConeField> visible_trunk;
+    Box visible_box = fields.trunk_box;
+    if (mesh_crown && options.budget > 0 && p.drop_hidden != 0) {
+        Skeleton shown;
+        const float cell = cell_size(fields.trunk_box, p.trunk_resolution);
+        shown.segments = visible_segments(out.skeleton, *fields.crown, kMinRadiusInCells * cell);
+        out.hidden_segments = out.skeleton.segments.size() - shown.segments.size();
+        if (!shown.segments.empty() && out.hidden_segments > 0) {
+            visible_box = skeleton_bounds(shown);
+            const float joint_blend = static_cast<float>(p.joint_blend);
+            visible_box.min -= glm::vec3(joint_blend);
+            visible_box.max += glm::vec3(joint_blend);
+            const float visible_cell = cell_size(visible_box, p.trunk_resolution);
+            visible_trunk.emplace(resolvable_cones(shown, visible_cell),
+                                  kFieldMarginInCells * visible_cell + joint_blend, joint_blend);
+        }
+    }
+    const ConeField& trunk_field = visible_trunk ? *visible_trunk : *fields.trunk;
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
     out.trunk =
-        mesh_field(*fields.trunk, fields.trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
+        mesh_field(trunk_field, visible_box, p.trunk_resolution, options, 0.0f, trunk_share);
     out.times.push_back({"trunk mesh", clock.lap_ms()});
     if (mesh_crown) {
         MeshOptions crown_options = options;

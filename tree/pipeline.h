@@ -28,6 +28,8 @@ struct Tree {
     // Struts added between crown blobs so a low budget can draw the crown (crown_merge.h);
     // 0 when the crown is meshed as grown.
     std::size_t crown_bridges = 0;
+    // Segments a game mesh left out of the trunk because the crown hides them (drop_hidden).
+    std::size_t hidden_segments = 0;
     std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
 };
 
