@@ -202,7 +202,9 @@ std::string template_file_text(const TreeTemplate& tree) {
     out << "turtle = \"" << name_of(kModes, int(tree.mode)) << "\"\n";
     out << "widths = \"" << name_of(kWidths, int(tree.width_model)) << "\"\n";
     std::string grammar = tree.grammar;
-    if (grammar.find("'''") == std::string::npos) {
+    if (grammar.empty() && tree.growth != "lsystem") {
+        // A growth method without a grammar (colonization) writes none.
+    } else if (grammar.find("'''") == std::string::npos) {
         out << "grammar = '''\n" << grammar << (grammar.ends_with('\n') ? "" : "\n") << "'''\n";
     } else {
         // A grammar that itself holds three quotes goes into a basic string, escaped.
