@@ -18,6 +18,17 @@ struct Field {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
+constexpr std::string_view kEnvelopes[] = {"sphere", "ellipsoid", "cone", "cylinder", "hemisphere"};
+constexpr std::string_view kPointDistributions[] = {"uniform", "halton"};
+
+Field real(std::string_view key, std::string_view help, double min, double max,
+           double TreeParams::*member) {
+    return {{key, help, min, max, false}, member, nullptr};
+}
+Field whole(std::string_view key, std::string_view help, double min, double max,
+            int TreeParams::*member) {
+    return {{key, help, min, max, true}, nullptr, member};
+}
 
 const std::vector<Field>& fields() {
     static const std::vector<Field> table = {
@@ -111,6 +122,68 @@ const std::vector<Field>& fields() {
           0, 10000000, true},
          nullptr,
          &TreeParams::triangle_budget},
+        // Space colonization (seed 000, chapter 3).
+        whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
+              &TreeParams::attraction_points),
+        real("influence_radius", "colonization: d_i, a point attracts nodes this close, meters",
+             0.001, 100, &TreeParams::influence_radius),
+        real("kill_distance",
+             "colonization: d_k, a point dies when a node is this close, meters (<= d_i)", 0.001,
+             100, &TreeParams::kill_distance),
+        real("step_size", "colonization: D, distance of a new node from its parent, meters", 0.001,
+             10, &TreeParams::step_size),
+        whole("max_iterations", "colonization: iterations before growth stops", 1, 100000,
+              &TreeParams::max_iterations),
+        {{"envelope",
+          "colonization: the crown's shape: sphere, ellipsoid, cone, cylinder or "
+          "hemisphere",
+          0, 4, true, kEnvelopes},
+         nullptr,
+         &TreeParams::envelope},
+        real("envelope_size_x", "colonization: the envelope's width (x), meters", 0.01, 100,
+             &TreeParams::envelope_size_x),
+        real("envelope_size_y", "colonization: the envelope's height (y), meters", 0.01, 100,
+             &TreeParams::envelope_size_y),
+        real("envelope_size_z", "colonization: the envelope's depth (z), meters", 0.01, 100,
+             &TreeParams::envelope_size_z),
+        real("envelope_base", "colonization: height of the envelope's bottom, meters", -50, 100,
+             &TreeParams::envelope_base),
+        real("envelope_offset_x", "colonization: the envelope moved off the root along x, meters",
+             -50, 50, &TreeParams::envelope_offset_x),
+        real("envelope_offset_z", "colonization: the envelope moved off the root along z, meters",
+             -50, 50, &TreeParams::envelope_offset_z),
+        {{"point_distribution",
+          "colonization: attraction points uniform (random) or halton (low discrepancy)", 0, 1,
+          true, kPointDistributions},
+         nullptr,
+         &TreeParams::point_distribution},
+        real("trunk_height", "colonization: the trunk grows at least this high first, meters", 0,
+             100, &TreeParams::trunk_height),
+        real("tropism_vector_x", "colonization: tropism T along x, added to each growth direction",
+             -2, 2, &TreeParams::tropism_vector_x),
+        real("tropism_vector_y",
+             "colonization: tropism T along y (negative: gravity, positive: light)", -2, 2,
+             &TreeParams::tropism_vector_y),
+        real("tropism_vector_z", "colonization: tropism T along z", -2, 2,
+             &TreeParams::tropism_vector_z),
+        whole("max_degree", "colonization: max_grad, successors per node (0 = no limit)", 0, 100,
+              &TreeParams::max_degree),
+        whole("max_depth", "colonization: max_Z, branch depth (eq. 3.5; 0 = no limit)", 0, 1000,
+              &TreeParams::max_depth),
+        whole("max_no_grow",
+              "colonization: max_NG, iterations without growth before a node stops attracting "
+              "(0 = never)",
+              0, 100000, &TreeParams::max_no_grow),
+        whole("weighted_growth",
+              "colonization: 1: step 2D at branch depth 0 down to D at max_depth; 0: always D", 0,
+              1, &TreeParams::weighted_growth),
+        real("curve_reduction",
+             "colonization: eq. 3.6, a node on a run straighter than this dot product is removed "
+             "(1 = keep all)",
+             0, 1, &TreeParams::curve_reduction),
+        real("angle_smoothing",
+             "colonization: successors drawn towards their mean direction (0 = not, 1 = fully)", 0,
+             1, &TreeParams::angle_smoothing),
     };
     return table;
 }

@@ -35,6 +35,31 @@ struct TreeParams {
     double leaf_size = 0.25;       // leaf length, meters
     int leaf_shape = 0;            // LeafShape
     int triangle_budget = 800;     // export: trunk + crown reduced to this (0 = no reduction)
+    // Space colonization (growth = "colonization", seed 000 chapter 3); the L-system
+    // ignores these.
+    int attraction_points = 2000;    // N
+    double influence_radius = 1.5;   // d_i, meters
+    double kill_distance = 0.4;      // d_k, meters
+    double step_size = 0.25;         // D, meters
+    int max_iterations = 300;        // iterations before growth stops
+    int envelope = 1;                // Envelope shape (colonization/envelope.h)
+    double envelope_size_x = 6.0;    // the envelope's width, meters
+    double envelope_size_y = 5.0;    // its height
+    double envelope_size_z = 6.0;    // its depth
+    double envelope_base = 2.5;      // height of the envelope's bottom
+    double envelope_offset_x = 0.0;  // the envelope's axis moved off the root, meters
+    double envelope_offset_z = 0.0;
+    int point_distribution = 0;     // PointDistribution: uniform or halton
+    double trunk_height = 2.0;      // the trunk grows at least this high first
+    double tropism_vector_x = 0.0;  // T, added to each growth direction (eq. 3.2)
+    double tropism_vector_y = 0.0;
+    double tropism_vector_z = 0.0;
+    int max_degree = 0;            // max_grad: successors per node (0 = no limit)
+    int max_depth = 0;             // max_Z: branch depth (0 = no limit)
+    int max_no_grow = 0;           // max_NG: idle iterations before a node stops (0 = never)
+    int weighted_growth = 0;       // 1: step 2D on the trunk down to D at max_depth
+    double curve_reduction = 1.0;  // eq. 3.6 dot-product threshold (1 = keep every node)
+    double angle_smoothing = 0.0;  // successors drawn together (0 = not at all, 1 = fully)
     std::uint64_t seed = 1;
 };
 

@@ -1,5 +1,6 @@
 #include "tree/growth.h"
 
+#include "colonization/colonization_growth.h"
 #include "core/errors.h"
 #include "turtle/lsystem_growth.h"
 
@@ -9,6 +10,7 @@ namespace {
 // The registry: one line per growth method.
 const GrowthMethod* const kMethods[] = {
     &lsystem_growth,
+    &colonization_growth,
 };
 
 }  // namespace

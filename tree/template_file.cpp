@@ -148,9 +148,7 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
     TreeTemplate tree;
     tree.name = read.string(doc, "name", true);
     tree.description = read.string(doc, "description", false);
-    tree.grammar = read.string(doc, "grammar", true);
     tree.source = source;
-    tree.grammar_line = grammar_first_line(text, doc.get("grammar"));
     if (std::string growth = read.string(doc, "growth", false); !growth.empty()) {
         if (!find_growth_method(growth)) {
             std::string known;
@@ -161,6 +159,9 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
         }
         tree.growth = growth;
     }
+    // Only the L-system needs a grammar; other growth methods ignore one.
+    tree.grammar = read.string(doc, "grammar", tree.growth == "lsystem");
+    if (doc.get("grammar")) tree.grammar_line = grammar_first_line(text, doc.get("grammar"));
     tree.mode = static_cast<TurtleMode>(read.named(doc, "turtle", kModes, int(TurtleMode::Abop)));
     tree.width_model =
         static_cast<WidthModel>(read.named(doc, "widths", kWidths, int(WidthModel::Taper)));
@@ -201,7 +202,9 @@ std::string template_file_text(const TreeTemplate& tree) {
     out << "turtle = \"" << name_of(kModes, int(tree.mode)) << "\"\n";
     out << "widths = \"" << name_of(kWidths, int(tree.width_model)) << "\"\n";
     std::string grammar = tree.grammar;
-    if (grammar.find("'''") == std::string::npos) {
+    if (grammar.empty() && tree.growth != "lsystem") {
+        // A growth method without a grammar (colonization) writes none.
+    } else if (grammar.find("'''") == std::string::npos) {
         out << "grammar = '''\n" << grammar << (grammar.ends_with('\n') ? "" : "\n") << "'''\n";
     } else {
         // A grammar that itself holds three quotes goes into a basic string, escaped.

@@ -36,6 +36,24 @@ TEST(Growth, GrowIsTheTemplatesMethod) {
     EXPECT_EQ(times[1].name, "turtle");
 }
 
+TEST(Growth, ColonizationTemplatesNeedNoGrammarAndGrowOneTree) {
+    const TreeTemplate t = parse_template_file(
+        "name = \"blob\"\ngrowth = \"colonization\"\n[params]\nenvelope = \"cone\"\n"
+        "attraction_points = 500\n",
+        "blob.toml");
+    std::vector<StageTime> times;
+    const Skeleton s = grow(t, {nullptr, &times});
+    EXPECT_GT(tips(s).size(), 10u);
+    for (size_t i = 0; i < s.segments.size(); ++i) EXPECT_LT(s.segments[i].parent, int(i));
+    ASSERT_EQ(times.size(), 3u);
+    EXPECT_EQ(times[1].name, "colonize");
+    // Seeded: the same template grows the same skeleton.
+    EXPECT_EQ(grow(t, {}).segments.back().b, s.segments.back().b);
+    TreeTemplate bad = t;
+    bad.params.kill_distance = bad.params.influence_radius + 1.0;
+    EXPECT_THROW(grow(bad, {}), InputError);
+}
+
 TEST(Growth, AnUnknownMethodNamesTheKnownOnes) {
     TreeTemplate t = default_template();
     t.growth = "magic";

@@ -1,0 +1,20 @@
+// Growth method "colonization": seed 000's space colonization (chapter 3) with the crown
+// drawn as an envelope of attraction points. Maps a template's parameters to the
+// algorithm's plain settings. Registered in tree/growth.cpp.
+#pragma once
+
+#include "colonization/attraction_points.h"
+#include "colonization/envelope.h"
+#include "colonization/space_colonization.h"
+#include "core/growth.h"
+
+namespace sylva {
+
+extern const GrowthMethod colonization_growth;
+
+// The envelope, the points' distribution and the algorithm's settings as the template's
+// parameters set them. Throws InputError when kill_distance exceeds influence_radius.
+Envelope template_envelope(const TreeParams& params);
+ColonizationSettings colonization_settings(const TreeParams& params);
+
+}  // namespace sylva

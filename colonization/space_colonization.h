@@ -1,0 +1,65 @@
+// The space colonization algorithm (Runions, Lane, Prusinkiewicz 2007; seed 000, 3.3-3.5):
+// a tree graph grows from a root towards attraction points, which die once a node comes
+// within the kill distance. Works on plain settings and points, knows no template.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include "core/cancel.h"
+
+namespace sylva {
+
+// How each iteration finds a point's nearest node. Both give the same graph, bit for bit;
+// brute force is the reference the benchmark and the tests compare against.
+enum class NearestSearch { Grid, BruteForce };
+
+struct ColonizationSettings {
+    float influence_radius = 1.5f;  // d_i: a point attracts only nodes this close
+    float kill_distance = 0.4f;     // d_k: a point dies when a node is this close
+    float step_size = 0.25f;        // D: distance of a new node from its parent
+    glm::vec3 tropism{0.0f};        // T, added to the normalised mean direction (eq. 3.2)
+    int max_iterations = 300;
+    // The trunk grows straight up from the root, at least this high and until an
+    // attraction point is within d_i of its top, before the points take over.
+    float trunk_height = 0.0f;
+    int max_degree = 0;   // max_grad: successors per node (0 = no limit)
+    int max_depth = 0;    // max_Z: branch depth of eq. 3.5 (0 = no limit)
+    int max_no_grow = 0;  // max_NG: iterations without a new successor before a node
+                          // stops attracting (0 = never stops)
+    // Weighted growth (3.5): step 2D at branch depth 0, D at max_depth (at depth 8 when
+    // max_depth is 0), linear in between.
+    bool weighted_growth = false;
+    NearestSearch search = NearestSearch::Grid;
+    CancelFlag cancel = nullptr;  // polled every iteration; throws Cancelled
+};
+
+struct ColonizationNode {
+    glm::vec3 position{0.0f};
+    int parent = -1;     // -1 for the root; parents always precede their children
+    int depth = 0;       // branch depth Z (eq. 3.5), fixed when the node is made
+    int successors = 0;  // number of children
+    int no_grow = 0;     // iterations in a row without a new successor (NG counter)
+    int born = 0;        // the iteration that made it, from 1 (0: root and trunk), so
+                         // growth can be replayed step by step
+};
+
+enum class ColonizationStop { NoPointsLeft, NothingGrew, MaxIterations };
+
+struct ColonizationGraph {
+    std::vector<ColonizationNode> nodes;  // nodes[0] is the root
+    std::vector<glm::vec3> remaining;     // attraction points still alive at the end
+    int iterations = 0;
+    // Growth refused because the new node would fall back onto the tree (within D/2 of
+    // another node) or the pulls cancelled out: seed 000 5.3's back-and-forth growth.
+    int oscillations = 0;
+    ColonizationStop stop = ColonizationStop::NoPointsLeft;
+};
+
+// Grows a tree from `root` towards `points`. Throws Cancelled when the flag is set.
+// Precondition: 0 < kill_distance, 0 < step_size, kill_distance <= influence_radius.
+ColonizationGraph colonize(std::span<const glm::vec3> points, const glm::vec3& root,
+                           const ColonizationSettings& settings);
+
+}  // namespace sylva
