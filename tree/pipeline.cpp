@@ -150,9 +150,9 @@ std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereFiel
 int crown_resolution_for_budget(int resolution, std::size_t budget) {
     if (budget == 0) return resolution;
     // The crown's share (half) of the budget needs about sqrt(share) vertices along the
-    // crown; 1.6 times that many cells keeps fidelity (measured: within 7% of the template's
+    // crown; 2.4 times that many cells keeps fidelity (measured: within 4% of the template's
     // resolution at 800 on every template, bench/lowpoly_bench) at a fraction of the cost.
-    const double cells = 1.6 * std::sqrt(static_cast<double>(budget) / 2.0);
+    const double cells = 2.4 * std::sqrt(static_cast<double>(budget) / 2.0);
     return std::min(resolution, std::max(24, static_cast<int>(std::ceil(cells))));
 }
 

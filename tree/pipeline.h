@@ -51,8 +51,8 @@ struct MeshOptions {
 };
 
 // The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown
-// triangles: the template's, or less when the budget cannot show more (24 at 200, 32 at
-// 800, 62 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
+// triangles: the template's, or less when the budget cannot show more (24 at 200, 48 at
+// 800, 93 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
 // coarse grid already draws as well as a small budget can; the trunk keeps its resolution,
 // since thin branches need it.
 int crown_resolution_for_budget(int resolution, std::size_t budget);
