@@ -17,6 +17,27 @@ void InputError::relocate(const std::string& source, int first_line) {
     format();
 }
 
+namespace {
+
+// A NUL byte would end the message for every C-string consumer (what(), printf); other
+// control characters would garble a terminal. Both are shown escaped, as \xNN.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (c >= 0x20 || c == '\t') {
+            out.push_back(static_cast<char>(c));
+        } else {
+            static constexpr char kHex[] = "0123456789abcdef";
+            out += "\\x";
+            out.push_back(kHex[c >> 4]);
+            out.push_back(kHex[c & 15]);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 // "file:7:12: reason" when the source has a name (as compilers write it), "line 7, column
 // 12: reason" when it has none; then the line with a caret under the column.
 void InputError::format() {
@@ -30,9 +51,9 @@ void InputError::format() {
         place = "line " + std::to_string(w.line);
         if (w.column > 0) place += ", column " + std::to_string(w.column);
     }
-    message_ = place.empty() ? reason_ : place + ": " + reason_;
+    message_ = printable(place.empty() ? reason_ : place + ": " + reason_);
     if (w.line > 0 && !source_line_.empty()) {
-        message_ += "\n    " + source_line_ + "\n    ";
+        message_ += "\n    " + printable(source_line_) + "\n    ";
         if (w.column > 0) message_ += std::string(static_cast<size_t>(w.column - 1), ' ') + "^";
     }
 }

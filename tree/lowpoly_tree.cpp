@@ -19,14 +19,25 @@ void append_note(std::string& notes, const std::string& part, const std::string&
     notes += part.empty() ? note : part + ": " + note;
 }
 
+// One part to its budget; 0 keeps every triangle, as `--budget 0` does for the whole tree.
+DecimateResult reduce_part(const Mesh& part, std::size_t budget, const DecimateSettings& settings) {
+    if (budget == 0) {
+        DecimateResult kept;
+        kept.parts = {part};
+        kept.triangles = part.triangles.size();
+        kept.within_budget = true;
+        return kept;
+    }
+    DecimateSettings s = settings;
+    s.max_triangles = budget;
+    return decimate(part, s);
+}
+
 // Trunk and crown reduced to their own budgets.
 ReducedTree reduce_parts(const Mesh& trunk, const Mesh& crown, std::size_t trunk_budget,
                          std::size_t crown_budget, const DecimateSettings& settings) {
-    DecimateSettings s = settings;
-    s.max_triangles = trunk_budget;
-    DecimateResult t = decimate(trunk, s);
-    s.max_triangles = crown_budget;
-    DecimateResult c = decimate(crown, s);
+    DecimateResult t = reduce_part(trunk, trunk_budget, settings);
+    DecimateResult c = reduce_part(crown, crown_budget, settings);
     ReducedTree out;
     out.trunk = std::move(t.parts[0]);
     out.crown = std::move(c.parts[0]);

@@ -145,6 +145,29 @@ std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereFiel
     return visible;
 }
 
+// Sylva models trees, not continents: a segment that ends farther out than this (or at a
+// non-finite point, from F(1e39) say) is bad input, found before any grid is sized by it.
+constexpr float kMaxExtent = 1.0e5f;  // metres
+
+void check_extent(const Skeleton& skeleton) {
+    for (std::size_t i = 0; i < skeleton.segments.size(); ++i) {
+        const Segment& s = skeleton.segments[i];
+        for (const glm::vec3& p : {s.a, s.b}) {
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                std::abs(p.x) <= kMaxExtent && std::abs(p.y) <= kMaxExtent &&
+                std::abs(p.z) <= kMaxExtent && std::isfinite(s.ra) && std::isfinite(s.rb) &&
+                s.ra <= kMaxExtent && s.rb <= kMaxExtent)
+                continue;
+            throw InputError("segment " + std::to_string(i) + " of the skeleton reaches (" +
+                             std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
+                             std::to_string(p.z) + ") with radius " + std::to_string(s.rb) +
+                             ": a tree must stay within " + std::to_string(int(kMaxExtent)) +
+                             " m of its root with finite widths (check the F lengths, widths "
+                             "and branch_length)");
+        }
+    }
+}
+
 }  // namespace
 
 int crown_resolution_for_budget(int resolution, std::size_t budget) {
@@ -201,6 +224,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
 
+    check_extent(out.skeleton);
     Stopwatch clock;
     TreeFields fields = tree_fields(out.skeleton, p);
     if (!fields.trunk)

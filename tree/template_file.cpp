@@ -70,9 +70,14 @@ class Reader {
             try {
                 if (value.is_string())
                     set_param(params, key.str(), *value.value<std::string_view>());
-                else if (value.is_number())
-                    set_param(params, key.str(), *value.value<double>());
-                else
+                else if (value.is_number()) {
+                    // An integer beyond 2^53 has no exact double: say so instead of rounding.
+                    const std::optional<double> number = value.value<double>();
+                    if (!number)
+                        throw InputError("parameter " + std::string(key.str()) +
+                                         " is not a number a double can hold exactly");
+                    set_param(params, key.str(), *number);
+                } else
                     throw InputError("parameter " + std::string(key.str()) + " must be a number");
             } catch (const InputError& e) {
                 fail(&value, std::string("[params] ") + e.reason());

@@ -202,7 +202,8 @@ Word axiom_word(const LSystem& system, Random& random) {
             try {
                 args.push_back(e.evaluate({}, random));
             } catch (const GrammarError& error) {
-                throw GrammarError(error.reason() + " in the axiom");
+                throw GrammarError(error.reason() + " in the axiom", system.axiom_line, 0,
+                                   system.axiom_text);
             }
         }
         word.push(m.symbol, args);

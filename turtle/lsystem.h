@@ -37,6 +37,8 @@ struct Rule {
 
 struct LSystem {
     std::vector<ModuleProduction> axiom;
+    int axiom_line = 0;               // where the axiom was written, for error messages
+    std::string axiom_text;           // its source line
     std::vector<Rule> rules;          // in the order written
     std::array<bool, 256> ignored{};  // #ignore: skipped when matching contexts
 };

@@ -36,6 +36,17 @@ struct Line {
         throw GrammarError(message, number, static_cast<int>(column0) + 1, std::string(full));
     }
 
+    // A constant expression's value; an evaluation error (division by zero, ...) names
+    // this line and `column0`.
+    double evaluate_constant(const Expression& e, size_t column0) const {
+        Random unused(0);
+        try {
+            return e.evaluate({}, unused);
+        } catch (const GrammarError& error) {
+            fail(error.reason(), column0);
+        }
+    }
+
     // Position of `token` at parenthesis depth 0 in [begin, end), or npos.
     size_t find_top_level(std::string_view token, size_t begin, size_t end) const {
         int depth = 0;
@@ -86,6 +97,9 @@ class Parser {
             if (section == Section::SeedAxiom) {
                 if (have_axiom) line.fail("a second axiom; seed 001's format has one", start);
                 result_.axiom = parse_productions(line, start, line.text.size(), {});
+                if (result_.axiom.empty()) line.fail("the axiom is empty", start);
+                result_.axiom_line = line.number;
+                result_.axiom_text = std::string(line.full);
                 check_brackets(line, start, line.text.size());
                 have_axiom = true;
                 section = Section::Free;
@@ -97,6 +111,9 @@ class Parser {
                     line.fail("expected ':' after 'axiom'", start + 5);
                 if (have_axiom) line.fail("a second axiom", start);
                 result_.axiom = parse_productions(line, colon + 1, line.text.size(), {});
+                if (result_.axiom.empty()) line.fail("the axiom is empty", colon + 1);
+                result_.axiom_line = line.number;
+                result_.axiom_text = std::string(line.full);
                 check_brackets(line, colon + 1, line.text.size());
                 have_axiom = true;
                 continue;
@@ -174,7 +191,7 @@ class Parser {
             line.fail("#define " + name + " needs a value", line.text.size());
         Expression value = compile(line, value_begin, line.text.size(), {});
         Random unused(0);
-        constants_[name] = value.evaluate({}, unused);
+        constants_[name] = line.evaluate_constant(value, value_begin);
     }
 
     void parse_ignore(const Line& line) {
@@ -345,7 +362,7 @@ class Parser {
         if (weight_colon != std::string_view::npos) {
             Expression weight = compile(line, weight_colon + 1, end, {});
             Random unused(0);
-            double w = weight.evaluate({}, unused);
+            double w = line.evaluate_constant(weight, weight_colon + 1);
             if (!(w >= 0.0)) line.fail("a rule's weight must be zero or more", weight_colon + 1);
             rule.weight = w;
         }

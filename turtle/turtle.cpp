@@ -1,5 +1,6 @@
 #include "turtle/turtle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -11,6 +12,15 @@
 
 namespace sylva {
 namespace {
+
+// The largest colour index '(i) keeps; beyond it (or for NaN and negative values) the
+// index is clamped rather than converted out of range.
+constexpr double kMaxColourIndex = 1'000'000.0;
+
+int colour_index(double value) {
+    if (!(value > 0.0)) return 0;
+    return static_cast<int>(std::min(std::floor(value), kMaxColourIndex));
+}
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
@@ -106,7 +116,7 @@ class Interpreter {
                     state_.width = a.empty() ? state_.width * settings_.width_decay : a[0];
                     break;
                 case '\'':
-                    state_.color = a.empty() ? state_.color + 1 : static_cast<int>(a[0]);
+                    state_.color = colour_index(a.empty() ? state_.color + 1.0 : a[0]);
                     break;
                 case '{':
                     polygons_.emplace_back();

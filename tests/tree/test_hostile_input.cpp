@@ -1,0 +1,55 @@
+// Hostile templates and parameters (issue 16): clear errors naming what and where, and
+// budgets that mean what they say.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.h"
+#include "tree/lowpoly_tree.h"
+#include "tree/pipeline.h"
+#include "tree/template_file.h"
+#include "tree/template_library.h"
+
+namespace sylva {
+namespace {
+
+TEST(HostileTemplate, AnIntegerNoDoubleHoldsIsRejectedWithKeyAndLine) {
+    const std::string text =
+        "name = \"x\"\ngrammar = \"axiom: F\"\n[params]\ncrown_offset = 9007199254740993\n";
+    try {
+        parse_template_file(text, "x.toml");
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.where().source, "x.toml");
+        EXPECT_EQ(e.line(), 4);
+        EXPECT_NE(std::string(e.what()).find("crown_offset"), std::string::npos) << e.what();
+    }
+}
+
+TEST(HostileTemplate, ATreeBeyondAnyGridIsBadInputNotAnInternalError) {
+    for (const char* grammar : {"axiom: !(0.1)F(1e39)\n", "axiom: !(0.1)F\nF -> FFFFFFFF\n"}) {
+        TreeTemplate t = default_template();
+        t.grammar = grammar;
+        try {
+            generate_tree(t);
+            FAIL() << "expected InputError for " << grammar;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("within"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(HostileBudget, APartBudgetOfZeroKeepsThatPartLikeTheWholeBudgetDoes) {
+    TreeTemplate t = default_template();
+    t.params.trunk_resolution = 40;
+    t.params.crown_resolution = 32;
+    const Tree tree = generate_tree(t);
+    TreeBudget budget;
+    budget.crown = 0;
+    const ReducedTree r = reduce_tree(tree, budget);
+    EXPECT_EQ(r.crown.triangles.size(), tree.crown.triangles.size());
+    EXPECT_LE(r.trunk.triangles.size(), budget.total);
+}
+
+}  // namespace
+}  // namespace sylva
