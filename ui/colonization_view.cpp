@@ -86,6 +86,15 @@ std::vector<glm::vec3> template_attraction_points(const TreeTemplate& tree_templ
                              static_cast<PointDistribution>(p.point_distribution), p.seed);
 }
 
+std::vector<glm::vec3> attraction_points_alive(const TreeTemplate& tree_template, int step) {
+    ColonizationSettings settings = colonization_settings(tree_template.params);
+    // The growth is deterministic and its steps do not look ahead: stopped at `step`, it is
+    // where the whole growth was after that step.
+    settings.max_iterations = std::clamp(step, 0, settings.max_iterations);
+    // Rooted where colonization_growth roots it.
+    return colonize(template_attraction_points(tree_template), glm::vec3(0.0f), settings).remaining;
+}
+
 int last_iteration(const Skeleton& skeleton) {
     int last = 0;
     for (const Segment& s : skeleton.segments) last = std::max(last, s.iteration);

@@ -33,6 +33,11 @@ std::vector<glm::vec3> template_envelope_wire(const TreeTemplate& tree_template)
 // distribution and seed, as colonization_growth places them.
 std::vector<glm::vec3> template_attraction_points(const TreeTemplate& tree_template);
 
+// The attraction points still alive after growth step `step` (0: after the trunk): the
+// growth run again, stopped there. Costs one growth up to that step (milliseconds for the
+// built-in templates, some 0.2 s at 100,000 points). Throws what the growth throws.
+std::vector<glm::vec3> attraction_points_alive(const TreeTemplate& tree_template, int step);
+
 // The last growth step any segment records: 0 for an L-system skeleton or a bare trunk.
 int last_iteration(const Skeleton& skeleton);
 

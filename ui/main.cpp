@@ -39,8 +39,8 @@ constexpr glm::vec3 kSkeletonColor{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
 // Grey-blue and near white: apart from the tree's warm bark and green foliage.
 constexpr glm::vec3 kEnvelopeColor{0.45f, 0.62f, 0.85f};
-constexpr glm::vec3 kPointColor{0.92f, 0.95f, 1.0f};
-constexpr float kPointSize = 3.0f;
+constexpr glm::vec3 kPointColor{0.78f, 0.84f, 0.95f};
+constexpr float kPointSize = 2.0f;
 
 // GLFW reports errors through a C callback without a user pointer; the last one is kept to
 // explain a failed window creation.
@@ -69,9 +69,11 @@ struct Viewport {
     MeshRenderer trunk, crown, leaves;
     LineRenderer skeleton;
     // Space colonization: the envelope's wire, its attraction points, and the skeleton up to
-    // a growth step (replay_iteration, or -1 before the first upload).
+    // a growth step. What each holds: the step (-1: the whole growth), kNothing after a new
+    // tree.
+    static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
-    int replay_iteration = -1;
+    int points_step = kNothing, replay_step = kNothing;
 };
 
 GLFWwindow* create_window() {
@@ -132,19 +134,34 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
     return meshes.level;
 }
 
-// The colonization overlays of a new tree: empty for an L-system one.
-void upload_colonization(Viewport& viewport, const sylva::TreeTemplate& shown) {
-    const bool colonization = grows_by_colonization(shown);
-    viewport.envelope.upload(colonization ? template_envelope_wire(shown)
-                                          : std::vector<glm::vec3>{});
-    viewport.points.upload(colonization ? template_attraction_points(shown)
-                                        : std::vector<glm::vec3>{});
-    viewport.replay_iteration = -1;
-}
-
 // Replaying: shows only the segments made up to the chosen growth step.
 bool replaying(const StudioState& state) {
     return state.view.replay && state.tree && grows_by_colonization(state.shown_template);
+}
+
+// Brings the colonization overlays up to date with the tree and the view: after a new tree
+// or another replay step. Replaying, the points are those still alive after the step.
+void update_colonization(Viewport& viewport, const StudioState& state, bool new_tree) {
+    const sylva::TreeTemplate& shown = state.shown_template;
+    if (new_tree) {
+        const bool colonization = grows_by_colonization(shown);
+        viewport.envelope.upload(colonization ? template_envelope_wire(shown)
+                                              : std::vector<glm::vec3>{});
+        viewport.points.upload(std::vector<glm::vec3>{});
+        viewport.replay.upload(std::vector<glm::vec3>{});
+        viewport.points_step = viewport.replay_step = Viewport::kNothing;
+    }
+    if (!state.tree || !grows_by_colonization(shown)) return;
+    const int step = replaying(state) ? state.view.replay_iteration : -1;
+    if (step >= 0 && step != viewport.replay_step) {
+        viewport.replay.upload(replay_lines(state.tree->tree.skeleton, step));
+        viewport.replay_step = step;
+    }
+    if (state.view.points && step != viewport.points_step) {
+        viewport.points.upload(step < 0 ? template_attraction_points(shown)
+                                        : attraction_points_alive(shown, step));
+        viewport.points_step = step;
+    }
 }
 
 // Fits the camera to the tree and lays the ground grid under it.
@@ -314,7 +331,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         poll_jobs(state);
         if (state.tree_changed) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
-            upload_colonization(viewport, state.shown_template);
+            update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
             state.frame_next_tree = false;
@@ -322,11 +339,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                    shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
         }
-        if (replaying(state) && state.view.replay_iteration != viewport.replay_iteration) {
-            viewport.replay_iteration = state.view.replay_iteration;
-            viewport.replay.upload(
-                replay_lines(state.tree->tree.skeleton, viewport.replay_iteration));
-        }
+        update_colonization(viewport, state, false);
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
             state.frame_requested = false;

@@ -128,6 +128,21 @@ TEST(ColonizationView, PointsShownAreTheGrowthsPoints) {
     EXPECT_EQ(template_attraction_points(elm), shown);
 }
 
+TEST(ColonizationView, ReplayedPointsDieStepByStep) {
+    TreeTemplate elm = load_template("elm");
+    const std::vector<glm::vec3> all = template_attraction_points(elm);
+    const int last = last_iteration(grow(elm));
+    std::size_t before = all.size();
+    for (int step = 0; step <= last; step += 3) {
+        const std::vector<glm::vec3> alive = attraction_points_alive(elm, step);
+        EXPECT_LE(alive.size(), before) << "step " << step;
+        before = alive.size();
+        for (const glm::vec3& p : alive)
+            EXPECT_NE(std::find(all.begin(), all.end(), p), all.end());  // some of the shown
+    }
+    EXPECT_LT(attraction_points_alive(elm, last).size(), all.size() / 10);
+}
+
 TEST(ColonizationView, ReplayShowsMoreSegmentsStepByStep) {
     const Skeleton skeleton = grow(load_template("elm"));
     const int last = last_iteration(skeleton);
