@@ -78,6 +78,7 @@ Skeleton to_skeleton(const ColonizationGraph& graph, float tip_radius, float exp
         s.b = node.position;
         s.parent = segment_of[static_cast<size_t>(node.parent)];
         s.depth = node.depth;
+        s.iteration = node.born;
         segment_of[v] = static_cast<int>(skeleton.segments.size());
         skeleton.segments.push_back(s);
     }

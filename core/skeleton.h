@@ -15,6 +15,9 @@ struct Segment {
     int parent = -1;    // index of the segment this one grows from, -1 for a root
     int depth = 0;      // branch depth Z: 0 on the trunk, +1 for every branch entered
     int color = 0;      // colour index set by '
+    // The growth step that made it (colonization: the node's `born`, 0 for the trunk), so
+    // growth can be replayed step by step; 0 for the L-system. Not exported.
+    int iteration = 0;
 };
 
 struct Skeleton {

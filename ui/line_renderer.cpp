@@ -27,6 +27,18 @@ void LineRenderer::upload(std::span<const glm::vec3> points) {
 
 void LineRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
                         const glm::vec3& color) const {
+    draw_as(GL_LINES, view, projection, color);
+}
+
+void LineRenderer::draw_points(const glm::mat4& view, const glm::mat4& projection,
+                               const glm::vec3& color, float size) const {
+    glPointSize(size);
+    draw_as(GL_POINTS, view, projection, color);
+    glPointSize(1.0f);
+}
+
+void LineRenderer::draw_as(GLenum mode, const glm::mat4& view, const glm::mat4& projection,
+                           const glm::vec3& color) const {
     if (lines_.count() == 0) return;
     glDisable(GL_DEPTH_TEST);
     glUseProgram(program_.id());
@@ -34,7 +46,7 @@ void LineRenderer::draw(const glm::mat4& view, const glm::mat4& projection,
     glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view_projection));
     glUniform3fv(program_.uniform("u_color"), 1, glm::value_ptr(color));
-    lines_.draw(GL_LINES);
+    lines_.draw(mode);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -6,6 +6,7 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/backdrop.h"
+#include "ui/colonization_view.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
 #include "ui/line_renderer.h"
@@ -36,6 +37,10 @@ constexpr int kWindowWidth = 1280;
 constexpr int kWindowHeight = 800;
 constexpr glm::vec3 kSkeletonColor{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
+// Grey-blue and near white: apart from the tree's warm bark and green foliage.
+constexpr glm::vec3 kEnvelopeColor{0.45f, 0.62f, 0.85f};
+constexpr glm::vec3 kPointColor{0.78f, 0.84f, 0.95f};
+constexpr float kPointSize = 2.0f;
 
 // GLFW reports errors through a C callback without a user pointer; the last one is kept to
 // explain a failed window creation.
@@ -63,6 +68,12 @@ struct Viewport {
     GroundGrid grid;
     MeshRenderer trunk, crown, leaves;
     LineRenderer skeleton;
+    // Space colonization: the envelope's wire, its attraction points, and the skeleton up to
+    // a growth step. What each holds: the step (-1: the whole growth), kNothing after a new
+    // tree.
+    static constexpr int kNothing = -2;
+    LineRenderer envelope, points, replay;
+    int points_step = kNothing, replay_step = kNothing;
 };
 
 GLFWwindow* create_window() {
@@ -105,6 +116,10 @@ std::vector<glm::vec3> visible_points(const StudioState& state) {
     if (points.empty() || show.skeleton)
         for (const sylva::Segment& s : state.tree->tree.skeleton.segments)
             points.insert(points.end(), {s.a, s.b});
+    if (show.envelope && grows_by_colonization(state.shown_template)) {
+        const std::vector<glm::vec3> wire = template_envelope_wire(state.shown_template);
+        points.insert(points.end(), wire.begin(), wire.end());
+    }
     return points;
 }
 
@@ -117,6 +132,36 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
     viewport.leaves.upload(meshes.leaves);
     viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
     return meshes.level;
+}
+
+// Replaying: shows only the segments made up to the chosen growth step.
+bool replaying(const StudioState& state) {
+    return state.view.replay && state.tree && grows_by_colonization(state.shown_template);
+}
+
+// Brings the colonization overlays up to date with the tree and the view: after a new tree
+// or another replay step. Replaying, the points are those still alive after the step.
+void update_colonization(Viewport& viewport, const StudioState& state, bool new_tree) {
+    const sylva::TreeTemplate& shown = state.shown_template;
+    if (new_tree) {
+        const bool colonization = grows_by_colonization(shown);
+        viewport.envelope.upload(colonization ? template_envelope_wire(shown)
+                                              : std::vector<glm::vec3>{});
+        viewport.points.upload(std::vector<glm::vec3>{});
+        viewport.replay.upload(std::vector<glm::vec3>{});
+        viewport.points_step = viewport.replay_step = Viewport::kNothing;
+    }
+    if (!state.tree || !grows_by_colonization(shown)) return;
+    const int step = replaying(state) ? state.view.replay_iteration : -1;
+    if (step >= 0 && step != viewport.replay_step) {
+        viewport.replay.upload(replay_lines(state.tree->tree.skeleton, step));
+        viewport.replay_step = step;
+    }
+    if (state.view.points && step != viewport.points_step) {
+        viewport.points.upload(step < 0 ? template_attraction_points(shown)
+                                        : attraction_points_alive(shown, step));
+        viewport.points_step = step;
+    }
 }
 
 // Fits the camera to the tree and lays the ground grid under it.
@@ -215,6 +260,7 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
     glm::mat4 projection = projection_matrix(state.camera, aspect);
     const sylva::PartColors& colors = state.shown_template.colors;
     const ViewToggles& show = state.view;
+    const bool replay = replaying(state);
     struct Part {
         bool on;
         const MeshRenderer& renderer;
@@ -223,12 +269,19 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
     for (const Part& part : {Part{show.trunk, viewport.trunk, colors.trunk},
                              Part{show.crown, viewport.crown, colors.crown},
                              Part{show.leaves, viewport.leaves, colors.leaves}}) {
-        if (!part.on) continue;
+        if (!part.on || replay) continue;
         part.renderer.draw(view, projection, part.color);
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
     viewport.grid.draw(view, projection);
-    if (show.skeleton) viewport.skeleton.draw(view, projection, kSkeletonColor);
+    if (replay)
+        viewport.replay.draw(view, projection, kSkeletonColor);
+    else if (show.skeleton)
+        viewport.skeleton.draw(view, projection, kSkeletonColor);
+    if (grows_by_colonization(state.shown_template)) {
+        if (show.envelope) viewport.envelope.draw(view, projection, kEnvelopeColor);
+        if (show.points) viewport.points.draw_points(view, projection, kPointColor, kPointSize);
+    }
 }
 
 // The window's loop; returns main's exit code. In screenshot mode it stops after the
@@ -241,6 +294,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     state.tree_template = state.committed = sylva::load_template(options.tree_template);
 
     state.view.lod_level = options.lod_level;
+    state.view.envelope = options.envelope;
+    state.view.points = options.points;
+    if (options.replay_iteration) {
+        state.view.replay = true;
+        state.view.replay_iteration = *options.replay_iteration;
+    }
     start_generation(state);
 
     int frames_with_tree = 0;
@@ -272,6 +331,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         poll_jobs(state);
         if (state.tree_changed) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
             state.frame_next_tree = false;
@@ -279,6 +339,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                    shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
         }
+        update_colonization(viewport, state, false);
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
             state.frame_requested = false;

@@ -10,7 +10,9 @@
 #include <string>
 
 #include "export/export.h"
+#include "tree/growth.h"
 #include "tree/template_library.h"
+#include "ui/colonization_view.h"
 
 namespace sylva::studio {
 namespace {
@@ -75,6 +77,21 @@ void actions_row(StudioState& state) {
     ImGui::EndDisabled();
 }
 
+// The growth method that makes the skeleton; the rest of the pipeline is shared.
+void growth_combo(StudioState& state) {
+    const std::string& current = state.tree_template.growth;
+    if (ImGui::BeginCombo("growth", current.c_str())) {
+        for (const GrowthMethod* method : growth_methods()) {
+            const std::string name(method->name);
+            if (ImGui::Selectable(name.c_str(), name == current)) set_growth_method(state, name);
+            tooltip(std::string(method->description).c_str());
+        }
+        ImGui::EndCombo();
+    }
+    if (const GrowthMethod* method = find_growth_method(current))
+        tooltip(std::string(method->description).c_str());
+}
+
 void template_section(StudioState& state) {
     section("Template");
     if (ImGui::BeginCombo("template", state.tree_template.name.c_str(),
@@ -89,6 +106,7 @@ void template_section(StudioState& state) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", state.tree_template.description.c_str());
     ImGui::PopTextWrapPos();
+    growth_combo(state);
     const float buttons = ImGui::CalcTextSize("OpenSave as").x +
                           4.0f * ImGui::GetStyle().FramePadding.x +
                           2.0f * ImGui::GetStyle().ItemSpacing.x;
@@ -188,6 +206,19 @@ void parameter_section(StudioState& state) {
 
 void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     section("Rules");
+    if (grows_by_colonization(state.tree_template)) {
+        // No grammar to edit: the editor would only invite edits that change nothing.
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled(
+            "Space colonization grows without rules: the envelope, the attraction points and "
+            "the colonization parameters on the left shape the tree. Switch growth to "
+            "\"lsystem\" to edit a grammar.");
+        ImGui::PopTextWrapPos();
+        wrapped_text(state.error, true);
+        if (!state.error.empty())
+            ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+        return;
+    }
     const TextMark mark{state.error_line, state.error_column};
     rules_editor("rules", state.tree_template.grammar, mark, editor, height);
     if (state.error_line > 0) {
@@ -213,6 +244,27 @@ void totals_line(const std::string& label, const GameMeshTotals& totals, bool wr
     if (wrap) ImGui::PopTextWrapPos();
     if (totals.over_budget) ImGui::PopStyleColor();
     if (!totals.note.empty()) tooltip(totals.note.c_str());
+}
+
+// Space colonization's overlays: the envelope, the attraction points, and growth replayed
+// up to a step (`last`: the tree's final one).
+void colonization_view_row(ViewToggles& v, int last) {
+    ImGui::Checkbox("envelope", &v.envelope);
+    tooltip("the envelope the attraction points fill, as a wire cage");
+    ImGui::SameLine();
+    ImGui::Checkbox("points", &v.points);
+    tooltip("the attraction points the growth started from (the template's seed)");
+    ImGui::SameLine();
+    ImGui::Checkbox("replay", &v.replay);
+    tooltip("the skeleton as growth left it after the step on the right (no meshes)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!v.replay);
+    // Off, the slider rests at the whole tree, so switching replay on changes nothing yet.
+    v.replay_iteration = v.replay ? std::clamp(v.replay_iteration, 0, last) : last;
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::SliderInt("##replay", &v.replay_iteration, 0, last, "step %d");
+    tooltip("growth step: 0 is the trunk, the last one the whole tree");
+    ImGui::EndDisabled();
 }
 
 void view_section(StudioState& state) {
@@ -242,6 +294,8 @@ void view_section(StudioState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
+    if (state.tree && grows_by_colonization(state.shown_template))
+        colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
 }
 

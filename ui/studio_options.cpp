@@ -35,6 +35,18 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                                  "'");
             options.lod_level = level;
             options.low_poly = true;
+        } else if (arg == "--no-envelope") {
+            options.envelope = false;
+        } else if (arg == "--points") {
+            options.points = true;
+        } else if (arg == "--replay") {
+            std::string_view text = value();
+            int step = -1;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), step);
+            if (error != std::errc() || end != text.data() + text.size() || step < 0)
+                throw UsageError("--replay takes a growth step of at least 0, got '" +
+                                 std::string(text) + "'");
+            options.replay_iteration = step;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -56,8 +68,9 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--screenshot PATH "
-           "[--frames N]]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
+           "[--points]\n"
+           "                    [--replay STEP] [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -65,6 +78,10 @@ std::string studio_usage() {
            "  --low-poly         show the game mesh: what an export at the template's budget\n"
            "                     writes (trunk + crown reduced, leaves thinned)\n"
            "  --lod N            show level N (0-3) of its LOD chain; implies --low-poly\n"
+           "  --no-envelope      space colonization: hide the envelope's wire cage\n"
+           "  --points           space colonization: show the attraction points\n"
+           "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
+           "                     STEP (0: the trunk), without the meshes\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

@@ -14,6 +14,11 @@ struct StudioOptions {
     std::string tree_template = "default";       // a built-in name or a template file
     bool low_poly = false;                       // start with the low-poly preview on
     int lod_level = 0;                           // ... showing this LOD level (--lod sets both)
+    // Space colonization's overlays (ViewToggles): the envelope wire, the attraction points,
+    // and growth replayed up to a step (clamped to the tree's last).
+    bool envelope = true;
+    bool points = false;
+    std::optional<int> replay_iteration;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.
@@ -22,7 +27,7 @@ struct UsageError : std::runtime_error {
 };
 
 // Throws UsageError for an unknown option, a missing or malformed value, --lod outside 0-3,
-// or --frames without --screenshot.
+// --replay below 0, or --frames without --screenshot.
 StudioOptions parse_studio_options(int argc, const char* const* argv);
 
 std::string studio_usage();

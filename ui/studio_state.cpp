@@ -214,6 +214,12 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
     start_generation(state);
 }
 
+void set_growth_method(StudioState& state, std::string_view method) {
+    commit_edit(state);
+    state.tree_template.growth = std::string(method);
+    commit_edit(state);
+}
+
 void start_generation(StudioState& state) {
     const bool draft = draft_wanted(state);
     const std::size_t budget = preview_budget(state);

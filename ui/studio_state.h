@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "export/export_tree.h"
@@ -99,6 +100,11 @@ struct ViewToggles {
     bool wireframe = false;
     bool low_poly = false;  // show the game mesh: what an export at the budget writes
     int lod_level = 0;      // which level of the LOD chain the low-poly view shows
+    // Space colonization trees only (ui/colonization_view.h):
+    bool envelope = true;      // the envelope as a wire cage
+    bool points = false;       // the attraction points the growth started from
+    bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
+    int replay_iteration = 0;  // clamped to the tree's last step when drawn
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -158,6 +164,10 @@ std::size_t preview_budget(const StudioState& state);
 
 // Replaces the edited template (an undoable edit) and frames the tree it makes.
 void load_template_into(StudioState& state, const TreeTemplate& tree_template);
+
+// Switches the edited template's growth method (a name from tree/growth.h's
+// growth_methods()): an undoable edit, committed at once like picking a template.
+void set_growth_method(StudioState& state, std::string_view method);
 
 // Cancels the running generation, if any, and starts one of the edited template. While two
 // cancelled jobs still wind down, the start waits (generate_wanted), so dragging a slider

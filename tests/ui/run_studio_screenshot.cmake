@@ -1,6 +1,8 @@
 # Runs sylva-studio under a virtual X server, saves a screenshot and checks it.
 # cmake -DSTUDIO=... -DCHECKER=... -DOUTPUT=....png -DWIDTH=1280 -DHEIGHT=800
-#       [-DARGS=arg|arg...] -P this
+#       [-DARGS=arg|arg...] [-DCHECK=OFF] -P this
+# CHECK=OFF only requires the PNG: for frames without meshes (the colonization replay draws
+# the skeleton's lines alone, too thin for the checker's tree-pixel count).
 # Any failure ends in FATAL_ERROR, which makes cmake -P (and so the test) exit non-zero.
 foreach(var STUDIO CHECKER OUTPUT WIDTH HEIGHT)
   if(NOT DEFINED ${var})
@@ -34,6 +36,9 @@ if(NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "sylva-studio exited 0 but wrote no ${OUTPUT}")
 endif()
 
+if(DEFINED CHECK AND NOT CHECK)
+  return()
+endif()
 execute_process(
   COMMAND "${CHECKER}" "${OUTPUT}" ${WIDTH} ${HEIGHT}
   RESULT_VARIABLE check_result)

@@ -39,6 +39,21 @@ TEST(StudioOptions, LodPicksALevelOfTheLowPolyView) {
     EXPECT_THROW(parse({"--lod"}), UsageError);
 }
 
+TEST(StudioOptions, ColonizationOverlays) {
+    StudioOptions o = parse({});
+    EXPECT_TRUE(o.envelope);
+    EXPECT_FALSE(o.points);
+    EXPECT_FALSE(o.replay_iteration);
+    o = parse({"--no-envelope", "--points", "--replay", "12"});
+    EXPECT_FALSE(o.envelope);
+    EXPECT_TRUE(o.points);
+    ASSERT_TRUE(o.replay_iteration);
+    EXPECT_EQ(*o.replay_iteration, 12);
+    EXPECT_THROW(parse({"--replay", "-1"}), UsageError);
+    EXPECT_THROW(parse({"--replay", "x"}), UsageError);
+    EXPECT_THROW(parse({"--replay"}), UsageError);
+}
+
 TEST(StudioOptions, RejectsMistakesWithAUsageError) {
     EXPECT_THROW(parse({"--frames", "3"}), UsageError);  // without --screenshot
     EXPECT_THROW(parse({"--screenshot", "a.png", "--frames", "0"}), UsageError);
