@@ -18,10 +18,15 @@ double radical_inverse(std::uint64_t i, std::uint64_t base) {
 
 std::vector<glm::vec3> attraction_points(const Envelope& envelope, int count,
                                          PointDistribution distribution, std::uint64_t seed) {
+    return attraction_points(region(envelope), count, distribution, seed);
+}
+
+std::vector<glm::vec3> attraction_points(const Region& region, int count,
+                                         PointDistribution distribution, std::uint64_t seed) {
     std::vector<glm::vec3> points;
     if (count <= 0) return points;
     points.reserve(static_cast<size_t>(count));
-    const Box box = bounds(envelope);
+    const Box box = region.bounds;
     const glm::vec3 extent = box.max - box.min;
     Random random(seed);
     // Cranley-Patterson rotation: the seed shifts the sequence, so seeds differ while the
@@ -42,7 +47,7 @@ std::vector<glm::vec3> attraction_points(const Envelope& envelope, int count,
         const glm::vec3 p =
             box.min + extent * glm::vec3(static_cast<float>(u[0]), static_cast<float>(u[1]),
                                          static_cast<float>(u[2]));
-        if (inside(envelope, p)) points.push_back(p);
+        if (region.contains(p)) points.push_back(p);
     }
     return points;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "colonization/envelope.h"
+#include "core/region.h"
 
 namespace sylva {
 
@@ -20,6 +21,12 @@ enum class PointDistribution {
 // `count` points inside the envelope. Returns fewer only for an envelope so thin that
 // rejection sampling cannot find them (after 100 tries per point).
 std::vector<glm::vec3> attraction_points(const Envelope& envelope, int count,
+                                         PointDistribution distribution, std::uint64_t seed);
+
+// The same in any solid: candidates drawn in region.bounds, kept where region.contains
+// (another template's crown, an envelope minus an obstacle). An envelope's region gives
+// the points above, bit for bit.
+std::vector<glm::vec3> attraction_points(const Region& region, int count,
                                          PointDistribution distribution, std::uint64_t seed);
 
 }  // namespace sylva

@@ -1,11 +1,34 @@
 #include "colonization/colonization_growth.h"
 
+#include <cmath>
+#include <string>
+
 #include "colonization/branch_shaping.h"
 #include "core/errors.h"
 #include "core/stopwatch.h"
 
 namespace sylva {
 namespace {
+
+// Where the points go: the envelope (a simple solid or another template's crown) less the
+// obstacle.
+Region point_region(const TreeParams& p, const GrowthContext& context) {
+    Region region;
+    if (p.envelope == kEnvelopeTemplate) {
+        const std::string name(envelope_template_names()[static_cast<size_t>(p.envelope_template)]);
+        if (!context.template_crown)
+            throw InputError("envelope = template (the crown of '" + name +
+                             "') needs the template library: grow through tree/growth.h");
+        region = context.template_crown(name);
+    } else {
+        region = sylva::region(template_envelope(p));
+    }
+    const Obstacle obstacle = template_obstacle(p);
+    if (obstacle.shape == ObstacleShape::None) return region;
+    return {region.bounds, [envelope = std::move(region.contains), obstacle](const glm::vec3& q) {
+                return envelope(q) && !inside(obstacle, q);
+            }};
+}
 
 Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     const TreeParams& p = tree.params;
@@ -18,11 +41,17 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
         throw;
     }
     settings.cancel = context.cancel;
-    const std::vector<glm::vec3> points =
-        attraction_points(template_envelope(p), p.attraction_points,
-                          static_cast<PointDistribution>(p.point_distribution), p.seed);
+    Region region;
+    try {
+        region = point_region(p, context);
+    } catch (InputError& e) {
+        if (!tree.source.empty() && e.where().source.empty()) e.relocate(tree.source, 1);
+        throw;
+    }
+    const std::vector<glm::vec3> points = attraction_points(
+        region, p.attraction_points, static_cast<PointDistribution>(p.point_distribution), p.seed);
     if (context.times) context.times->push_back({"attraction points", clock.lap_ms()});
-    ColonizationGraph graph = colonize(points, glm::vec3(0.0f), settings);
+    ColonizationGraph graph = colonize(points, template_roots(p), settings);
     if (context.times) context.times->push_back({"colonize", clock.lap_ms()});
     draw_successors_together(graph, static_cast<float>(p.angle_smoothing));
     reduce_curves(graph, static_cast<float>(p.curve_reduction));
@@ -47,7 +76,29 @@ Envelope template_envelope(const TreeParams& p) {
                        static_cast<float>(p.envelope_size_z));
     e.base = glm::vec3(static_cast<float>(p.envelope_offset_x), static_cast<float>(p.envelope_base),
                        static_cast<float>(p.envelope_offset_z));
+    e.tilt = static_cast<float>(p.envelope_tilt);
     return e;
+}
+
+Obstacle template_obstacle(const TreeParams& p) {
+    Obstacle o;
+    o.shape = static_cast<ObstacleShape>(p.obstacle);
+    o.center = glm::vec3(static_cast<float>(p.obstacle_x), static_cast<float>(p.obstacle_y),
+                         static_cast<float>(p.obstacle_z));
+    o.size = glm::vec3(static_cast<float>(p.obstacle_size_x), static_cast<float>(p.obstacle_size_y),
+                       static_cast<float>(p.obstacle_size_z));
+    return o;
+}
+
+std::vector<glm::vec3> template_roots(const TreeParams& p) {
+    if (p.roots <= 1) return {glm::vec3(0.0f)};
+    std::vector<glm::vec3> roots;
+    for (int i = 0; i < p.roots; ++i) {
+        const double angle = 2.0 * 3.14159265358979323846 * i / p.roots;
+        roots.emplace_back(static_cast<float>(p.root_spread * std::cos(angle)), 0.0f,
+                           static_cast<float>(p.root_spread * std::sin(angle)));
+    }
+    return roots;
 }
 
 ColonizationSettings colonization_settings(const TreeParams& p) {
@@ -68,6 +119,8 @@ ColonizationSettings colonization_settings(const TreeParams& p) {
     s.max_depth = p.max_depth;
     s.max_no_grow = p.max_no_grow;
     s.weighted_growth = p.weighted_growth != 0;
+    if (const Obstacle obstacle = template_obstacle(p); obstacle.shape != ObstacleShape::None)
+        s.blocked = [obstacle](const glm::vec3& q) { return inside(obstacle, q); };
     return s;
 }
 

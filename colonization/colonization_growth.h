@@ -5,6 +5,7 @@
 
 #include "colonization/attraction_points.h"
 #include "colonization/envelope.h"
+#include "colonization/obstacle.h"
 #include "colonization/space_colonization.h"
 #include "core/growth.h"
 
@@ -12,9 +13,15 @@ namespace sylva {
 
 extern const GrowthMethod colonization_growth;
 
-// The envelope, the points' distribution and the algorithm's settings as the template's
+// The envelope, the obstacle, the roots and the algorithm's settings as the template's
 // parameters set them. Throws InputError when kill_distance exceeds influence_radius.
+// template_envelope is the simple solid (envelope = "template" is resolved in grow, which
+// asks GrowthContext::template_crown for it).
 Envelope template_envelope(const TreeParams& params);
+Obstacle template_obstacle(const TreeParams& params);
+// `roots` points on a circle of radius root_spread on the ground (y = 0), the first on +x;
+// one root stands at the origin.
+std::vector<glm::vec3> template_roots(const TreeParams& params);
 ColonizationSettings colonization_settings(const TreeParams& params);
 
 }  // namespace sylva

@@ -1,6 +1,8 @@
 #include "colonization/envelope.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
 
 namespace sylva {
 namespace {
@@ -11,9 +13,30 @@ glm::vec3 extents(const Envelope& envelope) {
     return glm::vec3(d);
 }
 
-}  // namespace
+struct Turn {
+    float cos, sin;
+};
 
-bool inside(const Envelope& envelope, const glm::vec3& p) {
+Turn turn(const Envelope& envelope) {
+    const float radians = envelope.tilt * 0.017453292519943295f;
+    return {std::cos(radians), std::sin(radians)};
+}
+
+// Positive tilt turns the up axis to (sin, cos, 0): the top leans towards +x.
+glm::vec3 tilted(const Envelope& envelope, const glm::vec3& p) {
+    const Turn t = turn(envelope);
+    const glm::vec3 q = p - envelope.base;
+    return envelope.base + glm::vec3(q.x * t.cos + q.y * t.sin, q.y * t.cos - q.x * t.sin, q.z);
+}
+
+// The inverse: a point in the upright envelope's frame.
+glm::vec3 untilted(const Envelope& envelope, const glm::vec3& p) {
+    const Turn t = turn(envelope);
+    const glm::vec3 q = p - envelope.base;
+    return envelope.base + glm::vec3(q.x * t.cos - q.y * t.sin, q.x * t.sin + q.y * t.cos, q.z);
+}
+
+bool upright_inside(const Envelope& envelope, const glm::vec3& p) {
     const glm::vec3 size = extents(envelope);
     const glm::vec3 half = 0.5f * size;
     // Local coordinates: x and z relative to the axis, y from the bottom, all in [-1, 1]
@@ -43,10 +66,37 @@ bool inside(const Envelope& envelope, const glm::vec3& p) {
     return false;
 }
 
-Box bounds(const Envelope& envelope) {
+Box upright_bounds(const Envelope& envelope) {
     const glm::vec3 size = extents(envelope);
     const glm::vec3 half(0.5f * size.x, 0.0f, 0.5f * size.z);
     return {envelope.base - half, envelope.base + half + glm::vec3(0.0f, size.y, 0.0f)};
+}
+
+}  // namespace
+
+bool inside(const Envelope& envelope, const glm::vec3& p) {
+    // An upright envelope skips the turn, so its points stay bit for bit what they were.
+    return upright_inside(envelope, envelope.tilt == 0.0f ? p : untilted(envelope, p));
+}
+
+Box bounds(const Envelope& envelope) {
+    const Box upright = upright_bounds(envelope);
+    if (envelope.tilt == 0.0f) return upright;
+    // The box around the upright box's corners, tilted.
+    Box box{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 c((corner & 1) ? upright.max.x : upright.min.x,
+                          (corner & 2) ? upright.max.y : upright.min.y,
+                          (corner & 4) ? upright.max.z : upright.min.z);
+        const glm::vec3 w = tilted(envelope, c);
+        box.min = glm::min(box.min, w);
+        box.max = glm::max(box.max, w);
+    }
+    return box;
+}
+
+Region region(const Envelope& envelope) {
+    return {bounds(envelope), [envelope](const glm::vec3& p) { return inside(envelope, p); }};
 }
 
 }  // namespace sylva

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/box.h"
+#include "core/region.h"
 
 namespace sylva {
 
@@ -18,6 +19,9 @@ struct Envelope {
     glm::vec3 size{6.0f, 5.0f, 6.0f};
     // The centre of the solid's bottom: the envelope stands on this point.
     glm::vec3 base{0.0f, 2.5f, 0.0f};
+    // Degrees about the Z axis through `base`: the solid leans, positive tilts its top
+    // towards +x (a wind-swept crown). 0 leaves the solid upright.
+    float tilt = 0.0f;
 };
 
 // True when p lies inside the envelope (boundary included).
@@ -25,5 +29,8 @@ bool inside(const Envelope& envelope, const glm::vec3& p);
 
 // The axis-aligned box the envelope fills.
 Box bounds(const Envelope& envelope);
+
+// The envelope as a plain solid, for code that takes any shape (attraction_points).
+Region region(const Envelope& envelope);
 
 }  // namespace sylva

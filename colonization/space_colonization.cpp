@@ -16,8 +16,12 @@ float distance2(const glm::vec3& a, const glm::vec3& b) {
     return glm::dot(d, d);
 }
 
-Box padded_bounds(std::span<const glm::vec3> points, const glm::vec3& root, float pad) {
-    Box box{root, root};
+Box padded_bounds(std::span<const glm::vec3> points, std::span<const glm::vec3> roots, float pad) {
+    Box box{roots[0], roots[0]};
+    for (const glm::vec3& p : roots) {
+        box.min = glm::min(box.min, p);
+        box.max = glm::max(box.max, p);
+    }
     for (const glm::vec3& p : points) {
         box.min = glm::min(box.min, p);
         box.max = glm::max(box.max, p);
@@ -30,7 +34,7 @@ Box padded_bounds(std::span<const glm::vec3> points, const glm::vec3& root, floa
 // attracting, so an iteration costs what changed, not points x nodes.
 class Colonizer {
   public:
-    Colonizer(std::span<const glm::vec3> points, const glm::vec3& root,
+    Colonizer(std::span<const glm::vec3> points, std::span<const glm::vec3> roots,
               const ColonizationSettings& settings)
         : s_(settings),
           points_(points.begin(), points.end()),
@@ -41,14 +45,15 @@ class Colonizer {
           di2_(settings.influence_radius * settings.influence_radius),
           dk2_(settings.kill_distance * settings.kill_distance),
           // Points are many and dense: half-d_i cells visit less of them per query.
-          point_grid_(padded_bounds(points, root, settings.influence_radius),
+          point_grid_(padded_bounds(points, roots, settings.influence_radius),
                       0.5f * settings.influence_radius),
-          node_grid_(padded_bounds(points, root, settings.influence_radius),
+          node_grid_(padded_bounds(points, roots, settings.influence_radius),
                      settings.influence_radius) {
         assert(settings.kill_distance > 0.0f && settings.step_size > 0.0f);
         for (size_t i = 0; i < points_.size(); ++i)
             point_grid_.insert(static_cast<int>(i), points_[i]);
-        add_node(root, -1, 0);
+        for (const glm::vec3& root : roots) add_node(root, -1, 0);
+        roots_ = static_cast<int>(roots.size());
     }
 
     ColonizationGraph run() {
@@ -124,19 +129,23 @@ class Colonizer {
         return found;
     }
 
-    // Straight up from the root until the crown's points are in reach.
+    // Straight up from each root until the crown's points are in reach (or an obstacle).
     void grow_trunk() {
-        float top = nodes_[0].position.y;
-        for (const glm::vec3& p : points_) top = std::max(top, p.y);
-        const float root_y = nodes_[0].position.y;
-        int tip = 0;
-        for (;;) {
-            throw_if_cancelled(s_.cancel);
-            const glm::vec3 at = nodes_[static_cast<size_t>(tip)].position;
-            const bool tall_enough = at.y - root_y >= s_.trunk_height - 1e-6f;
-            if (tall_enough && (point_within(at, s_.influence_radius) || at.y >= top)) break;
-            add_node(at + glm::vec3(0.0f, step(0), 0.0f), tip, 0);
-            tip = static_cast<int>(nodes_.size()) - 1;
+        for (int root = 0; root < roots_; ++root) {
+            float top = nodes_[static_cast<size_t>(root)].position.y;
+            for (const glm::vec3& p : points_) top = std::max(top, p.y);
+            const float root_y = nodes_[static_cast<size_t>(root)].position.y;
+            int tip = root;
+            for (;;) {
+                throw_if_cancelled(s_.cancel);
+                const glm::vec3 at = nodes_[static_cast<size_t>(tip)].position;
+                const bool tall_enough = at.y - root_y >= s_.trunk_height - 1e-6f;
+                if (tall_enough && (point_within(at, s_.influence_radius) || at.y >= top)) break;
+                const glm::vec3 next = at + glm::vec3(0.0f, step(0), 0.0f);
+                if (s_.blocked && s_.blocked(next)) break;
+                add_node(next, tip, 0);
+                tip = static_cast<int>(nodes_.size()) - 1;
+            }
         }
     }
 
@@ -187,6 +196,7 @@ class Colonizer {
             const float length = glm::length(direction);
             if (length < 1e-6f) continue;
             const glm::vec3 p = node.position + direction * (step(node.depth) / length);
+            if (s_.blocked && s_.blocked(p)) continue;
             if (crowded(p)) {
                 ++oscillations_;
                 continue;
@@ -263,13 +273,20 @@ class Colonizer {
     std::vector<char> grew_;
     int oscillations_ = 0;
     int iteration_ = 0;  // 0 while the trunk grows
+    int roots_ = 0;      // nodes_[0, roots_) are the roots
 };
 
 }  // namespace
 
 ColonizationGraph colonize(std::span<const glm::vec3> points, const glm::vec3& root,
                            const ColonizationSettings& settings) {
-    return Colonizer(points, root, settings).run();
+    return colonize(points, std::span<const glm::vec3>(&root, 1), settings);
+}
+
+ColonizationGraph colonize(std::span<const glm::vec3> points, std::span<const glm::vec3> roots,
+                           const ColonizationSettings& settings) {
+    assert(!roots.empty());
+    return Colonizer(points, roots, settings).run();
 }
 
 }  // namespace sylva

@@ -3,6 +3,7 @@
 // within the kill distance. Works on plain settings and points, knows no template.
 #pragma once
 
+#include <functional>
 #include <glm/vec3.hpp>
 #include <span>
 #include <vector>
@@ -32,12 +33,15 @@ struct ColonizationSettings {
     // max_depth is 0), linear in between.
     bool weighted_growth = false;
     NearestSearch search = NearestSearch::Grid;
+    // Obstacles: no node grows where this is true (a trunk stops below it, a branch's
+    // growth into it is refused). Empty: nothing is blocked. Place no points there either.
+    std::function<bool(const glm::vec3&)> blocked = nullptr;
     CancelFlag cancel = nullptr;  // polled every iteration; throws Cancelled
 };
 
 struct ColonizationNode {
     glm::vec3 position{0.0f};
-    int parent = -1;     // -1 for the root; parents always precede their children
+    int parent = -1;     // -1 for a root; parents always precede their children
     int depth = 0;       // branch depth Z (eq. 3.5), fixed when the node is made
     int successors = 0;  // number of children
     int no_grow = 0;     // iterations in a row without a new successor (NG counter)
@@ -48,7 +52,7 @@ struct ColonizationNode {
 enum class ColonizationStop { NoPointsLeft, NothingGrew, MaxIterations };
 
 struct ColonizationGraph {
-    std::vector<ColonizationNode> nodes;  // nodes[0] is the root
+    std::vector<ColonizationNode> nodes;  // the roots first, in the order given
     std::vector<glm::vec3> remaining;     // attraction points still alive at the end
     int iterations = 0;
     // Growth refused because the new node would fall back onto the tree (within D/2 of
@@ -60,6 +64,11 @@ struct ColonizationGraph {
 // Grows a tree from `root` towards `points`. Throws Cancelled when the flag is set.
 // Precondition: 0 < kill_distance, 0 < step_size, kill_distance <= influence_radius.
 ColonizationGraph colonize(std::span<const glm::vec3> points, const glm::vec3& root,
+                           const ColonizationSettings& settings);
+
+// A forest: one tree from each root (each grows its trunk in turn, then all compete for
+// the same points). Precondition: roots is not empty, plus the above.
+ColonizationGraph colonize(std::span<const glm::vec3> points, std::span<const glm::vec3> roots,
                            const ColonizationSettings& settings);
 
 }  // namespace sylva

@@ -4,11 +4,13 @@
 // and is registered with one line in tree/growth.cpp.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/cancel.h"
+#include "core/region.h"
 #include "core/skeleton.h"
 #include "core/tree_template.h"
 
@@ -23,6 +25,12 @@ struct StageTime {
 struct GrowthContext {
     CancelFlag cancel = nullptr;              // polled between steps; throws Cancelled
     std::vector<StageTime>* times = nullptr;  // when set, each method appends its stages
+    // The crown of the built-in template of that name, as a solid (inside where the
+    // pipeline's crown field is negative), for a method that fills another template's crown
+    // (colonization's envelope = "template"). tree/growth.h's grow() sets it, since only
+    // tree/ knows templates and the pipeline; a method called without it throws InputError
+    // when it needs one. Throws InputError for an unknown name or a template without crown.
+    std::function<Region(std::string_view template_name)> template_crown = nullptr;
 };
 
 struct GrowthMethod {

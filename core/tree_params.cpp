@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 #include "core/errors.h"
@@ -18,7 +19,12 @@ struct Field {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
-constexpr std::string_view kEnvelopes[] = {"sphere", "ellipsoid", "cone", "cylinder", "hemisphere"};
+constexpr std::string_view kEnvelopes[] = {"sphere",   "ellipsoid",  "cone",
+                                           "cylinder", "hemisphere", "template"};
+constexpr std::string_view kEnvelopeTemplates[] = {
+    "oak",     "spruce", "fir",  "palm", "birch", "willow", "pine",     "baobab",
+    "cypress", "honda",  "bush", "elm",  "maple", "hedge",  "windswept"};
+constexpr std::string_view kObstacles[] = {"none", "sphere", "box"};
 constexpr std::string_view kPointDistributions[] = {"uniform", "halton"};
 
 Field real(std::string_view key, std::string_view help, double min, double max,
@@ -135,11 +141,17 @@ const std::vector<Field>& fields() {
         whole("max_iterations", "colonization: iterations before growth stops", 1, 100000,
               &TreeParams::max_iterations),
         {{"envelope",
-          "colonization: the crown's shape: sphere, ellipsoid, cone, cylinder or "
-          "hemisphere",
-          0, 4, true, kEnvelopes},
+          "colonization: the crown's shape: sphere, ellipsoid, cone, cylinder, hemisphere, or "
+          "template (the crown of envelope_template)",
+          0, 5, true, kEnvelopes},
          nullptr,
          &TreeParams::envelope},
+        {{"envelope_template",
+          "colonization: with envelope = template, the built-in template whose crown is the "
+          "envelope",
+          0, std::size(kEnvelopeTemplates) - 1.0, true, kEnvelopeTemplates},
+         nullptr,
+         &TreeParams::envelope_template},
         real("envelope_size_x", "colonization: the envelope's width (x), meters", 0.01, 100,
              &TreeParams::envelope_size_x),
         real("envelope_size_y", "colonization: the envelope's height (y), meters", 0.01, 100,
@@ -152,6 +164,32 @@ const std::vector<Field>& fields() {
              -50, 50, &TreeParams::envelope_offset_x),
         real("envelope_offset_z", "colonization: the envelope moved off the root along z, meters",
              -50, 50, &TreeParams::envelope_offset_z),
+        real("envelope_tilt",
+             "colonization: the envelope leans by this many degrees about Z (positive: top "
+             "towards +x)",
+             -90, 90, &TreeParams::envelope_tilt),
+        {{"obstacle",
+          "colonization: none, sphere or box: a solid with no attraction points that no branch "
+          "grows into",
+          0, 2, true, kObstacles},
+         nullptr,
+         &TreeParams::obstacle},
+        real("obstacle_x", "colonization: the obstacle's centre, x, meters", -50, 50,
+             &TreeParams::obstacle_x),
+        real("obstacle_y", "colonization: the obstacle's centre, y (height), meters", -50, 100,
+             &TreeParams::obstacle_y),
+        real("obstacle_z", "colonization: the obstacle's centre, z, meters", -50, 50,
+             &TreeParams::obstacle_z),
+        real("obstacle_size_x", "colonization: the obstacle's width (x), meters", 0.01, 100,
+             &TreeParams::obstacle_size_x),
+        real("obstacle_size_y", "colonization: the obstacle's height (y), meters", 0.01, 100,
+             &TreeParams::obstacle_size_y),
+        real("obstacle_size_z", "colonization: the obstacle's depth (z), meters", 0.01, 100,
+             &TreeParams::obstacle_size_z),
+        whole("roots", "colonization: trees grown from a circle of roots, sharing the points", 1,
+              64, &TreeParams::roots),
+        real("root_spread", "colonization: radius of the circle of roots, meters", 0, 50,
+             &TreeParams::root_spread),
         {{"point_distribution",
           "colonization: attraction points uniform (random) or halton (low discrepancy)", 0, 1,
           true, kPointDistributions},
@@ -205,6 +243,10 @@ std::string range_text(const ParamInfo& info) {
 }
 
 }  // namespace
+
+std::span<const std::string_view> envelope_template_names() {
+    return kEnvelopeTemplates;
+}
 
 const std::vector<ParamInfo>& param_infos() {
     static const std::vector<ParamInfo> infos = [] {

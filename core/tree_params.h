@@ -49,6 +49,18 @@ struct TreeParams {
     double envelope_base = 2.5;      // height of the envelope's bottom
     double envelope_offset_x = 0.0;  // the envelope's axis moved off the root, meters
     double envelope_offset_z = 0.0;
+    int envelope_template = 0;   // envelope = "template": the built-in template whose
+                                 // crown is the envelope (kEnvelopeTemplates' index)
+    double envelope_tilt = 0.0;  // degrees about Z; positive leans the top towards +x
+    int obstacle = 0;            // ObstacleShape: none, sphere or box
+    double obstacle_x = 0.0;     // the obstacle's centre, meters
+    double obstacle_y = 0.0;
+    double obstacle_z = 0.0;
+    double obstacle_size_x = 1.0;  // its full extents, meters
+    double obstacle_size_y = 1.0;
+    double obstacle_size_z = 1.0;
+    int roots = 1;                  // trees grown from a circle of roots, sharing the points
+    double root_spread = 0.5;       // radius of that circle, meters (ignored for one root)
     int point_distribution = 0;     // PointDistribution: uniform or halton
     double trunk_height = 2.0;      // the trunk grows at least this high first
     double tropism_vector_x = 0.0;  // T, added to each growth direction (eq. 3.2)
@@ -67,6 +79,14 @@ struct TreeParams {
 enum class CrownBlend { Root = 0, Pasko = 1 };
 // Choices of the `leaf_shape` parameter.
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
+
+// Choices of the `envelope_template` parameter: the built-in templates (by name) whose
+// crown a colonization envelope can be. Core cannot ask the template library, so the names
+// are listed here; tests/tree checks each is a built-in template.
+std::span<const std::string_view> envelope_template_names();
+// The `envelope` choice that takes the crown of `envelope_template`; lower values are the
+// simple solids (colonization/envelope.h's EnvelopeShape).
+constexpr int kEnvelopeTemplate = 5;
 
 // One parameter's key, meaning and valid range, for --set, sliders and validation.
 struct ParamInfo {

@@ -2,6 +2,7 @@
 
 #include "colonization/colonization_growth.h"
 #include "core/errors.h"
+#include "tree/template_crown.h"
 #include "turtle/lsystem_growth.h"
 
 namespace sylva {
@@ -34,7 +35,12 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
         throw InputError("unknown growth method '" + tree.growth + "' (known: " + known + ")",
                          {tree.source});
     }
-    return method->grow(tree, context);
+    if (context.template_crown) return method->grow(tree, context);
+    GrowthContext with_crowns = context;
+    with_crowns.template_crown = [cancel = context.cancel](std::string_view name) {
+        return template_crown(name, cancel);
+    };
+    return method->grow(tree, with_crowns);
 }
 
 }  // namespace sylva

@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "tree/growth.h"
 #include "tree/pipeline.h"
+#include "tree/template_crown.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 
@@ -52,6 +53,33 @@ TEST(Growth, ColonizationTemplatesNeedNoGrammarAndGrowOneTree) {
     TreeTemplate bad = t;
     bad.params.kill_distance = bad.params.influence_radius + 1.0;
     EXPECT_THROW(grow(bad, {}), InputError);
+}
+
+TEST(Growth, EveryEnvelopeTemplateIsABuiltInTemplate) {
+    for (std::string_view name : envelope_template_names())
+        EXPECT_NO_THROW(load_template(std::string(name))) << name;
+}
+
+TEST(Growth, AColonizationCrownCanFillAnotherTemplatesCrown) {
+    // The oak's crown as the pipeline builds it: the envelope's inside is field < 0.
+    const TreeTemplate oak = load_template("oak");
+    const TreeFields fields = tree_fields(grow(oak), oak.params);
+    ASSERT_TRUE(fields.crown);
+    const Region crown = template_crown("oak");
+    EXPECT_EQ(crown.bounds.min, fields.crown_box.min);
+    EXPECT_EQ(crown.bounds.max, fields.crown_box.max);
+    const TreeTemplate t = parse_template_file(
+        "name = \"in-oak\"\ngrowth = \"colonization\"\n[params]\nenvelope = \"template\"\n"
+        "envelope_template = \"oak\"\nattraction_points = 1500\ntrunk_height = 1.0\n",
+        "in-oak.toml");
+    const Skeleton s = grow(t);
+    EXPECT_GT(tips(s).size(), 20u);
+    // The new tree's tips lie in or near the oak's crown (a kill distance away at most).
+    int near = 0;
+    for (int tip : tips(s)) near += (*fields.crown)(s.segments[size_t(tip)].b) < 0.5f;
+    EXPECT_GT(near, int(tips(s).size() * 9 / 10));
+    for (size_t i = 0; i < s.segments.size(); ++i) EXPECT_LT(s.segments[i].parent, int(i));
+    EXPECT_THROW(template_crown("no such tree"), InputError);
 }
 
 TEST(Growth, AnUnknownMethodNamesTheKnownOnes) {
