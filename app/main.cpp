@@ -16,6 +16,7 @@
 #include "export/skeleton_json.h"
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
+#include "tree/cost.h"
 #include "tree/growth.h"
 #include "tree/leaf_thinning.h"
 #include "tree/pipeline.h"
@@ -67,6 +68,11 @@ Usage:
   --fidelity       also report the distance of the reduced trunk + crown to the
                    resolution-200 surface, in percent of the tree's height
   -o PATH          output file; written to a temporary file, then renamed
+  --max-memory MB, --max-seconds S
+                   the cost is estimated before any work starts (word, segments, grid
+                   cells, memory, time on two cores); export, skeleton and derive refuse
+                   (exit 3, naming the estimate) a tree estimated above 2000 MB or 10 s
+                   unless these limits are raised
 
 Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 
@@ -90,6 +96,7 @@ struct Options {
     bool fidelity = false;
     const ExportFormat* format = nullptr;
     ExportOptions export_options;
+    CostLimits limits;
 };
 
 template <class T>
@@ -161,6 +168,11 @@ Options parse_options(int argc, char** argv) {
             o.export_options.shading = name == "flat" ? Shading::Flat : Shading::Smooth;
         } else if (arg == "--ply-ascii") {
             o.export_options.ply_binary = false;
+        } else if (arg == "--max-memory") {
+            o.limits.max_bytes =
+                1e6 * static_cast<double>(parse_integer<std::uint64_t>(arg, value()));
+        } else if (arg == "--max-seconds") {
+            o.limits.max_seconds = static_cast<double>(parse_integer<std::uint64_t>(arg, value()));
         } else if (arg == "-o" || arg == "--output") {
             o.output = value();
         } else {
@@ -177,6 +189,8 @@ TreeTemplate configured_template(const Options& o) {
     if (o.steps) tree.params.generations = *o.steps;
     return tree;
 }
+
+constexpr const char* kRaiseLimits = "raise the limits with --max-memory MB / --max-seconds S";
 
 void print_help(std::FILE* to) {
     std::fputs(kHelp, to);
@@ -213,6 +227,7 @@ int run_export(const Options& o) {
     finish.lod = o.lod;
     MeshOptions mesh = o.mesh;
     mesh.budget = game_budget(finish);
+    check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
 
     Stopwatch clock;
@@ -259,6 +274,7 @@ int run_derive(const Options& o) {
     if (tree.growth != lsystem_growth.name)
         throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
                          tree.growth);
+    check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     std::string text = derive_word(tree).to_string();
     text.push_back('\n');
     std::fwrite(text.data(), 1, text.size(), stdout);
@@ -268,6 +284,7 @@ int run_derive(const Options& o) {
 int run_skeleton(const Options& o) {
     if (o.output.empty()) throw UsageError("skeleton needs -o skeleton.json");
     TreeTemplate tree = configured_template(o);
+    check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     Skeleton skeleton = grow(tree);
     write_skeleton_json(o.output, skeleton, tree.params);
     std::printf("wrote %s: %zu segments, %zu tips\n", o.output.c_str(), skeleton.segments.size(),

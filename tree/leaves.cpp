@@ -1,6 +1,8 @@
 #include "tree/leaves.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <numbers>
@@ -80,7 +82,18 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
     // at most max_leaves cells keeps the count below the cap.
     double cell_volume = std::max(1.0 / settings.density, volume / double(settings.max_leaves));
     float spacing = static_cast<float>(std::cbrt(cell_volume));
-    glm::ivec3 cells = glm::max(glm::ivec3(glm::ceil(extent / spacing)), glm::ivec3(1));
+    // Rounding up, and the one-cell minimum of a flat or needle-thin box, can multiply the
+    // count far past the cap (a box 1e10 m long and 0.1 m wide): widen the spacing until the
+    // grid itself has at most max_leaves cells.
+    const double max_cells = double(std::max<std::size_t>(settings.max_leaves, 1));
+    glm::vec3 cells_f;
+    for (;;) {
+        cells_f = glm::max(glm::ceil(extent / spacing), glm::vec3(1.0f));
+        const double count = double(cells_f.x) * cells_f.y * cells_f.z;
+        if (count <= max_cells) break;
+        spacing *= static_cast<float>(std::max(1.01, std::cbrt(count / max_cells)));
+    }
+    const glm::ivec3 cells(cells_f);
 
     Random random(settings.seed ^ 0x1eaf5eedULL);
     const std::vector<glm::vec2>& outline = leaf_outline(settings.shape);

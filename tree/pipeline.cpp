@@ -1,11 +1,13 @@
 #include "tree/pipeline.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <set>
 
 #include "core/errors.h"
 #include "core/stopwatch.h"
@@ -32,7 +34,9 @@ std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
     for (const Segment& s : skeleton.segments)
         if (std::max(s.ra, s.rb) > 0.0f)
             cones.push_back({s.a, s.b, std::max(s.ra, min_radius), std::max(s.rb, min_radius)});
-    return cones;
+    // Copies of one segment (brackets that redraw it) add nothing the grid can show but cost
+    // every sample near them a visit each; a 64th of a cell is far below what it resolves.
+    return merge_coincident_cones(std::move(cones), cell / 64.0f);
 }
 
 // The culled fields are exact within this many cells of the surface (all marching cubes
@@ -181,10 +185,15 @@ int crown_resolution_for_budget(int resolution, std::size_t budget) {
 
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {
     std::vector<Ball> out;
+    // Tips that end at the same point (brackets that redraw a branch) give one sphere: the
+    // copies would add nothing but a visit each at every sample near them.
+    std::set<std::array<float, 3>> seen;
     for (int tip : tips(skeleton)) {
         const Segment& s = skeleton.segments[static_cast<size_t>(tip)];
-        out.push_back({s.b + glm::vec3(0.0f, static_cast<float>(params.crown_offset), 0.0f),
-                       static_cast<float>(params.sphere_diameter * 0.5)});
+        const glm::vec3 centre =
+            s.b + glm::vec3(0.0f, static_cast<float>(params.crown_offset), 0.0f);
+        if (!seen.insert({centre.x, centre.y, centre.z}).second) continue;
+        out.push_back({centre, static_cast<float>(params.sphere_diameter * 0.5)});
     }
     return out;
 }

@@ -1,6 +1,9 @@
 #include "turtle/derivation.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -191,6 +194,14 @@ class Deriver {
     std::vector<std::pair<const Rule*, std::vector<double>>> weighted_;
 };
 
+// 1234567 as "1234567", 3.2e+40 as "3.2e+40".
+std::string format_count(double n) {
+    if (n < 1e15) return std::to_string(static_cast<long long>(n));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", n);
+    return text;
+}
+
 }  // namespace
 
 Word axiom_word(const LSystem& system, Random& random) {
@@ -211,8 +222,88 @@ Word axiom_word(const LSystem& system, Random& random) {
     return word;
 }
 
+WordGrowth word_growth(const LSystem& system, int steps, double module_limit) {
+    // A module is (symbol, arity): a rule matches only its own arity.
+    using Kind = std::pair<char, int>;
+    using Counts = std::map<Kind, double>;
+    static constexpr double kSaturate = 1e300;
+    // Each kind's alternatives: the successor counts of every rule that could rewrite it.
+    std::map<Kind, std::vector<Counts>> alternatives;
+    auto alternatives_of = [&](const Kind& kind) -> const std::vector<Counts>& {
+        auto found = alternatives.find(kind);
+        if (found != alternatives.end()) return found->second;
+        std::vector<Counts> options;
+        bool certain = false;  // some rule always applies, so the module never stays
+        for (const Rule& rule : system.rules) {
+            if (rule.predecessor.symbol != kind.first || rule.predecessor.arity != kind.second)
+                continue;
+            Counts made;
+            for (const ModuleProduction& m : rule.successor)
+                made[{m.symbol, static_cast<int>(m.args.size())}] += 1.0;
+            options.push_back(std::move(made));
+            const bool always = !rule.condition && rule.left.empty() && rule.right.empty();
+            if (always) certain = true;
+            if (always && !rule.weight) break;  // ends the search (derive's rewrite)
+        }
+        if (!certain) options.push_back({{kind, 1.0}});
+        return alternatives.emplace(kind, std::move(options)).first->second;
+    };
+    Counts low, high;
+    for (const ModuleProduction& m : system.axiom) {
+        low[{m.symbol, static_cast<int>(m.args.size())}] += 1.0;
+        high[{m.symbol, static_cast<int>(m.args.size())}] += 1.0;
+    }
+    auto total = [](const Counts& c) {
+        double sum = 0;
+        for (const auto& [kind, n] : c) sum += n;
+        return std::min(sum, kSaturate);
+    };
+    WordGrowth growth;
+    // Pushes `counts` one step: per kind, the componentwise min (or max) over its options.
+    auto step = [&](const Counts& counts, bool take_max) {
+        Counts next;
+        for (const auto& [kind, n] : counts) {
+            const std::vector<Counts>& options = alternatives_of(kind);
+            Counts pick = options.front();
+            for (const Counts& o : options) {
+                for (auto& [k, v] : pick) {
+                    auto it = o.find(k);
+                    const double w = it == o.end() ? 0.0 : it->second;
+                    v = take_max ? std::max(v, w) : std::min(v, w);
+                }
+                if (take_max)
+                    for (const auto& [k, w] : o) pick[k] = std::max(pick[k], w);
+            }
+            for (const auto& [k, v] : pick)
+                if (v > 0) next[k] = std::min(next[k] + n * v, kSaturate);
+        }
+        return next;
+    };
+    for (int s = 1; s <= steps; ++s) {
+        low = step(low, false);
+        high = step(high, true);
+        if (growth.first_step_over < 0 && total(low) > module_limit) growth.first_step_over = s;
+        if (total(low) >= kSaturate && total(high) >= kSaturate) break;
+    }
+    growth.low_modules = total(low);
+    growth.high_modules = total(high);
+    for (const auto& [kind, n] : low)
+        if (kind.first == 'F') growth.low_segments += n;
+    for (const auto& [kind, n] : high)
+        if (kind.first == 'F') growth.high_segments += n;
+    return growth;
+}
+
 Word derive(const LSystem& system, const DeriveSettings& settings) {
     if (settings.steps < 0) throw GrammarError("the number of derivation steps is negative");
+    const WordGrowth growth =
+        word_growth(system, settings.steps, static_cast<double>(settings.max_modules));
+    if (growth.first_step_over > 0)
+        throw GrammarError("derivation step " + std::to_string(growth.first_step_over) +
+                           ": the word would grow past " + std::to_string(settings.max_modules) +
+                           " modules (estimated " + format_count(growth.low_modules) + " after " +
+                           std::to_string(settings.steps) +
+                           " steps); lower the number of steps or raise the limit");
     return Deriver(system, settings).run();
 }
 

@@ -20,11 +20,25 @@ struct DeriveSettings {
     CancelFlag cancel = nullptr;  // checked between steps; throws Cancelled
 };
 
+// How big the word gets, known before deriving: symbol counts pushed through the rules
+// `steps` times, no expression evaluated. `low` lets every module become the fewest modules
+// any rule that could apply to it makes, `high` the most (a rule with a condition or a
+// context may not apply, so the module staying as it is competes; stochastic rules compete
+// with each other). Exact (low == high) for deterministic rules without conditions or
+// contexts, such as F -> FF. Counts saturate at 1e300.
+struct WordGrowth {
+    double low_modules = 0, high_modules = 0;
+    double low_segments = 0, high_segments = 0;  // modules F (each draws a segment)
+    int first_step_over = -1;  // the first step whose `low_modules` exceeds the limit asked
+};
+WordGrowth word_growth(const LSystem& system, int steps, double module_limit = 1e300);
+
 // The axiom as a word (its expressions evaluated; rand() draws from `random`).
 Word axiom_word(const LSystem& system, Random& random);
 
 // Throws GrammarError on evaluation errors (naming the rule's line) or when the word
-// exceeds max_modules (naming the step and the size).
+// exceeds max_modules (naming the step and the size); a word that word_growth() proves will
+// exceed it is refused before the first step.
 Word derive(const LSystem& system, const DeriveSettings& settings);
 
 }  // namespace sylva

@@ -297,7 +297,11 @@ class Parser {
         if (trim(line.text.substr(begin, end - begin)).empty())
             line.fail("empty parameter list", begin);
         size_t a = begin;
-        for (;;) {
+        for (int count = 1;; ++count) {
+            if (count > kMaxModuleParameters)
+                line.fail("a module has more than " + std::to_string(kMaxModuleParameters) +
+                              " parameters",
+                          a);
             size_t comma = line.find_top_level(",", a, end);
             size_t b = comma == std::string_view::npos ? end : comma;
             if (trim(line.text.substr(a, b - a)).empty()) line.fail("missing parameter", a);

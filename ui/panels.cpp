@@ -204,6 +204,16 @@ void parameter_section(StudioState& state) {
     }
 }
 
+// A generation held back by its estimated cost, and the button that runs it anyway.
+void cost_notice(StudioState& state) {
+    if (state.cost_warning.empty()) return;
+    wrapped_text(state.cost_warning, true);
+    if (ImGui::Button("run anyway")) {
+        state.run_costly = true;
+        start_generation(state);
+    }
+}
+
 void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     section("Rules");
     if (grows_by_colonization(state.tree_template)) {
@@ -217,6 +227,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
         wrapped_text(state.error, true);
         if (!state.error.empty())
             ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+        cost_notice(state);
         return;
     }
     const TextMark mark{state.error_line, state.error_column};
@@ -230,6 +241,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     wrapped_text(state.error, true);
     if (!state.error.empty())
         ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    cost_notice(state);
 }
 
 // One level's totals against its budget; over budget in the warning colour, with the

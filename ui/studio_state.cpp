@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "export/export_tree.h"
 #include "marching/marching_cubes.h"
+#include "tree/cost.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 
@@ -237,6 +238,16 @@ void start_generation(StudioState& state) {
     state.requested = state.tree_template;
     state.requested_budget = budget;
     state.requested_draft = draft;
+    // A job the estimate puts over the limits (resolution 1500 took 68 s) waits for "run
+    // anyway"; the tree on screen stays.
+    const Cost cost = estimate_cost(state.tree_template, budget);
+    if (!within(cost, CostLimits{}) && !state.run_costly) {
+        state.cost_warning = "Not started: estimated " + cost_text(cost) +
+                             ", over the 2 GB / 10 s a job may take unasked.";
+        return;
+    }
+    state.run_costly = false;
+    state.cost_warning.clear();
     // Cancelling each step of a drag would show nothing while the slider moves: the drag's
     // job runs to its end and the newest value follows it (poll_jobs starts it).
     if (state.dragging && state.job && state.job->during_drag) {

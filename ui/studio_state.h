@@ -134,6 +134,11 @@ struct StudioState {
     std::string error;
     int error_line = 0, error_column = 0;
 
+    // An edit estimated over the cost limits (tree/cost.h) does not start a generation: the
+    // estimate is shown, and "run anyway" sets run_costly and starts it once.
+    std::string cost_warning;  // empty: nothing held back
+    bool run_costly = false;
+
     // Undo history: whole templates, so picking another template can be undone too.
     std::vector<TreeTemplate> undo, redo;
     TreeTemplate committed;  // the edit undo would step back from

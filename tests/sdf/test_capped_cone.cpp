@@ -82,4 +82,17 @@ TEST(ConeField, BatchEvaluationEqualsPointWise) {
 }
 
 }  // namespace
+// Issue 16, item 5: F -> [F][F][F][F] draws thousands of copies of one segment; the field
+// keeps one, so a sample visits one cone, not thousands.
+TEST(ConeField, CoincidentCopiesAreMergedIntoOneCone) {
+    std::vector<CappedCone> cones(4096, CappedCone{{0, 0, 0}, {0, 1, 0}, 0.05f, 0.04f});
+    cones.push_back({{0, 1, 0}, {0, 0, 0}, 0.06f, 0.01f});  // the same segment, drawn back
+    cones.push_back({{0, 1, 0}, {1, 1, 0}, 0.03f, 0.03f});  // a different one
+    const std::vector<CappedCone> merged = merge_coincident_cones(cones, 1e-4f);
+    ASSERT_EQ(merged.size(), 2u);
+    EXPECT_FLOAT_EQ(merged[0].ra, 0.05f);
+    EXPECT_FLOAT_EQ(merged[0].rb, 0.06f);
+    EXPECT_EQ(merged[1].b, glm::vec3(1, 1, 0));
+}
+
 }  // namespace sylva

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "derive_text.h"
+#include "turtle/derivation.h"
 #include "turtle/lsystem_parser.h"
 #include "turtle/turtle.h"
 
@@ -57,6 +58,51 @@ TEST(HostileGrammar, ColourIndicesOutOfRangeAreClamped) {
             EXPECT_LE(seg.color, 1'000'000) << axiom;
         }
     }
+}
+
+// Issue 16, item 5: a 20,000-parameter module ended in bad_alloc; now a GrammarError at the
+// parameter past the cap, on its line.
+TEST(HostileGrammar, AModuleWithTooManyParametersIsAGrammarErrorAtItsColumn) {
+    std::string module = "A(1";
+    for (int i = 1; i < 20'000; ++i) module += ",1";
+    module += ")";
+    try {
+        parse_lsystem("# many\naxiom: " + module + "\n");
+        FAIL() << "expected GrammarError";
+    } catch (const GrammarError& e) {
+        EXPECT_EQ(e.line(), 2);
+        EXPECT_EQ(e.column(), 10 + 2 * kMaxModuleParameters) << e.what();
+        EXPECT_NE(std::string(e.what()).find("parameters"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(parse_lsystem("axiom: A(1,2,3,4,5,6)\n"));
+}
+
+// Issue 16, item 5: F -> FF grows 2^n; its size is known exactly before deriving, and a word
+// past the cap is refused before the first step (no 4M-module word is built first).
+TEST(HostileGrammar, WordGrowthIsKnownBeforeDerivingAndRefusedEarly) {
+    const LSystem ff = parse_lsystem("axiom: !(0.1)F\nF -> FF\n");
+    const WordGrowth growth = word_growth(ff, 21);
+    EXPECT_EQ(growth.low_modules, 2097153.0);
+    EXPECT_EQ(growth.high_modules, growth.low_modules);
+    EXPECT_EQ(growth.low_segments, 2097152.0);
+    EXPECT_EQ(word_growth(ff, 1000).low_modules, 1e300);  // saturates, no overflow
+
+    DeriveSettings settings;
+    settings.steps = 1000;
+    settings.max_modules = 1000;
+    try {
+        derive(ff, settings);
+        FAIL() << "expected GrammarError";
+    } catch (const GrammarError& e) {
+        EXPECT_NE(std::string(e.what()).find("would grow"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("step 10"), std::string::npos) << e.what();
+    }
+    // A condition may stop growth: the low bound stays, the high bound grows.
+    const LSystem guarded = parse_lsystem("axiom: A(0)\nA(x) : x < 3 -> A(x+1)A(x+1)\n");
+    const WordGrowth g = word_growth(guarded, 10);
+    EXPECT_EQ(g.low_modules, 1.0);
+    EXPECT_EQ(g.high_modules, 1024.0);
+    EXPECT_EQ(derive(guarded, {.steps = 10}).size(), 8u);
 }
 
 }  // namespace

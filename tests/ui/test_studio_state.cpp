@@ -454,5 +454,23 @@ TEST(StudioState, ExportWritesTheGameMeshTheViewShows) {
     EXPECT_NE(chain.find("LOD0-LOD3"), std::string::npos) << chain;
 }
 
+// Issue 16, item 5: typing trunk_resolution 1500 froze the studio for 68 s. A job estimated
+// over the limits is not started; its estimate is shown until "run anyway" or a cheaper edit.
+TEST(StudioState, ACostlyEditIsHeldBackWithItsEstimate) {
+    TreeTemplate costly = small_tree();
+    costly.params.trunk_resolution = 1500;
+    StudioState state = state_with(costly);
+    start_generation(state);
+    EXPECT_FALSE(generation_running(state));
+    EXPECT_NE(state.cost_warning.find("GB"), std::string::npos) << state.cost_warning;
+    EXPECT_FALSE(edit_pending(state));  // not retried every frame
+
+    state.tree_template = small_tree();
+    start_generation(state);
+    EXPECT_TRUE(state.cost_warning.empty());
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_TRUE(state.tree);
+}
+
 }  // namespace
 }  // namespace sylva::studio

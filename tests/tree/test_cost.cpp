@@ -1,0 +1,103 @@
+// Cost is known before work starts (issue 16, item 5): every reproducer is either bounded
+// (few primitives per sample, a bounded leaf grid) or refused at once with the estimate.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.h"
+#include "tree/cost.h"
+#include "tree/leaves.h"
+#include "tree/pipeline.h"
+#include "tree/template_library.h"
+
+namespace sylva {
+namespace {
+
+TreeTemplate grammar(const std::string& text, int generations) {
+    TreeTemplate t = default_template();
+    t.grammar = text;
+    t.params.generations = generations;
+    return t;
+}
+
+// Took 33 s (118 s one step further): 4^n copies of one segment and of one tip sphere.
+TEST(Cost, CoincidentSegmentsGiveOneConeAndOneSphere) {
+    const TreeTemplate t = grammar("axiom: !(0.1)F\nF -> [F][F][F][F]\n", 7);
+    const Tree tree = generate_tree(t);
+    ASSERT_EQ(tree.skeleton.segments.size(), 16384u);
+    const TreeFields fields = tree_fields(tree.skeleton, t.params);
+    ASSERT_TRUE(fields.trunk && fields.crown);
+    EXPECT_EQ(fields.trunk->cones().size(), 1u);
+    EXPECT_EQ(fields.crown->balls().size(), 1u);
+    EXPECT_FALSE(tree.trunk.triangles.empty());
+}
+
+// Spent 117 s scattering leaves over a crown box 1e10 m long; now refused by its extent.
+TEST(Cost, ATreeOfTenMillionKilometresIsRefused) {
+    EXPECT_THROW(generate_tree(grammar("axiom: !(0.1)[F(1e10)]|F(1e10)\n", 0)), InputError);
+}
+
+// The leaf grid itself has at most max_leaves cells, however thin and long the box.
+TEST(Cost, TheLeafGridIsBoundedByMaxLeaves) {
+    for (const glm::vec3 extent : {glm::vec3(1e10f, 0.1f, 0.1f), glm::vec3(1e5f, 1e-3f, 1e5f),
+                                   glm::vec3(3.0f, 3.0f, 3.0f)}) {
+        LeafSettings settings;
+        settings.max_leaves = 10'000;
+        settings.density = 1e6;
+        std::size_t samples = 0;
+        scatter_leaves(
+            [&samples](const glm::vec3&) {
+                ++samples;
+                return 1.0f;
+            },
+            Box{glm::vec3(0.0f), extent}, settings);
+        EXPECT_LE(samples, settings.max_leaves);
+        EXPECT_GT(samples, settings.max_leaves / 100);
+    }
+}
+
+// skeleton --steps 21 of F -> FF took 2.6 GB and 68 s: the estimate knows the word exactly
+// and is over the default limits; raising them lets it through.
+TEST(Cost, DoublingGrammarIsEstimatedAndRefusedBeforeDeriving) {
+    const TreeTemplate t = grammar("axiom: !(0.1)F\nF -> FF\n", 21);
+    const Cost cost = estimate_cost(t, 0, false);
+    EXPECT_EQ(cost.modules, 2097153.0);
+    EXPECT_EQ(cost.segments, 2097152.0);
+    EXPECT_GT(cost.bytes, 2e9);
+    EXPECT_GT(cost.seconds, 10.0);
+    try {
+        check_cost(cost, {}, "raise --max-memory");
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("2097153 modules"), std::string::npos) << message;
+        EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
+    }
+    EXPECT_NO_THROW(check_cost(cost, {1e12, 1e6}, ""));
+}
+
+// Resolution 2000 needed 5.65 GB and 103 s; 1500 froze the studio for 68 s.
+TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
+    TreeTemplate t = default_template();
+    for (int resolution : {1500, 2000}) {
+        t.params.trunk_resolution = resolution;
+        const Cost cost = estimate_cost(t, 800);
+        EXPECT_GE(cost.cells, double(resolution) * resolution * resolution);
+        EXPECT_FALSE(within(cost, {})) << cost_text(cost);
+    }
+}
+
+// The limits must never refuse what ships: every built-in template at its own settings,
+// with its budget and without.
+TEST(Cost, EveryBuiltInTemplateIsWithinTheDefaultLimits) {
+    for (const TreeTemplate* t : builtin_templates()) {
+        for (std::size_t budget : {std::size_t(0), std::size_t(t->params.triangle_budget)}) {
+            const Cost cost = estimate_cost(*t, budget);
+            EXPECT_TRUE(within(cost, {})) << t->name << ": " << cost_text(cost);
+            EXPECT_LT(cost.seconds, 3.0) << t->name << ": " << cost_text(cost);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace sylva

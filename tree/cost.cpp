@@ -1,0 +1,87 @@
+#include "tree/cost.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/errors.h"
+#include "tree/pipeline.h"
+#include "turtle/derivation.h"
+#include "turtle/lsystem_growth.h"
+#include "turtle/lsystem_parser.h"
+
+namespace sylva {
+namespace {
+
+// Measured with `sylva export` and `sylva skeleton` on two cores (README, "Limits"):
+// the default template at resolutions 150-450, and F -> FF at 18-21 steps.
+constexpr double kBaseBytes = 3.0e7;
+constexpr double kBytesPerModule = 40.0;      // the word, twice while deriving
+constexpr double kBytesPerSegment = 1300.0;   // skeleton, fields, skeleton.json text
+constexpr double kBytesPerCellSquared = 850;  // per resolution^2: the sparse meshes
+constexpr double kSecondsPerModule = 2.0e-6;
+constexpr double kSecondsPerSegment = 34.0e-6;
+constexpr double kMeshSecondsPerCellSquared = 6.0e-6;
+constexpr double kReduceSecondsPerCellSquared = 5.0e-5;
+
+std::string format_number(double n) {
+    char text[32];
+    if (n < 1e7)
+        std::snprintf(text, sizeof text, "%.0f", n);
+    else
+        std::snprintf(text, sizeof text, "%.2g", n);
+    return text;
+}
+
+}  // namespace
+
+Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
+    Cost cost;
+    if (tree.growth == lsystem_growth.name) {
+        try {
+            const LSystem system = parse_lsystem(tree.grammar, param_constants(tree.params));
+            const WordGrowth growth = word_growth(system, tree.params.generations);
+            cost.modules = growth.low_modules;
+            cost.segments = growth.low_segments;
+        } catch (const InputError&) {
+            // Generating reports it, with the template's file and line.
+        }
+    }
+    cost.bytes = kBaseBytes + kBytesPerModule * cost.modules + kBytesPerSegment * cost.segments;
+    cost.seconds = kSecondsPerModule * cost.modules + kSecondsPerSegment * cost.segments;
+    if (mesh) {
+        const double trunk = tree.params.trunk_resolution;
+        const double crown = crown_resolution_for_budget(tree.params.crown_resolution, budget);
+        const double squared = trunk * trunk + crown * crown;
+        cost.cells = trunk * trunk * trunk + crown * crown * crown;
+        cost.bytes += kBytesPerCellSquared * squared;
+        cost.seconds += kMeshSecondsPerCellSquared * squared;
+        if (budget > 0) cost.seconds += kReduceSecondsPerCellSquared * squared;
+    }
+    return cost;
+}
+
+std::string cost_text(const Cost& cost) {
+    char tail[96];
+    std::snprintf(tail, sizeof tail, "about %.2g GB and %.3g s", cost.bytes / 1e9, cost.seconds);
+    std::string text;
+    if (cost.modules > 0)
+        text += format_number(cost.modules) + " modules, " + format_number(cost.segments) +
+                " segments, ";
+    if (cost.cells > 0) text += format_number(cost.cells) + " cells, ";
+    return text + tail;
+}
+
+bool within(const Cost& cost, const CostLimits& limits) {
+    return cost.bytes <= limits.max_bytes && cost.seconds <= limits.max_seconds;
+}
+
+void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override) {
+    if (within(cost, limits)) return;
+    char limit[96];
+    std::snprintf(limit, sizeof limit, "%.0f MB and %.3g s", limits.max_bytes / 1e6,
+                  limits.max_seconds);
+    throw InputError("this tree is estimated at " + cost_text(cost) + ", over the limit of " +
+                     limit + " (lower the steps or resolutions, or " + how_to_override + ")");
+}
+
+}  // namespace sylva

@@ -1,0 +1,43 @@
+// What a tree will cost before any of it is made: the word's modules, the skeleton's
+// segments, the meshing grids' cells, memory and time, from the grammar's growth per step
+// (turtle/derivation.h's word_growth) and the resolutions. The CLI refuses, and the studio
+// asks, above limits that keep one job under about 10 s and 2 GB on two cores.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "core/tree_template.h"
+
+namespace sylva {
+
+struct Cost {
+    double modules = 0;   // the derived word, at least (0: not an L-system, or bad grammar)
+    double segments = 0;  // the skeleton's segments, at least
+    double cells = 0;     // marching-cubes cells of the trunk and crown grids, at most
+    double bytes = 0;     // peak memory, roughly
+    double seconds = 0;   // wall time on two cores, roughly
+};
+
+struct CostLimits {
+    double max_bytes = 2.0e9;
+    double max_seconds = 10.0;
+};
+
+// Cheap (no derivation, no grid). `budget` is the trunk + crown triangle budget the meshes
+// will be reduced to (0: not reduced), `mesh` false for a skeleton alone. The memory and time
+// model was calibrated on this project's default template (bench figures in README): a
+// rough guide, never below the true word and segment counts. A grammar that does not parse
+// costs nothing here; generating it reports the error.
+Cost estimate_cost(const TreeTemplate& tree, std::size_t budget = 0, bool mesh = true);
+
+// "2097152 modules, 2097152 segments, 8.0e+06 cells, about 2.7 GB and 71 s".
+std::string cost_text(const Cost& cost);
+
+bool within(const Cost& cost, const CostLimits& limits);
+
+// Throws InputError naming the estimate, the limit and `how_to_override` when the cost is
+// over a limit.
+void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override);
+
+}  // namespace sylva
