@@ -100,6 +100,17 @@ TEST_F(Cli, BrokenRuleInATemplateFileNamesTheFilesLine) {
     EXPECT_FALSE(fs::exists(path("tree.obj")));
 }
 
+// Cost is known before work starts (issue 16): a derivation that would take gigabytes is
+// refused at once, naming the estimate and the overrides, and runs when they are raised.
+TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
+    { std::ofstream(path("ff.lsys")) << "axiom: !(0.1)F(0.001)\nF(l) -> F(l)F(l)\n"; }
+    Result r = run("skeleton -t " + path("ff.lsys") + " --steps 21 -o " + path("s.json"));
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("--max-memory"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("s.json")));
+}
+
 TEST_F(Cli, BadParameterIsExitCode3NamingTheKey) {
     Result r = run("export --set trunk_taper=nan -o " + path("tree.obj"));
     EXPECT_EQ(r.code, 3);
