@@ -76,7 +76,8 @@ fs::path output_target(const fs::path& path) {
     for (int hops = 0;; ++hops) {
         std::error_code ec;
         const fs::file_status status = fs::symlink_status(target, ec);
-        if (ec || status.type() == fs::file_type::not_found || status.type() == fs::file_type::regular)
+        if (ec || status.type() == fs::file_type::not_found ||
+            status.type() == fs::file_type::regular)
             return target;  // a missing parent folder is reported when writing
         if (status.type() != fs::file_type::symlink) {
             if (target == path) refuse(path, not_a_file(status.type()));
@@ -111,15 +112,13 @@ FileSet::Folder& FileSet::folder_for(const fs::path& dir, const fs::path& reques
             folder->registration = std::move(registration);
             break;
         }
-        if (errno != EEXIST || attempt == 100)
-            refuse(requested, std::strerror(errno));
+        if (errno != EEXIST || attempt == 100) refuse(requested, std::strerror(errno));
     }
     folders_.push_back(std::move(folder));
     return *folders_.back();
 }
 
-fs::path FileSet::add(const fs::path& requested,
-                      const std::function<void(std::ostream&)>& write) {
+fs::path FileSet::add(const fs::path& requested, const std::function<void(std::ostream&)>& write) {
     assert(!committed_);
     const fs::path target = output_target(requested);
     assert(std::none_of(files_.begin(), files_.end(),
@@ -161,7 +160,8 @@ std::vector<fs::path> FileSet::commit() {
         std::error_code ec;
         existed[i] = fs::exists(file.target, ec);
         if (!existed[i]) continue;
-        const fs::path backup = file.folder->staging / ("previous-" + file.target.filename().string());
+        const fs::path backup =
+            file.folder->staging / ("previous-" + file.target.filename().string());
         if (::link(file.target.c_str(), backup.c_str()) == 0) backups[i] = backup;
     }
     for (std::size_t i = 0; i < files_.size(); ++i) {
@@ -176,14 +176,15 @@ std::vector<fs::path> FileSet::commit() {
             else if (!existed[j])
                 fs::remove(files_[j]->target, ignored);
         }
+        const fs::path target = file.target;  // roll_back() drops `file`
         roll_back();
         std::error_code ignored;
-        const fs::file_status status = fs::status(file.target, ignored);
-        const std::string why = status.type() != fs::file_type::regular &&
-                                        status.type() != fs::file_type::not_found
-                                    ? not_a_file(status.type())
-                                    : ec.message();
-        refuse(file.target, why);
+        const fs::file_status status = fs::status(target, ignored);
+        const std::string why =
+            status.type() != fs::file_type::regular && status.type() != fs::file_type::not_found
+                ? not_a_file(status.type())
+                : ec.message();
+        refuse(target, why);
     }
     std::vector<fs::path> landed;
     for (std::size_t i = 0; i < files_.size(); ++i) {
