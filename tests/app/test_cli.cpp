@@ -148,12 +148,11 @@ TEST_F(Cli, ASymlinkAtOutputIsWrittenThrough) {
     EXPECT_EQ(listing(), (std::vector<std::string>{"assets", "tree.obj"}));
 }
 
-TEST_F(Cli, ADeviceOrFifoAtOutputIsExitCode4NamingThePath) {
-    Result r = run("export --format obj -o /dev/null");
-    EXPECT_EQ(r.code, 4) << r.output;
-    EXPECT_NE(r.output.find("'/dev/null': it is a device"), std::string::npos) << r.output;
+TEST_F(Cli, AFifoAtOutputIsExitCode4NamingThePath) {
+    // Only a FIFO of our own: a regression run as root would replace a real /dev/null
+    // (tests/core/test_file_set.cpp checks devices without writing).
     ASSERT_EQ(::mkfifo(path("tree.ply").c_str(), 0600), 0);
-    r = run("export -o " + path("tree.ply"));
+    Result r = run("export -o " + path("tree.ply"));
     EXPECT_EQ(r.code, 4) << r.output;
     EXPECT_NE(r.output.find("'" + path("tree.ply") + "': it is a FIFO"), std::string::npos)
         << r.output;

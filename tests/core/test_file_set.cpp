@@ -1,6 +1,4 @@
 // FileSet: several files all or nothing, staged beside their targets.
-#include "core/file_set.h"
-
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/file_set.h"
 
 namespace sylva {
 namespace {
@@ -64,9 +63,9 @@ TEST_F(FileSetTest, WithoutCommitNothingChanges) {
     {
         FileSet files;
         files.add(dir_ / "a.txt", text("new a"));
-        EXPECT_THROW(files.add(dir_ / "b.txt",
-                               [](std::ostream&) { throw std::runtime_error("midway"); }),
-                     std::runtime_error);
+        EXPECT_THROW(
+            files.add(dir_ / "b.txt", [](std::ostream&) { throw std::runtime_error("midway"); }),
+            std::runtime_error);
     }
     EXPECT_EQ(slurp(dir_ / "a.txt"), "old a");
     EXPECT_EQ(listing(), std::vector<std::string>{"a.txt"});
@@ -109,7 +108,19 @@ TEST_F(FileSetTest, SymlinksAreFollowedAndStayLinks) {
 TEST_F(FileSetTest, DirectoriesDevicesAndFifosAreRefusedNamingThePath) {
     ASSERT_EQ(::mkfifo((dir_ / "fifo").c_str(), 0600), 0);
     fs::create_symlink("/dev/null", dir_ / "null");
-    for (const fs::path& path : {dir_, fs::path("/dev/null"), dir_ / "fifo", dir_ / "null"}) {
+    // Devices through output_target() alone, which writes nothing: a regression run as root
+    // must not replace the real /dev/null.
+    for (const fs::path& path : {fs::path("/dev/null"), dir_ / "null"}) {
+        SCOPED_TRACE(path);
+        try {
+            output_target(path);
+            FAIL() << "expected IoError";
+        } catch (const IoError& e) {
+            EXPECT_EQ(e.path(), path);
+            EXPECT_NE(std::string(e.what()).find("it is a device"), std::string::npos) << e.what();
+        }
+    }
+    for (const fs::path& path : {dir_, dir_ / "fifo"}) {
         SCOPED_TRACE(path);
         try {
             FileSet files;

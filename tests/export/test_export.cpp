@@ -553,15 +553,10 @@ TEST(ExportAllOrNothing, ASymlinkIsWrittenThrough) {
     fs::remove_all(temp_dir());
 }
 
-TEST(ExportAllOrNothing, DevicesAndFifosAreRefused) {
+TEST(ExportAllOrNothing, AFifoIsRefused) {
     const auto parts = small_tree().parts();
-    try {
-        write_model("/dev/null", parts, {}, &ply_format);
-        FAIL() << "expected IoError";
-    } catch (const IoError& e) {
-        EXPECT_NE(std::string(e.what()).find("'/dev/null': it is a device"), std::string::npos)
-            << e.what();
-    }
+    // A FIFO of our own, never /dev/null: a regression run as root would replace the real
+    // one (tests/core/test_file_set.cpp checks devices without writing).
     const fs::path dir = temp_dir() / "fifo";
     fs::create_directories(dir);
     ASSERT_EQ(::mkfifo((dir / "tree.glb").c_str(), 0600), 0);
