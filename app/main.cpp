@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/file_set.h"
+#include "core/signal_cleanup.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
@@ -67,7 +69,12 @@ Usage:
   --ply-ascii      write PLY as text instead of binary
   --fidelity       also report the distance of the reduced trunk + crown to the
                    resolution-200 surface, in percent of the tree's height
-  -o PATH          output file; written to a temporary file, then renamed
+  -o PATH          output file. All files of an export (an .obj and its .mtl, every LOD)
+                   are written to a temporary folder beside it and moved into place only
+                   when all succeeded: on an error or SIGINT/SIGTERM nothing new is left
+                   and existing files are untouched. A symlink is written through (the
+                   file it points to is replaced); a directory, device or FIFO is refused
+                   (exit 4)
   --max-memory MB, --max-seconds S
                    the cost is estimated before any work starts (word, segments, grid
                    cells, memory, time on two cores); export, skeleton and derive refuse
@@ -217,6 +224,7 @@ int run_export(const Options& o) {
     if (!format)
         throw UsageError("cannot tell the format of '" + o.output +
                          "': use .obj, .glb or .ply, or --format");
+    output_target(o.output);  // a directory or device at -o is refused before the work
     TreeTemplate tmpl = configured_template(o);
     FinishSettings finish;
     finish.budget.total =
@@ -312,6 +320,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // SIGINT/SIGTERM during a write remove the export's temporaries before the process ends.
+    install_signal_cleanup();
     try {
         return run(argc, argv);
     } catch (const UsageError& e) {

@@ -1,6 +1,7 @@
-// Writes a file all at once or not at all: the content goes to a temporary file beside the
-// target, which is renamed over it only when everything was written. A failed export never
-// leaves a partial file, and the previous file stays intact.
+// Writes a file all at once or not at all: the content goes to a staging folder beside the
+// target, and the file is renamed over the target only when everything was written. A
+// failed write never leaves a partial file, and the previous file stays intact. A set of
+// one file of file_set.h: a symlink at `path` is followed, a directory or device refused.
 #pragma once
 
 #include <filesystem>

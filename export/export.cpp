@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/file_set.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
@@ -72,14 +73,18 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
                                                const ModelParts& parts,
                                                const ExportOptions& options,
                                                const ExportFormat* format) {
-    return resolve(path, format).write(path, {parts}, options);
+    return write_lod_chain(path, {parts}, options, format);
 }
 
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options,
                                                    const ExportFormat* format) {
-    return resolve(path, format).write(path, levels, options);
+    const ExportFormat& chosen = resolve(path, format);
+    // Siblings (an .mtl, the other levels) go beside the file a symlink at `path` points to.
+    FileSet files;
+    chosen.write(files, output_target(path), levels, options);
+    return files.commit();
 }
 
 }  // namespace sylva

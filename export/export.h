@@ -23,7 +23,11 @@ const ExportFormat* format_from_name(std::string_view name);
 // Writes the parts to `path` in `format`, or in the format its extension names. Returns
 // every file written (an OBJ comes with its .mtl). Throws InputError when no format is
 // given and the extension is none of the known ones, IoError (naming the path) when a file
-// cannot be written; never leaves a partial file.
+// cannot be written. All or nothing (core/file_set.h): every file of the model is staged
+// beside its target and moved into place only when all were written; on failure no new
+// file is left and existing ones are untouched. A symlink at `path` is written through
+// (the file it points to is replaced, siblings go beside that file); a directory, device
+// or FIFO there is refused with IoError.
 std::vector<std::filesystem::path> write_model(const std::filesystem::path& path,
                                                const ModelParts& parts,
                                                const ExportOptions& options = {},
@@ -31,8 +35,8 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
 
 // levels[0] is the finest. .glb: one file with a node per level (write_glb_lods); .obj and
 // .ply: one file per level as lod_file_names() says (OBJ: plus one shared `<stem>.mtl`),
-// each level's parts named as given. Returns the files written. Errors as write_model();
-// files of levels already written stay when a later level fails.
+// each level's parts named as given. Returns the files written. Errors and all-or-nothing
+// as write_model(): a level that fails leaves no file of any level.
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options = {},

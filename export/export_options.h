@@ -12,6 +12,8 @@
 
 namespace sylva {
 
+class FileSet;
+
 enum class Shading {
     Flat,    // faceted: one normal per triangle (glTF splits vertices per face)
     Smooth,  // one normal per vertex, vertices shared except across creases (mesh_normals.h)
@@ -35,13 +37,12 @@ using ModelParts = std::vector<NamedMesh>;
 struct ExportFormat {
     std::string_view name;       // what --format takes: "obj"
     std::string_view extension;  // with the dot, lower case: ".obj"
-    // Writes `levels` to `path`: one level is a plain model, more are a LOD chain (finest
-    // first), in one file or one file per level (lod_file_names()) as the format does it.
-    // Returns every file written. Throws IoError naming the path; each file is written
-    // atomically.
-    std::vector<std::filesystem::path> (*write)(const std::filesystem::path& path,
-                                                const std::vector<ModelParts>& levels,
-                                                const ExportOptions& options);
+    // Adds the files of `levels` at `path` to `files` (core/file_set.h), which the registry
+    // commits once all were written: one level is a plain model, more are a LOD chain
+    // (finest first), in one file or one file per level (lod_file_names()) as the format
+    // does it, siblings (an .mtl) beside `path`. Throws IoError naming the path.
+    void (*write)(FileSet& files, const std::filesystem::path& path,
+                  const std::vector<ModelParts>& levels, const ExportOptions& options);
 };
 
 // `<stem>_LOD<i><ext>` beside `path` for i in [0, levels): the files of a chain written one

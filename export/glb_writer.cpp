@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/file_set.h"
 #include "export/mesh_normals.h"
 
 namespace sylva {
@@ -223,18 +224,20 @@ void write_glb_lods(const std::filesystem::path& path,
 
 namespace {
 
-std::vector<std::filesystem::path> write_glb_file(const std::filesystem::path& path,
-                                                  const std::vector<ModelParts>& levels,
-                                                  const ExportOptions& options) {
-    if (levels.size() == 1)
-        write_glb(path, levels[0], options);
-    else
-        write_glb_lods(path, levels, options);
-    return {path};
+void add_glb_file(FileSet& files, const std::filesystem::path& path,
+                  const std::vector<ModelParts>& levels, const ExportOptions& options) {
+    files.add(path, [&](std::ostream& out) {
+        with_path(path, [&] {
+            if (levels.size() == 1)
+                write_glb(out, levels[0], options);
+            else
+                write_glb_lods(out, levels, options);
+        });
+    });
 }
 
 }  // namespace
 
-const ExportFormat glb_format = {"glb", ".glb", write_glb_file};
+const ExportFormat glb_format = {"glb", ".glb", add_glb_file};
 
 }  // namespace sylva

@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "core/atomic_file.h"
+#include "core/file_set.h"
 #include "export/mesh_normals.h"
 
 namespace sylva {
@@ -122,32 +123,33 @@ void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts) {
     }
 }
 
+namespace {
+
+void add_obj_with_mtl(FileSet& files, const std::filesystem::path& path,
+                      const std::vector<NamedMesh>& parts, const ExportOptions& options) {
+    std::filesystem::path mtl = path;
+    mtl.replace_extension(".mtl");
+    files.add(path, [&](std::ostream& out) {
+        write_obj_with_mtl(out, parts, options, mtl.filename().string());
+    });
+    files.add(mtl, [&](std::ostream& out) { write_mtl(out, parts); });
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::path& path,
                                                       const std::vector<NamedMesh>& parts,
                                                       const ExportOptions& options) {
-    namespace fs = std::filesystem;
-    fs::path mtl = path;
-    mtl.replace_extension(".mtl");
-    std::error_code ec;
-    const bool mtl_existed = fs::exists(mtl, ec);
-    write_file_atomically(mtl, [&](std::ostream& out) { write_mtl(out, parts); });
-    try {
-        write_file_atomically(path, [&](std::ostream& out) {
-            write_obj_with_mtl(out, parts, options, mtl.filename().string());
-        });
-    } catch (...) {
-        if (!mtl_existed) fs::remove(mtl, ec);
-        throw;
-    }
-    return {path, mtl};
+    FileSet files;
+    add_obj_with_mtl(files, output_target(path), parts, options);
+    return files.commit();
 }
 
 namespace {
 
-std::vector<std::filesystem::path> write_obj_files(const std::filesystem::path& path,
-                                                   const std::vector<ModelParts>& levels,
-                                                   const ExportOptions& options) {
-    if (levels.size() == 1) return write_obj_with_mtl(path, levels[0], options);
+void add_obj_files(FileSet& files, const std::filesystem::path& path,
+                   const std::vector<ModelParts>& levels, const ExportOptions& options) {
+    if (levels.size() == 1) return add_obj_with_mtl(files, path, levels[0], options);
     // One material library for all levels: the materials are the same.
     std::filesystem::path mtl = path;
     mtl.replace_extension(".mtl");
@@ -158,21 +160,17 @@ std::vector<std::filesystem::path> write_obj_files(const std::filesystem::path& 
                 std::none_of(all_parts.begin(), all_parts.end(),
                              [&](const NamedMesh& p) { return p.name == part.name; }))
                 all_parts.push_back(part);
-    write_file_atomically(mtl, [&](std::ostream& out) { write_mtl(out, all_parts); });
-    std::vector<std::filesystem::path> written{mtl};
+    files.add(mtl, [&](std::ostream& out) { write_mtl(out, all_parts); });
     const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
-    for (std::size_t i = 0; i < levels.size(); ++i) {
-        write_file_atomically(names[i], [&](std::ostream& out) {
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        files.add(names[i], [&](std::ostream& out) {
             write_obj_with_mtl(out, levels[i], options, mtl.filename().string(),
                                "_LOD" + std::to_string(i));
         });
-        written.push_back(names[i]);
-    }
-    return written;
 }
 
 }  // namespace
 
-const ExportFormat obj_format = {"obj", ".obj", write_obj_files};
+const ExportFormat obj_format = {"obj", ".obj", add_obj_files};
 
 }  // namespace sylva

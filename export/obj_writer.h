@@ -35,10 +35,9 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
 // baseColorFactor), no specular.
 void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts);
 
-// Writes `path` and its material library (`path` with the extension .mtl), each
-// atomically. Returns both paths. Throws IoError naming the path that failed; when the
-// OBJ fails after the MTL was written, a new MTL is removed again (an older one was
-// already replaced: the pair is two files, not one transaction).
+// Writes `path` and its material library (`path` with the extension .mtl) as one
+// transaction (core/file_set.h): both or neither. Returns both paths. Throws IoError naming
+// the path that failed; an existing .obj and .mtl then stay as they were.
 std::vector<std::filesystem::path> write_obj_with_mtl(const std::filesystem::path& path,
                                                       const std::vector<NamedMesh>& parts,
                                                       const ExportOptions& options = {});

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
+#include "core/file_set.h"
 #include "export/mesh_normals.h"
 
 namespace sylva {
@@ -120,20 +121,16 @@ void write_ply(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 
 namespace {
 
-std::vector<std::filesystem::path> write_ply_files(const std::filesystem::path& path,
-                                                   const std::vector<ModelParts>& levels,
-                                                   const ExportOptions& options) {
-    if (levels.size() == 1) {
-        write_ply(path, levels[0], options);
-        return {path};
-    }
-    const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
-    for (std::size_t i = 0; i < levels.size(); ++i) write_ply(names[i], levels[i], options);
-    return names;
+void add_ply_files(FileSet& files, const std::filesystem::path& path,
+                   const std::vector<ModelParts>& levels, const ExportOptions& options) {
+    const std::vector<std::filesystem::path> names =
+        levels.size() == 1 ? std::vector{path} : lod_file_names(path, levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        files.add(names[i], [&](std::ostream& out) { write_ply(out, levels[i], options); });
 }
 
 }  // namespace
 
-const ExportFormat ply_format = {"ply", ".ply", write_ply_files};
+const ExportFormat ply_format = {"ply", ".ply", add_ply_files};
 
 }  // namespace sylva

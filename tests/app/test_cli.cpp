@@ -1,12 +1,18 @@
 // The `sylva` command line as scripts see it: exit codes, messages, files left behind.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace {
 
@@ -36,6 +42,13 @@ class Cli : public ::testing::Test {
     }
     void TearDown() override { fs::remove_all(dir_); }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::vector<std::string> listing() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_))
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
     fs::path dir_;
 };
 
@@ -126,6 +139,89 @@ TEST_F(Cli, UnwritablePathIsExitCode4AndLeavesNothing) {
         << r.output;  // .obj or its .mtl
     EXPECT_FALSE(fs::exists(path("missing")));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 0);
+}
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(Cli, ASymlinkAtOutputIsWrittenThrough) {
+    fs::create_directories(dir_ / "assets");
+    { std::ofstream(path("assets/oak.obj")) << "old\n"; }
+    fs::create_symlink("assets/oak.obj", dir_ / "tree.obj");
+    Result r = run("export -o " + path("tree.obj"));
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("wrote " + path("assets/oak.obj")), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_symlink(dir_ / "tree.obj"));
+    EXPECT_NE(slurp(dir_ / "tree.obj").find("mtllib oak.mtl"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "assets/oak.mtl"));
+    EXPECT_EQ(listing(), (std::vector<std::string>{"assets", "tree.obj"}));
+}
+
+TEST_F(Cli, AFifoAtOutputIsExitCode4NamingThePath) {
+    // Only a FIFO of our own: a regression run as root would replace a real /dev/null
+    // (tests/core/test_file_set.cpp checks devices without writing).
+    ASSERT_EQ(::mkfifo(path("tree.ply").c_str(), 0600), 0);
+    Result r = run("export -o " + path("tree.ply"));
+    EXPECT_EQ(r.code, 4) << r.output;
+    EXPECT_NE(r.output.find("'" + path("tree.ply") + "': it is a FIFO"), std::string::npos)
+        << r.output;
+    EXPECT_TRUE(fs::is_fifo(path("tree.ply")));
+    EXPECT_EQ(listing(), std::vector<std::string>{"tree.ply"});
+}
+
+// Runs `sylva export ARGS -o dir/OUT` with every staged file followed by a long pause (the
+// test seam SYLVA_TEST_STAGING_DELAY_MS), waits until its staging folder holds a file, and
+// sends `signal_number`. Returns the wait status.
+int interrupt_export(const fs::path& dir, const std::vector<std::string>& args, int signal_number) {
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::setenv("SYLVA_TEST_STAGING_DELAY_MS", "60000", 1);
+        std::FILE* quiet = std::freopen("/dev/null", "w", stdout);
+        (void)quiet;
+        const std::string binary = std::string(SYLVA_BINARY_DIR) + "/app/sylva";
+        std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+        for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
+        argv.push_back(nullptr);
+        ::execv(binary.c_str(), argv.data());
+        ::_exit(127);
+    }
+    const auto staged = [&] {
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.path().filename().string().rfind(".sylva-", 0) == 0 && entry.is_directory() &&
+                !fs::is_empty(entry.path()))
+                return true;
+        return false;
+    };
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!staged() && std::chrono::steady_clock::now() < deadline) {
+        if (::waitpid(child, &status, WNOHANG) == child) return status;  // ended on its own
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(child, signal_number);
+    ::waitpid(child, &status, 0);
+    return status;
+}
+
+// Before, the .mtl was already replaced and `tree.obj.tmp-PID` stayed; now the CLI removes
+// its staging folder and dies by the signal.
+TEST_F(Cli, AnInterruptedExportLeavesNothingNew) {
+    { std::ofstream(path("tree.mtl")) << "old mtl\n"; }
+    const std::vector<std::pair<std::vector<std::string>, int>> cases = {
+        {{"export", "--lod", "-o", path("tree.obj")}, SIGTERM},
+        {{"export", "-o", path("tree.obj")}, SIGINT},
+        {{"export", "-o", path("tree.glb")}, SIGTERM},
+    };
+    for (const auto& [args, signal_number] : cases) {
+        SCOPED_TRACE(args.back());
+        const int status = interrupt_export(dir_, args, signal_number);
+        ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
+        EXPECT_EQ(WTERMSIG(status), signal_number);
+        EXPECT_EQ(listing(), std::vector<std::string>{"tree.mtl"});
+        EXPECT_EQ(slurp(path("tree.mtl")), "old mtl\n");
+    }
 }
 
 TEST_F(Cli, DeriveAndTemplates) {

@@ -4,10 +4,14 @@
 // follows the extension, LOD chains carry the _LOD suffixes, and failed writes leave
 // nothing behind.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -465,6 +469,101 @@ const FinishedTree& small_chain() {
         return finish_tree(small_tree().tree, finish);
     }();
     return chain;
+}
+
+// The names in `dir`, sorted: what an export left behind (a staging folder shows as
+// `.sylva-<pid>-<n>.tmp`).
+std::vector<std::string> listing(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// A full disk, simulated: a child process whose files cannot grow past 4 KiB writes an OBJ
+// (about 100 KiB) whose .mtl (under 1 KiB) would fit. Before, the .mtl was replaced first
+// and the failed OBJ left it changed.
+TEST(ExportAllOrNothing, AnObjThatFailsOnAFullDiskKeepsTheOldObjAndMtl) {
+    const auto parts = small_tree().parts();
+    const fs::path dir = temp_dir() / "full";
+    fs::create_directories(dir);
+    { std::ofstream(dir / "tree.obj") << "old obj\n"; }
+    { std::ofstream(dir / "tree.mtl") << "old mtl\n"; }
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of death, as ENOSPC would be
+        const rlimit limit{4096, 4096};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            write_model(dir / "tree.obj", parts);
+        } catch (const IoError&) {
+            ::_exit(4);
+        }
+        ::_exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 4) << "the OBJ cannot fit";
+    EXPECT_EQ(slurp(dir / "tree.obj"), "old obj\n");
+    EXPECT_EQ(slurp(dir / "tree.mtl"), "old mtl\n");
+    EXPECT_EQ(listing(dir), (std::vector<std::string>{"tree.mtl", "tree.obj"}));
+    fs::remove_all(dir.parent_path());
+}
+
+// A chain whose third level cannot be written (a folder in its place) leaves no level, no
+// .mtl and no staging folder; before, LOD0, LOD1 and the .mtl stayed.
+TEST(ExportAllOrNothing, AChainThatFailsAtLod2LeavesNoLevel) {
+    const SmallTree& t = small_tree();
+    for (const char* name : {"oak.obj", "oak.ply"}) {
+        SCOPED_TRACE(name);
+        const fs::path dir = temp_dir() / "chain";
+        const fs::path path = dir / name;
+        const fs::path lod2 = lod_file_names(path, 4)[2];
+        fs::create_directories(lod2);
+        try {
+            write_tree(path, t.tree, small_chain(), t.colors);
+            ADD_FAILURE() << "expected IoError";
+        } catch (const IoError& e) {
+            EXPECT_NE(std::string(e.what()).find(lod2.string()), std::string::npos) << e.what();
+        }
+        EXPECT_EQ(listing(dir), std::vector<std::string>{lod2.filename().string()});
+        fs::remove_all(dir);
+    }
+    fs::remove_all(temp_dir());
+}
+
+// Through a symlink: the file it points to is replaced (the .mtl beside that file, named as
+// the OBJ's mtllib says), the link stays a link.
+TEST(ExportAllOrNothing, ASymlinkIsWrittenThrough) {
+    const auto parts = small_tree().parts();
+    const fs::path dir = temp_dir() / "link";
+    fs::create_directories(dir / "real");
+    { std::ofstream(dir / "real" / "tree.obj") << "old\n"; }
+    fs::create_symlink("real/tree.obj", dir / "link.obj");
+    const auto written = write_model(dir / "link.obj", parts);
+    EXPECT_EQ(written,
+              (std::vector<fs::path>{dir / "real" / "tree.obj", dir / "real" / "tree.mtl"}));
+    EXPECT_TRUE(fs::is_symlink(dir / "link.obj"));
+    EXPECT_EQ(read_obj_with_mtl(dir / "link.obj").mtllib, "tree.mtl");
+    EXPECT_EQ(listing(dir), (std::vector<std::string>{"link.obj", "real"}));
+    EXPECT_EQ(listing(dir / "real"), (std::vector<std::string>{"tree.mtl", "tree.obj"}));
+    fs::remove_all(temp_dir());
+}
+
+TEST(ExportAllOrNothing, AFifoIsRefused) {
+    const auto parts = small_tree().parts();
+    // A FIFO of our own, never /dev/null: a regression run as root would replace the real
+    // one (tests/core/test_file_set.cpp checks devices without writing).
+    const fs::path dir = temp_dir() / "fifo";
+    fs::create_directories(dir);
+    ASSERT_EQ(::mkfifo((dir / "tree.glb").c_str(), 0600), 0);
+    EXPECT_THROW(write_model(dir / "tree.glb", parts), IoError);
+    EXPECT_TRUE(fs::is_fifo(dir / "tree.glb"));
+    EXPECT_EQ(listing(dir), std::vector<std::string>{"tree.glb"});
+    fs::remove_all(temp_dir());
 }
 
 const std::vector<std::string> kParts = {"trunk", "crown", "leaves"};
