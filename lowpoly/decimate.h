@@ -64,8 +64,9 @@ struct DecimateResult {
 // Reduces the parts together to settings.max_triangles (or as close as the guards allow:
 // each closed piece needs at least 4 triangles, and handles need more).
 //
-// Preconditions: every non-empty part is a closed 2-manifold by check_topology; otherwise
-// throws InputError (core/errors.h) naming the part and what is wrong. Empty parts stay empty.
+// Preconditions: every non-empty part is a closed 2-manifold by check_topology (triangles of
+// zero area allowed: they go first); otherwise throws InputError (core/errors.h) naming the
+// part and what is wrong. Empty parts stay empty.
 // Guarantee: every returned part is a closed 2-manifold with the input's orientation and no
 // piece turned inside out (checked with check_topology, and component_volumes: no more
 // components without positive volume than the input had, which are its inner shells, see
