@@ -49,7 +49,8 @@ check_format() {
 }
 
 # The sanitizer build (scripts/fuzz, scripts/sanitize): clang with ASan + UBSan, libFuzzer's
-# coverage on every library, asserts on, the unit tests and the fuzzers, no GUI.
+# coverage on every library, asserts on, the unit tests and the fuzzers, no GUI. Warnings
+# are not errors here: the GCC build of scripts/test is the one held to -Werror.
 SYLVA_SANITIZED_BUILD="${SYLVA_SANITIZED_BUILD:-$SYLVA_ROOT/build-fuzz}"
 SYLVA_SANITIZER_PACKAGES=(clang libclang-rt-14-dev)
 
@@ -58,7 +59,7 @@ build_sylva_sanitized() {
     cmake -S "$SYLVA_ROOT" -B "$SYLVA_SANITIZED_BUILD" -DCMAKE_CXX_COMPILER=clang++ \
         -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSYLVA_SANITIZE=ON \
         -DSYLVA_BUILD_FUZZERS=ON -DSYLVA_BUILD_UI=OFF -DSYLVA_BUILD_BENCH=OFF \
-        -DSYLVA_BUILD_TESTS=ON -DSYLVA_WERROR=ON >/dev/null
+        -DSYLVA_BUILD_TESTS=ON -DSYLVA_WERROR=OFF >/dev/null
     local targets=()
     for t in "$@"; do targets+=(--target "$t"); done
     cmake --build "$SYLVA_SANITIZED_BUILD" --parallel "$(nproc)" "${targets[@]}"
