@@ -1,4 +1,4 @@
-# Shared by scripts/run and scripts/test: Debian packages and the Release build.
+# Shared by the scripts (run, test, fuzz, sanitize): Debian packages and the builds.
 # Sourced, not run.
 
 SYLVA_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -46,4 +46,21 @@ check_format() {
         return 1
     fi
     rm -f /tmp/sylva-format.$$
+}
+
+# The sanitizer build (scripts/fuzz, scripts/sanitize): clang with ASan + UBSan, libFuzzer's
+# coverage on every library, asserts on, the unit tests and the fuzzers, no GUI. Warnings
+# are not errors here: the GCC build of scripts/test is the one held to -Werror.
+SYLVA_SANITIZED_BUILD="${SYLVA_SANITIZED_BUILD:-$SYLVA_ROOT/build-fuzz}"
+SYLVA_SANITIZER_PACKAGES=(clang libclang-rt-14-dev)
+
+# Arguments: the targets to build (all when none).
+build_sylva_sanitized() {
+    cmake -S "$SYLVA_ROOT" -B "$SYLVA_SANITIZED_BUILD" -DCMAKE_CXX_COMPILER=clang++ \
+        -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSYLVA_SANITIZE=ON \
+        -DSYLVA_BUILD_FUZZERS=ON -DSYLVA_BUILD_UI=OFF -DSYLVA_BUILD_BENCH=OFF \
+        -DSYLVA_BUILD_TESTS=ON -DSYLVA_WERROR=OFF >/dev/null
+    local targets=()
+    for t in "$@"; do targets+=(--target "$t"); done
+    cmake --build "$SYLVA_SANITIZED_BUILD" --parallel "$(nproc)" "${targets[@]}"
 }

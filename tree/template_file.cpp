@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -206,20 +207,35 @@ std::string template_file_text(const TreeTemplate& tree) {
     if (tree.growth != "lsystem") out << "growth = \"" << tree.growth << "\"\n";
     out << "turtle = \"" << name_of(kModes, int(tree.mode)) << "\"\n";
     out << "widths = \"" << name_of(kWidths, int(tree.width_model)) << "\"\n";
-    std::string grammar = tree.grammar;
+    // Written so it reads back byte for byte: the closing quotes follow the grammar's last
+    // character (a newline there would be read as part of it), and a grammar a literal
+    // string cannot hold (three quotes, a control character) goes into an escaped string.
+    const std::string& grammar = tree.grammar;
+    const bool literal =
+        grammar.find("'''") == std::string::npos &&
+        std::none_of(grammar.begin(), grammar.end(), [](char c) {
+            return (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == '\x7f';
+        });
     if (grammar.empty() && tree.growth != "lsystem") {
         // A growth method without a grammar (colonization) writes none.
-    } else if (grammar.find("'''") == std::string::npos) {
-        out << "grammar = '''\n" << grammar << (grammar.ends_with('\n') ? "" : "\n") << "'''\n";
+    } else if (literal) {
+        out << "grammar = '''\n" << grammar << "'''\n";
     } else {
-        // A grammar that itself holds three quotes goes into a basic string, escaped.
         std::string escaped;
         for (char c : grammar) {
-            if (c == '\\' || c == '"') escaped.push_back('\\');
-            escaped.push_back(c);
+            const auto byte = static_cast<unsigned char>(c);
+            if (c == '\\' || c == '"') {
+                escaped += '\\';
+                escaped += c;
+            } else if ((byte < 0x20 && c != '\n' && c != '\t') || byte == 0x7f) {
+                char code[8];
+                std::snprintf(code, sizeof code, "\\u%04X", unsigned(byte));
+                escaped += code;
+            } else {
+                escaped += c;
+            }
         }
-        out << "grammar = \"\"\"\n"
-            << escaped << (grammar.ends_with('\n') ? "" : "\n") << "\"\"\"\n";
+        out << "grammar = \"\"\"\n" << escaped << "\"\"\"\n";
     }
     out << "\n[params]\n" << params << "\n\n[colors]\n" << colors << "\n";
     return out.str();

@@ -71,6 +71,24 @@ TEST(TemplateFile, SaveThenLoadGivesTheSameTemplate) {
     }
 }
 
+// Found by fuzz/fuzz_template: a grammar without a final newline read back with one, and a
+// control character (from an escape such as "\u0001") was written where TOML forbids it.
+TEST(TemplateFile, SaveThenLoadKeepsTheGrammarByteForByte) {
+    for (const std::string grammar :
+         {"axiom: F", "axiom: F\n", "axiom: F'", "axiom: F''", "axiom: F\"", "axiom: F\nF -> '''F",
+          "axiom: F\nF -> '''F\n", "axiom: F\x01", "axiom: F\r\nF -> F\\F\r", "\naxiom: F\t\x7f",
+          ""}) {
+        SCOPED_TRACE(grammar);
+        TreeTemplate tree;
+        tree.name = "x";
+        tree.grammar = grammar;
+        const std::string text = template_file_text(tree);
+        TreeTemplate back;
+        ASSERT_NO_THROW(back = parse_template_file(text, "saved.toml")) << text;
+        EXPECT_EQ(back.grammar, grammar) << text;
+    }
+}
+
 TEST(TemplateFile, TheLibraryHasTheSpeciesTheIssueAsksFor) {
     for (const char* name : {"oak", "spruce", "fir", "palm", "honda", "ternary", "bush", "birch",
                              "willow", "pine", "baobab", "cypress"})
