@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 #include <limits>
 
+#include "core/disjoint_sets.h"
 #include "core/errors.h"
 #include "lowpoly/handle_cutting.h"
 #include "marching/mesh_checks.h"
@@ -307,26 +308,22 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     // out inside out (a tetrahedron of negative volume); tracking each piece's volume
     // forbids the collapse that would take it below a sliver of what it had.
     void label_pieces() {
-        std::vector<int> parent(mesh_.n_vertices());
-        for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-        auto find = [&](int v) {
-            while (parent[v] != v) v = parent[v] = parent[parent[v]];
-            return v;
-        };
+        DisjointSets sets(mesh_.n_vertices());
         for (auto f : mesh_.faces()) {
             if (mesh_.status(f).deleted()) continue;
-            int first = -1;
+            std::uint32_t first = UINT32_MAX;
             for (VertexHandle v : mesh_.fv_range(f)) {
-                if (first < 0)
-                    first = find(v.idx());
+                const auto i = static_cast<std::uint32_t>(v.idx());
+                if (first == UINT32_MAX)
+                    first = i;
                 else
-                    parent[find(v.idx())] = first;
+                    sets.unite(i, first);
             }
         }
-        std::vector<int> slot(parent.size(), -1);
+        std::vector<int> slot(mesh_.n_vertices(), -1);
         piece_volume_.clear();
         for (VertexHandle v : mesh_.vertices()) {
-            int& s = slot[find(v.idx())];
+            int& s = slot[sets.find(static_cast<std::uint32_t>(v.idx()))];
             if (s < 0) {
                 s = static_cast<int>(piece_volume_.size());
                 piece_volume_.push_back(0.0);

@@ -14,30 +14,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/disjoint_sets.h"
 #include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
-
-struct DisjointSets {
-    std::vector<std::uint32_t> parent;
-    explicit DisjointSets(std::size_t n) : parent(n) {
-        std::iota(parent.begin(), parent.end(), 0u);
-    }
-    std::uint32_t find(std::uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    bool unite(std::uint32_t a, std::uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return false;
-        parent[a] = b;
-        return true;
-    }
-};
 
 std::uint64_t key(std::uint32_t a, std::uint32_t b) {
     return (std::uint64_t{a} << 32) | b;

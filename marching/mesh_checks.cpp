@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/disjoint_sets.h"
+
 namespace sylva {
 namespace {
 
@@ -47,24 +49,6 @@ Bounds bounds(const Mesh& mesh) {
     }
     return b;
 }
-
-// Union-find over a vertex's few neighbours, to count the fans around it.
-struct DisjointSets {
-    std::vector<int> parent;
-    explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    // Returns whether x and y were in different sets.
-    bool unite(int x, int y) {
-        x = find(x);
-        y = find(y);
-        if (x == y) return false;
-        parent[x] = y;
-        return true;
-    }
-};
 
 }  // namespace
 
@@ -157,7 +141,8 @@ MeshTopology check_topology(const Mesh& mesh) {
         DisjointSets sets(neighbours.size());
         std::size_t components = neighbours.size();
         for (auto it = begin; it != end; ++it) {
-            if (sets.unite(local(it->first), local(it->second))) --components;
+            if (sets.unite(std::uint32_t(local(it->first)), std::uint32_t(local(it->second))))
+                --components;
         }
         if (components > 1) ++result.non_manifold_vertices;
     }
@@ -174,16 +159,11 @@ double surface_area(const Mesh& mesh) {
 
 std::vector<double> component_volumes(const Mesh& mesh) {
     // Union-find over vertices; a triangle joins its three.
-    std::vector<std::uint32_t> parent(mesh.positions.size());
-    for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
-    auto find = [&](std::uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    };
+    DisjointSets sets(mesh.positions.size());
     for (const auto& tri : mesh.triangles) {
         if (!indices_valid(mesh, tri)) continue;
-        parent[find(tri[1])] = find(tri[0]);
-        parent[find(tri[2])] = find(tri[0]);
+        sets.unite(tri[1], tri[0]);
+        sets.unite(tri[2], tri[0]);
     }
     const Bounds box = bounds(mesh);
     const glm::dvec3 reference = 0.5 * (box.min + box.max);
@@ -191,7 +171,7 @@ std::vector<double> component_volumes(const Mesh& mesh) {
     std::vector<std::int64_t> slot(mesh.positions.size(), -1);
     for (const auto& tri : mesh.triangles) {
         if (!indices_valid(mesh, tri)) continue;
-        std::int64_t& k = slot[find(tri[0])];
+        std::int64_t& k = slot[sets.find(tri[0])];
         if (k < 0) {
             k = static_cast<std::int64_t>(volumes.size());
             volumes.push_back(0.0);

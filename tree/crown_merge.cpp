@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/disjoint_sets.h"
+
 namespace sylva {
 namespace {
 
@@ -53,25 +55,6 @@ void for_each_close_pair(std::span<const Ball> balls, float grow, F&& f) {
                 }
     }
 }
-
-struct DisjointSets {
-    std::vector<std::uint32_t> parent;
-    explicit DisjointSets(std::size_t n) : parent(n) {
-        std::iota(parent.begin(), parent.end(), 0u);
-    }
-    std::uint32_t find(std::uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    }
-    // False when a and b were one set already.
-    bool unite(std::uint32_t a, std::uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return false;
-        parent[a] = b;
-        return true;
-    }
-};
 
 }  // namespace
 
