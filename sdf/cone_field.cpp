@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <unordered_map>
+
+#include "sdf/point_hash.h"
 
 namespace sylva {
 
@@ -14,60 +16,39 @@ float polynomial_smooth_min(float a, float b, float k) {
     return std::min(a, b) - h * h * k * 0.25f;
 }
 
-namespace {
-
-struct CellKey {
-    long long v[6];
-    bool operator==(const CellKey& o) const {
-        for (int i = 0; i < 6; ++i)
-            if (v[i] != o.v[i]) return false;
-        return true;
-    }
-};
-
-struct CellKeyHash {
-    std::size_t operator()(const CellKey& k) const {
-        std::size_t h = 1469598103934665603ull;
-        for (long long x : k.v) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
-        return h;
-    }
-};
-
-}  // namespace
-
 std::vector<CappedCone> merge_coincident_cones(std::vector<CappedCone> cones, float tolerance) {
     if (!(tolerance > 0.0f)) return cones;
-    auto quantize = [tolerance](const glm::vec3& p, long long* out) {
-        for (int i = 0; i < 3; ++i) out[i] = std::llround(double(p[i]) / tolerance);
+    auto finite = [](const glm::vec3& p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
     };
-    std::unordered_map<CellKey, std::size_t, CellKeyHash> first;
-    first.reserve(cones.size());
+    // Both ends of every kept cone, so a copy drawn either way round finds it.
+    PointHash ends(tolerance);
     std::vector<CappedCone> out;
     out.reserve(cones.size());
     for (const CappedCone& c : cones) {
-        const glm::vec3 ends[2] = {c.a, c.b};
-        bool finite = true;
-        for (const glm::vec3& e : ends)
-            for (int i = 0; i < 3; ++i)
-                finite = finite && std::abs(double(e[i]) / tolerance) < 1e15;
-        if (!finite) {
+        if (!finite(c.a) || !finite(c.b)) {
             out.push_back(c);
             continue;
         }
-        CellKey key;
-        quantize(c.a, key.v);
-        quantize(c.b, key.v + 3);
-        // One key for both directions of a segment: the smaller end first.
-        if (std::lexicographical_compare(key.v + 3, key.v + 6, key.v, key.v + 3))
-            std::swap_ranges(key.v, key.v + 3, key.v + 3);
-        auto [it, inserted] = first.try_emplace(key, out.size());
-        if (inserted) {
+        std::uint32_t found = UINT32_MAX;
+        bool same_way = true;
+        ends.for_each_near(c.a, [&](std::uint32_t k) {
+            if (found != UINT32_MAX) return;
+            const CappedCone& kept = out[k];
+            if (glm::distance(kept.a, c.a) <= tolerance && glm::distance(kept.b, c.b) <= tolerance)
+                found = k;
+            else if (glm::distance(kept.b, c.a) <= tolerance &&
+                     glm::distance(kept.a, c.b) <= tolerance)
+                found = k, same_way = false;
+        });
+        if (found == UINT32_MAX) {
+            const auto k = static_cast<std::uint32_t>(out.size());
             out.push_back(c);
+            ends.insert(c.a, k);
+            ends.insert(c.b, k);
             continue;
         }
-        CappedCone& kept = out[it->second];
-        // `kept` may have been stored in either direction; match ends by position.
-        const bool same_way = glm::distance(kept.a, c.a) <= glm::distance(kept.a, c.b);
+        CappedCone& kept = out[found];
         kept.ra = std::max(kept.ra, same_way ? c.ra : c.rb);
         kept.rb = std::max(kept.rb, same_way ? c.rb : c.ra);
     }

@@ -21,12 +21,13 @@ namespace sylva {
 // min(a, b) elsewhere (so culling stays exact), and 1-Lipschitz (a convex gradient blend).
 float polynomial_smooth_min(float a, float b, float k);
 
-// The cones with coincident duplicates merged: cones whose end points agree within
-// `tolerance` (either way round) become one, the first of them with the larger radius at each
-// end. A field over thousands of copies of one segment (`F -> [F][F][F][F]`) would otherwise
-// list them all in one bin and visit each at every sample: quadratic in the copies. Order of
-// first appearance is kept, so the result is deterministic. Cones with a non-finite end are
-// kept as they are.
+// The cones with near-coincident duplicates merged: a cone whose two ends each lie within
+// `tolerance` of the ends of an earlier kept cone (either way round) is folded into it,
+// which takes the larger radius at each end; the union moves by at most `tolerance`. A field
+// over thousands of copies of one segment (`F -> [F][F][F][F]`, or the same with tiny
+// turns) would otherwise list them all in one bin and visit each at every sample: quadratic
+// in the copies. Order of first appearance is kept, so the result is deterministic. Cones
+// with a non-finite end are kept as they are.
 std::vector<CappedCone> merge_coincident_cones(std::vector<CappedCone> cones, float tolerance);
 
 class ConeField {

@@ -8,6 +8,11 @@
 // crown therefore fades the blend width out between |a - b| = 2k and 4k
 // (local_root_smooth_min): identical to the seed's blend where spheres meet, exactly min
 // farther away, still 1-Lipschitz, and spheres beyond the margin cannot matter.
+//
+// Folded over many spheres the blend would add up (six spheres at one distance lower the
+// value by 1.5 k, a thousand by 3.8 k), swelling the union past the box it is meshed in.
+// The fold is therefore kept within k/2 of the hard union, the most two spheres lower it:
+// max(fold, min - k/2) of two 1-Lipschitz functions is 1-Lipschitz.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -24,6 +29,13 @@ struct Ball {
 };
 
 float distance(const Ball& ball, const glm::vec3& p);
+
+// The balls with near-coincident duplicates merged: a ball whose centre lies within
+// `tolerance` of an earlier kept ball's is folded into it, which takes the larger radius; the
+// union moves by at most `tolerance`. Thousands of tips at one place (brackets that redraw a
+// branch, with or without tiny turns) would otherwise cost every sample near them a visit
+// each, and fold the smooth union thousands of times. Order of first appearance is kept.
+std::vector<Ball> merge_coincident_balls(std::vector<Ball> balls, float tolerance);
 
 // How the spheres fuse.
 enum class SphereBlend {

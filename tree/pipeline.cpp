@@ -27,6 +27,10 @@ namespace {
 // higher trunk_resolution.
 constexpr float kMinRadiusInCells = 0.9f;
 
+// Primitives closer than this to an earlier one are merged into it (cone_field.h,
+// sphere_field.h).
+constexpr float kMergeToleranceInCells = 0.125f;
+
 std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
     const float min_radius = kMinRadiusInCells * cell;
     std::vector<CappedCone> cones;
@@ -34,9 +38,10 @@ std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
     for (const Segment& s : skeleton.segments)
         if (std::max(s.ra, s.rb) > 0.0f)
             cones.push_back({s.a, s.b, std::max(s.ra, min_radius), std::max(s.rb, min_radius)});
-    // Copies of one segment (brackets that redraw it) add nothing the grid can show but cost
-    // every sample near them a visit each; a 64th of a cell is far below what it resolves.
-    return merge_coincident_cones(std::move(cones), cell / 64.0f);
+    // Copies of one segment (brackets that redraw it, with or without tiny turns) add
+    // nothing the grid can show but cost every sample near them a visit each; an eighth of a
+    // cell is below what it resolves.
+    return merge_coincident_cones(std::move(cones), kMergeToleranceInCells * cell);
 }
 
 // The culled fields are exact within this many cells of the surface (all marching cubes
@@ -88,6 +93,7 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
     fields.crown_box.min -= glm::vec3(fusion);
     fields.crown_box.max += glm::vec3(fusion);
     float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
+    balls = merge_coincident_balls(std::move(balls), kMergeToleranceInCells * crown_cell);
     float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
     if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
         // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
@@ -186,7 +192,8 @@ int crown_resolution_for_budget(int resolution, std::size_t budget) {
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {
     std::vector<Ball> out;
     // Tips that end at the same point (brackets that redraw a branch) give one sphere: the
-    // copies would add nothing but a visit each at every sample near them.
+    // copies would add nothing but a visit each at every sample near them (the crown's field
+    // merges near ones too, within its cell).
     std::set<std::array<float, 3>> seen;
     for (int tip : tips(skeleton)) {
         const Segment& s = skeleton.segments[static_cast<size_t>(tip)];

@@ -95,4 +95,20 @@ TEST(ConeField, CoincidentCopiesAreMergedIntoOneCone) {
     EXPECT_EQ(merged[1].b, glm::vec3(1, 1, 0));
 }
 
+// ... and so do copies drawn with tiny turns (`F -> [+(0.01)F][-(0.01)F]...`): ends that
+// differ by less than the tolerance, on either side of any rounding boundary.
+TEST(ConeField, NearCoincidentCopiesAreMergedAndDistinctConesKept) {
+    const float tolerance = 1e-3f;
+    std::vector<CappedCone> cones;
+    for (int i = 0; i < 2000; ++i) {
+        const float t = tolerance * 0.4f * std::sin(float(i));  // within +-0.4 tolerance
+        cones.push_back({{t, 0, -t}, {0.002f + t, 1, t}, 0.05f, 0.04f + 0.00001f * float(i % 5)});
+    }
+    cones.push_back({{0, 0, 0}, {0.002f + 2.5f * tolerance, 1, 0}, 0.05f, 0.04f});  // turned more
+    const std::vector<CappedCone> merged = merge_coincident_cones(cones, tolerance);
+    ASSERT_EQ(merged.size(), 2u);
+    EXPECT_FLOAT_EQ(merged[0].rb, 0.04004f);
+    EXPECT_EQ(merged[1].b, cones.back().b);
+}
+
 }  // namespace sylva
