@@ -7,27 +7,13 @@
 #include <glm/geometric.hpp>
 #include <numeric>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 #include "core/disjoint_sets.h"
+#include "sdf/point_hash.h"
 
 namespace sylva {
 namespace {
-
-// A hash grid of cell `cell`: each ball in the cell of its centre.
-struct BallGrid {
-    float cell;
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
-
-    static std::uint64_t key(glm::ivec3 c) {
-        auto part = [](int v) {
-            return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1fffff);
-        };
-        return part(c.x) | part(c.y) << 21 | part(c.z) << 42;
-    }
-    glm::ivec3 cell_of(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell)); }
-};
 
 // Calls f(i, j, gap) for every pair i < j of spheres closer than twice `grow`.
 template <class F>
@@ -36,24 +22,15 @@ void for_each_close_pair(std::span<const Ball> balls, float grow, F&& f) {
     for (const Ball& b : balls) largest = std::max(largest, b.radius);
     // Two balls touch only when their centres are closer than twice the largest grown
     // radius: with cells that wide, touching balls are in neighbouring cells.
-    BallGrid grid{std::max(2.0f * (largest + grow), 1e-6f), {}};
+    PointHash grid(std::max(2.0f * (largest + grow), 1e-6f));
+    for (std::uint32_t i = 0; i < balls.size(); ++i) grid.insert(balls[i].center, i);
     for (std::uint32_t i = 0; i < balls.size(); ++i)
-        grid.cells[BallGrid::key(grid.cell_of(balls[i].center))].push_back(i);
-    for (std::uint32_t i = 0; i < balls.size(); ++i) {
-        const glm::ivec3 c = grid.cell_of(balls[i].center);
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    auto found = grid.cells.find(BallGrid::key(c + glm::ivec3(dx, dy, dz)));
-                    if (found == grid.cells.end()) continue;
-                    for (std::uint32_t j : found->second) {
-                        if (j <= i) continue;
-                        const float gap = glm::distance(balls[i].center, balls[j].center) -
-                                          balls[i].radius - balls[j].radius;
-                        if (gap < 2.0f * grow) f(i, j, gap);
-                    }
-                }
-    }
+        grid.for_each_near(balls[i].center, [&](std::uint32_t j) {
+            if (j <= i) return;
+            const float gap =
+                glm::distance(balls[i].center, balls[j].center) - balls[i].radius - balls[j].radius;
+            if (gap < 2.0f * grow) f(i, j, gap);
+        });
 }
 
 }  // namespace
