@@ -168,7 +168,8 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     using HalfedgeHandle = OmMesh::HalfedgeHandle;
     using Quadric = OpenMesh::Geometry::Quadricd;
 
-    LazyDecimater(OmMesh& mesh, const Guards& guards) : Base(mesh), mesh_(mesh), guards_(guards) {
+    LazyDecimater(OmMesh& mesh, const Guards& guards, float foot_height)
+        : Base(mesh), mesh_(mesh), guards_(guards), foot_height_(foot_height) {
         add(quadric_);
         module(quadric_).unset_max_err();
         mesh_.add_property(target_);
@@ -215,11 +216,12 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
             heap.pop_front();
             CollapseInfo ci(mesh_, h);
             // The entry may be stale: check again, and look for a new target if it is.
-            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_volume(ci)) {
+            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_shape(ci)) {
                 heap_vertex(v);
                 continue;
             }
             piece_volume_[piece(ci.v0)] += volume_change(ci);
+            if (is_foot(ci.v0)) --foot_vertices_[piece(ci.v0)];  // onto another foot vertex
             support.clear();
             mesh_.all_outgoing(ci.v0, [&](HalfedgeHandle o) {
                 support.push_back(mesh_.to_vertex_handle(o));
@@ -267,6 +269,7 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
                         c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0])) /
                        det;
             }
+            if (is_foot(v)) x[1] = p[1];  // the foot stays on the ground
             for (double step : {1.0, 0.5}) {
                 const OmMesh::Point candidate = p + step * (x - p);
                 if (!std::isfinite(candidate[0]) || !std::isfinite(candidate[1]) ||
@@ -336,6 +339,9 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
             const auto a = mesh_.point(*it), b = mesh_.point(*++it), c = mesh_.point(*++it);
             piece_volume_[piece(*it)] += (a | (b % c)) / 6.0;
         }
+        foot_vertices_.assign(piece_volume_.size(), 0);
+        for (VertexHandle v : mesh_.vertices())
+            if (!mesh_.status(v).deleted() && is_foot(v)) ++foot_vertices_[piece(v)];
         piece_floor_.resize(piece_volume_.size());
         for (std::size_t i = 0; i < piece_volume_.size(); ++i)
             piece_floor_[i] = 1e-3 * piece_volume_[i];
@@ -369,6 +375,17 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
         return six / 6.0;
     }
 
+    bool keeps_shape(const CollapseInfo& ci) const { return keeps_volume(ci) && keeps_foot(ci); }
+
+    // A foot vertex may only merge into another foot vertex, and only while its piece has
+    // more than kMinFootVertices.
+    bool keeps_foot(const CollapseInfo& ci) const {
+        if (!is_foot(ci.v0)) return true;
+        return is_foot(ci.v1) && foot_vertices_[piece(ci.v0)] > kMinFootVertices;
+    }
+
+    bool is_foot(VertexHandle v) const { return mesh_.point(v)[1] <= foot_height_; }
+
     // Inner shells (negative volume by nature) are left alone.
     bool keeps_volume(const CollapseInfo& ci) const {
         const std::size_t p = piece(ci.v0);
@@ -385,8 +402,7 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
             const CollapseInfo ci(mesh_, h);
             const float error = quadric.collapse_priority(ci);
             if (error < 0.0f || !(error < best)) return true;
-            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_volume(ci))
-                return true;
+            if (!is_collapse_legal(ci) || !guards_.hold(mesh_, ci) || !keeps_shape(ci)) return true;
             best = error;
             target = h;
             return true;
@@ -414,6 +430,8 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     OpenMesh::VPropHandleT<int> piece_;
     std::vector<double> piece_volume_;
     std::vector<double> piece_floor_;
+    float foot_height_;
+    std::vector<std::size_t> foot_vertices_;  // per piece
     Heap* heap_ = nullptr;
 };
 
@@ -550,7 +568,8 @@ std::vector<Mesh> reduce(std::span<const Mesh* const> parts, std::size_t target,
     build(parts, om, part_of);
     om.update_face_normals();
 
-    LazyDecimater decimater(om, Guards(settings.max_normal_turn_degrees, min_twice_area));
+    LazyDecimater decimater(om, Guards(settings.max_normal_turn_degrees, min_twice_area),
+                            settings.foot_height);
     decimater.initialize();
     const std::size_t expected = om.n_faces() > target ? (om.n_faces() - target) / 2 : 0;
     ProgressObserver observer(std::max<std::size_t>(expected / 100, 64), expected, settings);

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,9 @@
 #include "core/mesh.h"
 
 namespace sylva {
+
+// The fewest foot vertices a piece keeps (DecimateSettings::foot_height): a hexagon.
+inline constexpr std::size_t kMinFootVertices = 6;
 
 struct DecimateSettings {
     // Triangle budget over all the parts reduced together. They share it: one priority
@@ -41,6 +45,11 @@ struct DecimateSettings {
     // (guarded like a collapse): facets then straddle the input surface instead of
     // lying inside it, which roughly halves the mean distance at game budgets.
     bool relocate_vertices = true;
+    // Vertices at or below this height (Y) are the foot, where the model stands: no
+    // collapse lifts a foot vertex off it (nor does relocation), and each piece keeps at
+    // least kMinFootVertices of them. Without it a thin trunk's base ring, cheap to
+    // collapse, ends in a point and the tree stands on a needle. -inf: no foot.
+    float foot_height = -std::numeric_limits<float>::infinity();
     // Called with the finished fraction (0..1) from the calling thread.
     std::function<void(float)> progress;
     // Polled every few hundred collapses; when it becomes true, decimate() throws

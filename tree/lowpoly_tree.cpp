@@ -124,6 +124,17 @@ void pin_to_ground(Mesh& trunk, float ground) {
         if (p.y < ground) p.y = ground;
 }
 
+// The settings with the trunk's foot (DecimateSettings::foot_height): what lies within half
+// a percent of the trunk's height above its lowest point, the base it stands on.
+DecimateSettings with_foot(DecimateSettings settings, const Mesh& trunk) {
+    if (trunk.positions.empty()) return settings;
+    float high = std::numeric_limits<float>::lowest();
+    for (const glm::vec3& p : trunk.positions) high = std::max(high, p.y);
+    const float ground = lowest_y(trunk);
+    settings.foot_height = ground + 0.005f * (high - ground);
+    return settings;
+}
+
 }  // namespace
 
 std::size_t leaf_budget(const TreeBudget& budget) {
@@ -134,7 +145,7 @@ std::size_t leaf_budget(const TreeBudget& budget) {
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
     const auto [trunk, crown] = solids_to_reduce(tree);
-    ReducedTree out = reduce_solids(trunk, crown, budget, settings);
+    ReducedTree out = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -167,7 +178,7 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     for (const TreeBudget& budget : budgets) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
-        ReducedTree level = reduce_solids(trunk, crown, budget, settings);
+        ReducedTree level = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+#include <limits>
 
 #include "export/export_tree.h"
 #include "marching/mesh_checks.h"
@@ -142,6 +145,40 @@ TEST(TreeReduction, PartsForExport) {
         EXPECT_FALSE(parts[2].closed);
     }
     EXPECT_EQ(tree_parts(tree.trunk, Mesh{}, Mesh{}, colors).size(), 1u);
+}
+
+// The horizontal extent of what lies within 1% of the height above the lowest point: where
+// the trunk meets the ground.
+float footprint(const Mesh& trunk) {
+    float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
+    for (const glm::vec3& p : trunk.positions) {
+        low = std::min(low, p.y);
+        high = std::max(high, p.y);
+    }
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : trunk.positions)
+        if (p.y <= low + 0.01f * (high - low)) {
+            lo = glm::min(lo, glm::vec2(p.x, p.z));
+            hi = glm::max(hi, glm::vec2(p.x, p.z));
+        }
+    return std::max(hi.x - lo.x, hi.y - lo.y);
+}
+
+// A thin trunk's base ring is cheap to collapse: the elm and the ternary tree stood on a
+// single vertex at 800 triangles, their lowest 4 m a cone to a point. The foot stays.
+TEST(TreeReduction, TheTrunkKeepsItsFootAtEveryBudgetAndLevel) {
+    for (const char* name : {"elm", "ternary"}) {
+        const Tree tree = generate_tree(load_template(name));
+        const float raw = footprint(tree.trunk);
+        ASSERT_GT(raw, 0.1f) << name;
+        for (std::size_t budget : {100u, 800u}) {
+            const ReducedTree r = reduce_tree(tree, total(budget));
+            EXPECT_GT(footprint(r.trunk), 0.7f * raw) << name << " at " << budget;
+        }
+        const std::vector<TreeBudget> budgets = lod_budgets(total(800), 4);
+        for (const ReducedTree& level : make_lod_chain(tree, budgets))
+            EXPECT_GT(footprint(level.trunk), 0.7f * raw) << name << " LOD " << level.triangles;
+    }
 }
 
 }  // namespace
