@@ -22,10 +22,14 @@ TEST(VariationParams, DefaultsChangeNothing) {
 }
 
 TEST(VariationParams, OutOfRangeValuesNameTheKey) {
-    const std::pair<const char*, const char*> bad[] = {
-        {"age", "1.5"},    {"age", "-0.1"},      {"bend", "400"},
-        {"jitter", "1"},   {"bend_frequency", "0"}, {"width_variation", "nan"},
-        {"tropism_variation", "3"}, {"color_variation", "2"}};
+    const std::pair<const char*, const char*> bad[] = {{"age", "1.5"},
+                                                       {"age", "-0.1"},
+                                                       {"bend", "400"},
+                                                       {"jitter", "1"},
+                                                       {"bend_frequency", "0"},
+                                                       {"width_variation", "nan"},
+                                                       {"tropism_variation", "3"},
+                                                       {"color_variation", "2"}};
     for (const auto& [key, value] : bad) {
         TreeParams p;
         try {

@@ -49,8 +49,10 @@ TEST(TurtleVariation, EachAmountIsSeededAndDeterministic) {
     for (int which = 0; which < 4; ++which) {
         TurtleSettings s;
         s.elasticity = 0.3;
-        (which == 0 ? s.bend : which == 1 ? s.jitter : which == 2 ? s.width_variation
-                                                                   : s.tropism_variation) = 0.5;
+        (which == 0   ? s.bend
+         : which == 1 ? s.jitter
+         : which == 2 ? s.width_variation
+                      : s.tropism_variation) = 0.5;
         if (which == 0) s.bend = 40.0;
         TurtleSettings other = s;
         other.seed = 2;
@@ -111,8 +113,8 @@ TEST(TurtleVariation, JitterStaysWithinItsRange) {
             EXPECT_LE(length, 1.3 + 1e-5);
         }
         for (int i : {1, 2}) {
-            const double angle =
-                degrees_between(t.segments[0].b - t.segments[0].a, t.segments[i].b - t.segments[i].a);
+            const double angle = degrees_between(t.segments[0].b - t.segments[0].a,
+                                                 t.segments[i].b - t.segments[i].a);
             EXPECT_GE(angle, 40.0 * 0.7 - 1e-3);
             EXPECT_LE(angle, 40.0 * 1.3 + 1e-3);
             EXPECT_EQ(t.segments[i].a, t.segments[0].b);
