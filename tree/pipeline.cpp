@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "core/stopwatch.h"
+#include "core/tree_age.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "tree/crown_merge.h"
@@ -85,14 +86,30 @@ Box crown_bounds(const std::vector<Ball>& balls) {
     return box;
 }
 
+// Snaps `box` outwards to the world lattice of `cell`s (so trees of different ages sample the
+// same grid points) with at least 4 cells on its longest side; a cell of 0 leaves it. Returns
+// the cell the box is then meshed with.
+float fit_to_cells(Box& box, float cell, int resolution) {
+    if (!(cell > 0.0f)) return cell_size(box, resolution);
+    box.min = glm::floor(box.min / cell) * cell;
+    box.max = glm::ceil(box.max / cell) * cell;
+    const glm::vec3 extent = box.max - box.min;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
+    box.max[axis] = std::max(box.max[axis], box.min[axis] + 4.0f * cell);
+    return cell;
+}
+
 // The crown's field over `balls`, and the box it is meshed in.
-void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreeParams& p) {
+void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreeParams& p,
+                     float fixed_cell) {
     float fusion = static_cast<float>(p.crown_fusion);
     // The root smooth min swells the union by up to fusion / 2 where spheres meet.
     fields.crown_box = crown_bounds(balls);
     fields.crown_box.min -= glm::vec3(fusion);
     fields.crown_box.max += glm::vec3(fusion);
-    float crown_cell = cell_size(fields.crown_box, p.crown_resolution);
+    float crown_cell = fit_to_cells(fields.crown_box, fixed_cell, p.crown_resolution);
     balls = merge_coincident_balls(std::move(balls), kMergeToleranceInCells * crown_cell);
     float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
     if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
@@ -216,33 +233,72 @@ Box skeleton_bounds(const Skeleton& skeleton) {
     return box;
 }
 
-TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p) {
+int cells_along(const Box& box, float cell) {
+    const glm::vec3 extent = box.max - box.min;
+    return static_cast<int>(std::lround(std::max({extent.x, extent.y, extent.z}) / cell));
+}
+
+TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const FieldCells& cells) {
     TreeFields fields;
     // The joint blend swells the union by up to joint_blend / 4 where cones meet.
     float joint_blend = static_cast<float>(p.joint_blend);
     fields.trunk_box = skeleton_bounds(skeleton);
     fields.trunk_box.min -= glm::vec3(joint_blend);
     fields.trunk_box.max += glm::vec3(joint_blend);
-    float trunk_cell = cell_size(fields.trunk_box, p.trunk_resolution);
+    float trunk_cell = fit_to_cells(fields.trunk_box, cells.trunk, p.trunk_resolution);
     std::vector<CappedCone> cones = resolvable_cones(skeleton, trunk_cell);
     if (!cones.empty())
         fields.trunk.emplace(std::move(cones), kFieldMarginInCells * trunk_cell + joint_blend,
                              joint_blend);
 
     std::vector<Ball> balls = crown_spheres(skeleton, p);
-    if (!balls.empty() && p.sphere_diameter > 0.0) add_crown_field(fields, std::move(balls), p);
+    if (!balls.empty() && p.sphere_diameter > 0.0)
+        add_crown_field(fields, std::move(balls), p, cells.crown);
     return fields;
 }
 
+namespace {
+
+// A younger tree (core/tree_age.h) is meshed with the mature tree's cells, not with as many
+// cells as the mature one over its smaller box: the sapling then shows the detail per meter
+// the grown tree does, and its triangles rise with its size instead of staying flat (or
+// wobbling with a rounded resolution). Its crown spheres shrink with age.
+FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
+    FieldCells cells;
+    const float joint_blend = static_cast<float>(p.joint_blend);
+    Box trunk = skeleton_bounds(mature);
+    trunk.min -= glm::vec3(joint_blend);
+    trunk.max += glm::vec3(joint_blend);
+    cells.trunk = cell_size(trunk, p.trunk_resolution);
+    const std::vector<Ball> balls = crown_spheres(mature, p);
+    if (!balls.empty() && p.sphere_diameter > 0.0) {
+        Box crown = crown_bounds(balls);
+        crown.min -= glm::vec3(static_cast<float>(p.crown_fusion));
+        crown.max += glm::vec3(static_cast<float>(p.crown_fusion));
+        cells.crown = cell_size(crown, p.crown_resolution);
+    }
+    const double crown_scale = crown_scale_at_age(p.age);
+    p.sphere_diameter *= crown_scale;
+    p.crown_offset *= crown_scale;
+    return cells;
+}
+
+}  // namespace
+
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
-    out.skeleton = grow(tree, {options.cancel, &out.times});
+    Skeleton mature;
+    out.skeleton = grow(tree, {options.cancel, &out.times}, &mature);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
+    const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
 
     check_extent(out.skeleton);
     Stopwatch clock;
-    TreeFields fields = tree_fields(out.skeleton, p);
+    TreeFields fields = tree_fields(out.skeleton, p, cells);
+    if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
+    if (cells.crown > 0.0f && fields.crown)
+        p.crown_resolution = cells_along(fields.crown_box, cells.crown);
     if (!fields.trunk)
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "

@@ -69,7 +69,19 @@ struct TreeFields {
     Box crown_box;
     std::optional<SphereField> crown;  // empty without tips or with sphere_diameter 0
 };
-TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params);
+// Cell sizes to mesh at instead of the resolutions' (0: from the resolution). A younger tree
+// (core/tree_age.h) is meshed with its mature tree's cells: each box then grows on its
+// longest side to a whole number of those cells (at least 4), and that number is the
+// resolution the meshing must use (cells_along()).
+struct FieldCells {
+    float trunk = 0.0f;
+    float crown = 0.0f;
+};
+TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
+                       const FieldCells& cells = {});
+
+// The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
+int cells_along(const Box& box, float cell);
 
 // Seed 001's crown primitives: a sphere of diameter sphere_diameter at every tip's end,
 // raised by crown_offset on Y.
