@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-
 #include <glm/geometric.hpp>
+#include <map>
 
 #include "core/errors.h"
 
@@ -14,7 +13,9 @@ namespace {
 
 constexpr double kTurnTolerance = 1e-6;
 
-bool near(double a, double b) { return std::abs(a - b) < kTurnTolerance; }
+bool near(double a, double b) {
+    return std::abs(a - b) < kTurnTolerance;
+}
 
 double ccw_gap(const Directions& dirs, int from, int to) {
     double d = dirs.degrees[to] - dirs.degrees[from];
@@ -55,7 +56,8 @@ double base_turn(const Directions& dirs, int a, int b) {
 void set_wraps(Boundary& b, const Directions& dirs) {
     for (std::size_t i = 0; i < b.size(); ++i) {
         const BoundaryItem& next = b[(i + 1) % b.size()];
-        b[i].wraps = static_cast<int>(std::lround((b[i].turn - base_turn(dirs, b[i].label.dir, next.label.dir)) / 360.0));
+        b[i].wraps = static_cast<int>(
+            std::lround((b[i].turn - base_turn(dirs, b[i].label.dir, next.label.dir)) / 360.0));
     }
 }
 
@@ -238,7 +240,8 @@ Example make_example(const PolygonMesh& mesh) {
         }
     std::sort(all.begin(), all.end());
     for (double a : all)
-        if (ex.dirs.degrees.empty() || a - ex.dirs.degrees.back() > 1e-4) ex.dirs.degrees.push_back(a);
+        if (ex.dirs.degrees.empty() || a - ex.dirs.degrees.back() > 1e-4)
+            ex.dirs.degrees.push_back(a);
     auto dir_of = [&](double deg) {
         if (deg >= 360.0 - 1e-4) deg -= 360.0;
         int best = 0;
@@ -249,7 +252,8 @@ Example make_example(const PolygonMesh& mesh) {
     };
     const int nd = static_cast<int>(ex.dirs.degrees.size());
     ex.dirs.opposite.resize(nd);
-    for (int d = 0; d < nd; ++d) ex.dirs.opposite[d] = dir_of(std::fmod(ex.dirs.degrees[d] + 180.0, 360.0));
+    for (int d = 0; d < nd; ++d)
+        ex.dirs.opposite[d] = dir_of(std::fmod(ex.dirs.degrees[d] + 180.0, 360.0));
     // Colours: 0 the outside, then each polygon colour in order of appearance.
     ex.dirs.palette = {0};
     std::map<std::uint32_t, int> color_index;
@@ -262,7 +266,8 @@ Example make_example(const PolygonMesh& mesh) {
     std::map<std::pair<int, int>, int> left_of;
     for (const Polygon& p : mesh.polygons)
         for (std::size_t i = 0; i < p.vertices.size(); ++i)
-            left_of[{p.vertices[i], p.vertices[(i + 1) % p.vertices.size()]}] = color_index[p.color];
+            left_of[{p.vertices[i], p.vertices[(i + 1) % p.vertices.size()]}] =
+                color_index[p.color];
     std::map<int, int> vertex_index;
     for (const auto& [e, c] : left_of)
         for (int v : {e.first, e.second})
@@ -271,7 +276,8 @@ Example make_example(const PolygonMesh& mesh) {
     std::vector<double> length_sum(nd, 0.0);
     std::vector<int> length_count(nd, 0);
     std::map<std::pair<int, int>, bool> undirected;
-    for (const auto& [e, c] : left_of) undirected[{std::min(e.first, e.second), std::max(e.first, e.second)}] = true;
+    for (const auto& [e, c] : left_of)
+        undirected[{std::min(e.first, e.second), std::max(e.first, e.second)}] = true;
     auto left = [&](int a, int b) {
         const auto it = left_of.find({a, b});
         return it == left_of.end() ? 0 : it->second;
@@ -280,7 +286,8 @@ Example make_example(const PolygonMesh& mesh) {
         const int a = e.first, b = e.second;
         const int d = dir_of(angle_of(a, b));
         ex.graph.vertices[vertex_index[a]].push_back({d, left(a, b), vertex_index[b]});
-        ex.graph.vertices[vertex_index[b]].push_back({ex.dirs.opposite[d], left(b, a), vertex_index[a]});
+        ex.graph.vertices[vertex_index[b]].push_back(
+            {ex.dirs.opposite[d], left(b, a), vertex_index[a]});
         const double len = glm::length(mesh.vertices[b] - mesh.vertices[a]);
         length_sum[d] += len, ++length_count[d];
         length_sum[ex.dirs.opposite[d]] += len, ++length_count[ex.dirs.opposite[d]];
@@ -289,10 +296,12 @@ Example make_example(const PolygonMesh& mesh) {
         std::sort(ds.begin(), ds.end(), [](const Dart& x, const Dart& y) { return x.dir < y.dir; });
         for (std::size_t i = 1; i < ds.size(); ++i)
             if (ds[i].dir == ds[i - 1].dir)
-                throw InputError("two edges leave one vertex in the same direction (overlapping edges)");
+                throw InputError(
+                    "two edges leave one vertex in the same direction (overlapping edges)");
     }
     ex.dirs.mean_length.resize(nd);
-    for (int d = 0; d < nd; ++d) ex.dirs.mean_length[d] = length_count[d] ? length_sum[d] / length_count[d] : 1.0;
+    for (int d = 0; d < nd; ++d)
+        ex.dirs.mean_length[d] = length_count[d] ? length_sum[d] / length_count[d] : 1.0;
     return ex;
 }
 
@@ -346,7 +355,8 @@ std::string boundary_string(const Boundary& b, const Directions& dirs) {
 
 std::vector<Label> star(const AngleGraph& g, int v) {
     std::vector<Label> s;
-    for (std::size_t i = 0; i < g.vertices[v].size(); ++i) s.push_back(dart_label(g, v, static_cast<int>(i)));
+    for (std::size_t i = 0; i < g.vertices[v].size(); ++i)
+        s.push_back(dart_label(g, v, static_cast<int>(i)));
     return s;
 }
 

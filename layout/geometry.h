@@ -4,14 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <vector>
 
 namespace sylva::layout {
 
-inline double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+inline double cross(glm::dvec2 a, glm::dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 inline double signed_area(const std::vector<glm::dvec2>& pts) {
     double a = 0;

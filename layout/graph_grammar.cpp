@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <functional>
-#include <tuple>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "core/errors.h"
 #include "core/random.h"
@@ -17,7 +17,9 @@ namespace sylva::layout {
 
 namespace {
 
-int label_code(const Label& l) { return (l.dir * 4096 + l.left) * 4096 + l.right; }
+int label_code(const Label& l) {
+    return (l.dir * 4096 + l.left) * 4096 + l.right;
+}
 
 // The key of a run of boundary items: labels and the wraps between them (not after the last).
 std::vector<int> run_key(const Boundary& b, std::size_t start, std::size_t length) {
@@ -66,14 +68,16 @@ class Decomposer {
         closed_.emplace(closed_key(c.boundary), index);
         // Every opening of the boundary: a rotation, all items, the wrap at the end dropped.
         for (std::size_t r = 0; r < c.boundary.size(); ++r)
-            open_[run_key(c.boundary, r, c.boundary.size())].emplace_back(index, static_cast<int>(r));
+            open_[run_key(c.boundary, r, c.boundary.size())].emplace_back(index,
+                                                                          static_cast<int>(r));
         candidates_.push_back(std::move(c));
     }
 
     const Candidate& candidate(int i) const { return candidates_[i]; }
 
     // Pieces whose boundaries compose `b` (positions[i] is b[i]'s place in the original).
-    std::optional<std::vector<Placed>> decompose(const Boundary& b, const std::vector<int>& positions,
+    std::optional<std::vector<Placed>> decompose(const Boundary& b,
+                                                 const std::vector<int>& positions,
                                                  int depth) const {
         const std::size_t n = b.size();
         const auto exact = closed_.find(closed_key(b));
@@ -110,7 +114,8 @@ class Decomposer {
                 Placed p{index, {}};
                 const std::size_t m = candidates_[index].boundary.size();
                 for (std::size_t k = 0; k < length; ++k)
-                    p.positions.emplace_back(positions[(s + k) % n], static_cast<int>((rotation + k) % m));
+                    p.positions.emplace_back(positions[(s + k) % n],
+                                             static_cast<int>((rotation + k) % m));
                 tail->insert(tail->begin(), p);
                 return tail;
             }
@@ -156,7 +161,8 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
     grammar.dirs = example.dirs;
     const Directions& dirs = grammar.dirs;
     grammar.example_vertices = static_cast<int>(example.graph.vertices.size());
-    const int max_vertices = settings.max_vertices > 0 ? settings.max_vertices : grammar.example_vertices;
+    const int max_vertices =
+        settings.max_vertices > 0 ? settings.max_vertices : grammar.example_vertices;
 
     // Generation 1: the primitives (one vertex, every edge split), without duplicates.
     std::set<std::vector<int>> seen;
@@ -211,13 +217,15 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
                 Rule rule;
                 rule.left = child;
                 rule.boundary = boundary_string(a.boundary, dirs);
-                for (const BoundaryItem& item : a.boundary) rule.left_ports.push_back(port_of(item, 0, false));
+                for (const BoundaryItem& item : a.boundary)
+                    rule.left_ports.push_back(port_of(item, 0, false));
                 rule.right_ports.resize(a.boundary.size());
                 for (std::size_t k = 0; k < parts->size(); ++k) {
                     const Candidate& c = decomposer.candidate((*parts)[k].candidate);
                     rule.right.push_back(c.piece);
                     for (const auto& [position, item] : (*parts)[k].positions)
-                        rule.right_ports[position] = port_of(c.boundary[item], static_cast<int>(k), c.piece.floating);
+                        rule.right_ports[position] =
+                            port_of(c.boundary[item], static_cast<int>(k), c.piece.floating);
                 }
                 grammar.rules.push_back(std::move(rule));
                 return;
@@ -257,7 +265,8 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
     // The example itself is a complete graph the hierarchy reaches given room enough; when
     // the limits stopped growth before it, it is added as a starter so the grammar always
     // derives at least the example's structure.
-    if (seen.insert(canonical_code(example.graph)).second) grammar.starters.push_back(example.graph);
+    if (seen.insert(canonical_code(example.graph)).second)
+        grammar.starters.push_back(example.graph);
     return grammar;
 }
 
@@ -327,8 +336,10 @@ std::optional<AngleGraph> replace(const AngleGraph& g, const Directions& dirs, c
         if (x.pieces[p.piece]->floating) {
             const auto [v, i] = edges[p.piece];
             const int w = g.vertices[v][i].to;
-            if (p.dart == 0) f = w, fi = g.find(w, dirs.opposite[g.vertices[v][i].dir]);
-            else f = v, fi = i;
+            if (p.dart == 0)
+                f = w, fi = g.find(w, dirs.opposite[g.vertices[v][i].dir]);
+            else
+                f = v, fi = i;
         } else {
             const int gv = maps[p.piece][p.vertex];
             const Dart& d = g.vertices[gv][p.dart];
@@ -342,7 +353,8 @@ std::optional<AngleGraph> replace(const AngleGraph& g, const Directions& dirs, c
     std::vector<int> index(nv, -1);
     AngleGraph h;
     for (int v = 0; v < nv; ++v)
-        if (!removed[v]) index[v] = static_cast<int>(h.vertices.size()), h.vertices.push_back(g.vertices[v]);
+        if (!removed[v])
+            index[v] = static_cast<int>(h.vertices.size()), h.vertices.push_back(g.vertices[v]);
     for (auto& ds : h.vertices)
         for (Dart& d : ds) d.to = d.to >= 0 && !removed[d.to] ? index[d.to] : -1;
     for (const auto& [v, i] : edges) {
@@ -388,8 +400,8 @@ std::optional<AngleGraph> replace(const AngleGraph& g, const Directions& dirs, c
     return h;
 }
 
-std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs, const Side& x, const Side& y,
-                                     Random& rng, int budget) {
+std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs, const Side& x,
+                                     const Side& y, Random& rng, int budget) {
     const int nv = static_cast<int>(g.vertices.size());
     // Candidates per piece.
     std::vector<std::vector<std::vector<int>>> vertex_options(x.pieces.size());
@@ -399,7 +411,8 @@ std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs
         if (piece.floating) {
             for (int v = 0; v < nv; ++v)
                 for (std::size_t i = 0; i < g.vertices[v].size(); ++i)
-                    if (g.vertices[v][i].to >= 0 && dart_label(g, v, static_cast<int>(i)) == piece.edge)
+                    if (g.vertices[v][i].to >= 0 &&
+                        dart_label(g, v, static_cast<int>(i)) == piece.edge)
                         edge_options[p].emplace_back(v, static_cast<int>(i));
             if (edge_options[p].empty()) return std::nullopt;
             shuffle(edge_options[p], rng);
@@ -419,9 +432,10 @@ std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs
     std::vector<std::vector<int>> maps(np);
     std::vector<std::pair<int, int>> edges(np, {-1, -1});
     int tries = 0;
-    std::function<std::optional<AngleGraph>(std::size_t, std::set<int>&, std::set<std::pair<int, int>>&)> pick =
-        [&](std::size_t p, std::set<int>& used_vertices,
-            std::set<std::pair<int, int>>& used_edges) -> std::optional<AngleGraph> {
+    std::function<std::optional<AngleGraph>(std::size_t, std::set<int>&,
+                                            std::set<std::pair<int, int>>&)>
+        pick = [&](std::size_t p, std::set<int>& used_vertices,
+                   std::set<std::pair<int, int>>& used_edges) -> std::optional<AngleGraph> {
         if (tries >= budget) return std::nullopt;
         if (p == np) {
             ++tries;
@@ -429,7 +443,8 @@ std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs
             for (std::size_t q = 0; q < np; ++q)
                 if (x.pieces[q]->floating) {
                     const auto [v, i] = edges[q];
-                    if (used_vertices.count(v) || used_vertices.count(g.vertices[v][i].to)) return std::nullopt;
+                    if (used_vertices.count(v) || used_vertices.count(g.vertices[v][i].to))
+                        return std::nullopt;
                 }
             return replace(g, dirs, x, maps, edges, y);
         }
@@ -466,12 +481,13 @@ std::optional<AngleGraph> apply_side(const AngleGraph& g, const Directions& dirs
 
 }  // namespace
 
-AngleGraph derive_graph(const Grammar& grammar, std::uint64_t seed, const GenerateSettings& settings) {
+AngleGraph derive_graph(const Grammar& grammar, std::uint64_t seed,
+                        const GenerateSettings& settings) {
     if (grammar.starters.empty()) throw InputError("the grammar has no starter rule");
     Random rng(seed);
     AngleGraph g = grammar.starters[rng.next() % grammar.starters.size()];
-    const int max_vertices =
-        settings.max_vertices > 0 ? settings.max_vertices : std::max(24, 3 * grammar.example_vertices);
+    const int max_vertices = settings.max_vertices > 0 ? settings.max_vertices
+                                                       : std::max(24, 3 * grammar.example_vertices);
     if (grammar.rules.empty()) return g;
     for (int step = 0; step < settings.steps; ++step) {
         const Rule& rule = grammar.rules[rng.next() % grammar.rules.size()];
@@ -481,8 +497,8 @@ AngleGraph derive_graph(const Grammar& grammar, std::uint64_t seed, const Genera
         left.pieces.push_back(&left_piece);
         Side right{{}, &rule.right_ports};
         for (const Piece& p : rule.right) right.pieces.push_back(&p);
-        std::optional<AngleGraph> h =
-            grow ? apply_side(g, grammar.dirs, right, left, rng, 24) : apply_side(g, grammar.dirs, left, right, rng, 24);
+        std::optional<AngleGraph> h = grow ? apply_side(g, grammar.dirs, right, left, rng, 24)
+                                           : apply_side(g, grammar.dirs, left, right, rng, 24);
         if (h && static_cast<int>(h->vertices.size()) <= max_vertices) g = std::move(*h);
     }
     return g;
@@ -536,8 +552,10 @@ std::string write_grammar_json(const Grammar& grammar) {
         rule["left_ports"] = ports_json(r.left_ports);
         rule["right"] = nlohmann::ordered_json::array();
         for (const Piece& p : r.right) {
-            if (p.floating) rule["right"].push_back({{"edge", {p.edge.dir, p.edge.left, p.edge.right}}});
-            else rule["right"].push_back({{"graph", graph_json(p.graph)}});
+            if (p.floating)
+                rule["right"].push_back({{"edge", {p.edge.dir, p.edge.left, p.edge.right}}});
+            else
+                rule["right"].push_back({{"graph", graph_json(p.graph)}});
         }
         rule["right_ports"] = ports_json(r.right_ports);
         doc["rules"].push_back(std::move(rule));
@@ -581,8 +599,10 @@ struct GrammarReader {
             for (std::size_t i = 0; i < array(vs[v], vk).size(); ++i) {
                 const std::string dk = vk + "[" + std::to_string(i) + "]";
                 const auto& d = vs[v][i];
-                if (!d.is_array() || d.size() != 3) fail(dk, "expected [direction, colour, vertex]");
-                ds.push_back({integer(d[0], dk, 0, directions - 1), integer(d[1], dk, 0, colors - 1),
+                if (!d.is_array() || d.size() != 3)
+                    fail(dk, "expected [direction, colour, vertex]");
+                ds.push_back({integer(d[0], dk, 0, directions - 1),
+                              integer(d[1], dk, 0, colors - 1),
                               integer(d[2], dk, -1, static_cast<int>(vs.size()) - 1)});
             }
         }
@@ -606,42 +626,62 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
     const auto& dirs = in.array(member(doc, "directions"), "directions");
     if (dirs.empty() || dirs.size() > 4096) in.fail("directions", "expected 1 to 4096 angles");
     for (const auto& d : dirs) {
-        if (!d.is_number() || d.get<double>() < 0 || d.get<double>() >= 360) in.fail("directions", "expected angles in [0, 360)");
+        if (!d.is_number() || d.get<double>() < 0 || d.get<double>() >= 360)
+            in.fail("directions", "expected angles in [0, 360)");
         g.dirs.degrees.push_back(d.get<double>());
     }
     in.directions = static_cast<int>(g.dirs.degrees.size());
     for (std::size_t i = 1; i < g.dirs.degrees.size(); ++i)
-        if (g.dirs.degrees[i] <= g.dirs.degrees[i - 1]) in.fail("directions", "expected ascending angles");
+        if (g.dirs.degrees[i] <= g.dirs.degrees[i - 1])
+            in.fail("directions", "expected ascending angles");
     const auto& opp = in.array(member(doc, "opposite"), "opposite");
     if (opp.size() != dirs.size()) in.fail("opposite", "expected one entry per direction");
-    for (const auto& o : opp) g.dirs.opposite.push_back(in.integer(o, "opposite", 0, in.directions - 1));
+    for (const auto& o : opp)
+        g.dirs.opposite.push_back(in.integer(o, "opposite", 0, in.directions - 1));
     for (int d = 0; d < in.directions; ++d)
         if (g.dirs.opposite[g.dirs.opposite[d]] != d ||
-            std::abs(std::fmod(g.dirs.degrees[g.dirs.opposite[d]] - g.dirs.degrees[d] + 720.0, 360.0) - 180.0) > 1e-3)
-            in.fail("opposite", "direction " + std::to_string(d) + " and its opposite are not 180 degrees apart");
+            std::abs(
+                std::fmod(g.dirs.degrees[g.dirs.opposite[d]] - g.dirs.degrees[d] + 720.0, 360.0) -
+                180.0) > 1e-3)
+            in.fail("opposite", "direction " + std::to_string(d) +
+                                    " and its opposite are not 180 degrees apart");
     const auto& lengths = in.array(member(doc, "mean_length"), "mean_length");
     if (lengths.size() != dirs.size()) in.fail("mean_length", "expected one entry per direction");
     for (const auto& l : lengths) {
-        if (!l.is_number() || !(l.get<double>() > 0) || l.get<double>() > 1e7) in.fail("mean_length", "expected lengths > 0");
+        if (!l.is_number() || !(l.get<double>() > 0) || l.get<double>() > 1e7)
+            in.fail("mean_length", "expected lengths > 0");
         g.dirs.mean_length.push_back(l.get<double>());
     }
     const auto& palette = in.array(member(doc, "palette"), "palette");
     if (palette.empty() || palette.size() > 4096) in.fail("palette", "expected 1 to 4096 colours");
     for (const auto& c : palette) {
         const std::string s = c.is_string() ? c.get<std::string>() : "";
-        if (s.size() != 7 || s[0] != '#' || s.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
+        if (s.size() != 7 || s[0] != '#' ||
+            s.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
             in.fail("palette", "expected colours \"#rrggbb\"");
         g.dirs.palette.push_back(static_cast<std::uint32_t>(std::stoul(s.substr(1), nullptr, 16)));
     }
     in.colors = g.dirs.colors();
-    g.example_vertices = in.integer(member(doc, "example_vertices"), "example_vertices", 1, 1 << 20);
+    g.example_vertices =
+        in.integer(member(doc, "example_vertices"), "example_vertices", 1, 1 << 20);
     auto checked = [&](const nlohmann::json& j, const std::string& key, bool complete) {
         AngleGraph graph = in.graph(j, key);
         const Analysis a = analyze(graph, g.dirs);
         if (!a.planar) in.fail(key, "not a planar angle graph (" + a.why + ")");
-        if (a.complete != complete) in.fail(key, complete ? "expected a complete graph" : "expected half-edges");
+        if (a.complete != complete)
+            in.fail(key, complete ? "expected a complete graph" : "expected half-edges");
         return graph;
     };
+    const auto& hierarchy = member(doc, "hierarchy");
+    g.hierarchy_graphs = in.integer(member(hierarchy, "graphs"), "hierarchy.graphs", 0, 1 << 30);
+    g.generations =
+        in.integer(member(hierarchy, "generations"), "hierarchy.generations", 0, 1 << 30);
+    g.open_graphs =
+        in.integer(member(hierarchy, "open_graphs"), "hierarchy.open_graphs", 0, 1 << 30);
+    const auto& primitives = in.array(member(doc, "primitives"), "primitives");
+    for (std::size_t i = 0; i < primitives.size(); ++i)
+        g.primitives.push_back(
+            checked(primitives[i], "primitives[" + std::to_string(i) + "]", false));
     const auto& starters = in.array(member(doc, "starters"), "starters");
     for (std::size_t i = 0; i < starters.size(); ++i)
         g.starters.push_back(checked(starters[i], "starters[" + std::to_string(i) + "]", true));
@@ -652,7 +692,8 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
         if (!j.is_object()) in.fail(key, "expected an object");
         Rule rule;
         rule.left = checked(member(j, "left"), key + ".left", false);
-        if (member(j, "boundary").is_string()) rule.boundary = member(j, "boundary").get<std::string>();
+        if (member(j, "boundary").is_string())
+            rule.boundary = member(j, "boundary").get<std::string>();
         const auto& right = in.array(member(j, "right"), key + ".right");
         if (right.empty() || right.size() > 16) in.fail(key + ".right", "expected 1 to 16 pieces");
         for (std::size_t p = 0; p < right.size(); ++p) {
@@ -660,9 +701,11 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
             Piece piece;
             if (right[p].is_object() && right[p].contains("edge")) {
                 const auto& e = right[p]["edge"];
-                if (!e.is_array() || e.size() != 3) in.fail(pk + ".edge", "expected [direction, left, right]");
+                if (!e.is_array() || e.size() != 3)
+                    in.fail(pk + ".edge", "expected [direction, left, right]");
                 piece.floating = true;
-                piece.edge = {in.integer(e[0], pk, 0, in.directions - 1), in.integer(e[1], pk, 0, in.colors - 1),
+                piece.edge = {in.integer(e[0], pk, 0, in.directions - 1),
+                              in.integer(e[1], pk, 0, in.colors - 1),
                               in.integer(e[2], pk, 0, in.colors - 1)};
             } else if (right[p].is_object() && right[p].contains("graph")) {
                 piece.graph = checked(right[p]["graph"], pk + ".graph", false);
@@ -677,7 +720,8 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
             const auto& ps = in.array(member(j, name), key + "." + name);
             for (std::size_t i = 0; i < ps.size(); ++i) {
                 const std::string k = key + "." + name + "[" + std::to_string(i) + "]";
-                if (!ps[i].is_array() || ps[i].size() != 3) in.fail(k, "expected [piece, vertex, dart]");
+                if (!ps[i].is_array() || ps[i].size() != 3)
+                    in.fail(k, "expected [piece, vertex, dart]");
                 Port p;
                 p.piece = in.integer(ps[i][0], k, 0, static_cast<int>(pieces.size()) - 1);
                 const Piece& piece = pieces[p.piece];
@@ -685,9 +729,13 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
                     p.vertex = in.integer(ps[i][1], k, -1, -1);
                     p.dart = in.integer(ps[i][2], k, 0, 1);
                 } else {
-                    p.vertex = in.integer(ps[i][1], k, 0, static_cast<int>(piece.graph.vertices.size()) - 1);
-                    p.dart = in.integer(ps[i][2], k, 0, static_cast<int>(piece.graph.vertices[p.vertex].size()) - 1);
-                    if (piece.graph.vertices[p.vertex][p.dart].to >= 0) in.fail(k, "not a half-edge");
+                    p.vertex = in.integer(ps[i][1], k, 0,
+                                          static_cast<int>(piece.graph.vertices.size()) - 1);
+                    p.dart =
+                        in.integer(ps[i][2], k, 0,
+                                   static_cast<int>(piece.graph.vertices[p.vertex].size()) - 1);
+                    if (piece.graph.vertices[p.vertex][p.dart].to >= 0)
+                        in.fail(k, "not a half-edge");
                 }
                 out.push_back(p);
             }
@@ -703,15 +751,18 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
         std::size_t right_half_edges = 0;
         for (const Piece& p : rule.right) right_half_edges += p.floating ? 2 : p.graph.half_edges();
         if (rule.left_ports.size() != static_cast<std::size_t>(rule.left.half_edges()) ||
-            rule.right_ports.size() != rule.left_ports.size() || right_half_edges != rule.right_ports.size())
+            rule.right_ports.size() != rule.left_ports.size() ||
+            right_half_edges != rule.right_ports.size())
             in.fail(key, "the ports do not cover the boundary");
         std::set<std::tuple<int, int, int>> distinct;
         for (std::size_t i = 0; i < rule.left_ports.size(); ++i) {
             const Port& l = rule.left_ports[i];
             const Port& rp = rule.right_ports[i];
             if (port_label(left_pieces[0], l) != port_label(rule.right[rp.piece], rp))
-                in.fail(key, "port " + std::to_string(i) + " has different labels on the two sides");
-            if (!distinct.insert({0, l.vertex, l.dart}).second || !distinct.insert({1 + rp.piece, rp.vertex, rp.dart}).second)
+                in.fail(key,
+                        "port " + std::to_string(i) + " has different labels on the two sides");
+            if (!distinct.insert({0, l.vertex, l.dart}).second ||
+                !distinct.insert({1 + rp.piece, rp.vertex, rp.dart}).second)
                 in.fail(key, "port " + std::to_string(i) + " repeats a half-edge");
         }
         g.rules.push_back(std::move(rule));

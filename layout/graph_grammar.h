@@ -77,13 +77,14 @@ struct DeriveSettings {
 Grammar derive_grammar(const Example& example, const DeriveSettings& settings = {});
 
 struct GenerateSettings {
-    int steps = 16;         // rule applications tried
-    int max_vertices = 0;   // 0: 3 x the example's vertex count (at least 24)
-    double grow = 0.7;      // chance of using a rule constructively (right -> left)
+    int steps = 16;        // rule applications tried
+    int max_vertices = 0;  // 0: 3 x the example's vertex count (at least 24)
+    double grow = 0.7;     // chance of using a rule constructively (right -> left)
 };
 
 // A complete angle graph grown from the grammar with `seed` (the same seed, the same graph).
-AngleGraph derive_graph(const Grammar& grammar, std::uint64_t seed, const GenerateSettings& settings = {});
+AngleGraph derive_graph(const Grammar& grammar, std::uint64_t seed,
+                        const GenerateSettings& settings = {});
 
 // The boundary of a piece (a floating edge: its two ends, each turning 180 degrees).
 Boundary piece_boundary(const Piece& piece, const Directions& dirs);

@@ -16,7 +16,8 @@ PolygonMesh load_example(const std::string& name_or_path) {
     for (const auto& [name, text] : builtin_examples())
         if (name == name_or_path) return read_mesh_text(text, name + ".mesh");
     if (!std::filesystem::exists(name_or_path))
-        throw InputError("'" + name_or_path + "' is neither a shipped example (see 'sylva layout examples') nor a file");
+        throw InputError("'" + name_or_path +
+                         "' is neither a shipped example (see 'sylva layout examples') nor a file");
     return read_mesh_file(name_or_path);
 }
 
@@ -31,7 +32,8 @@ std::string read_text(const std::string& path) {
 }
 
 bool is_grammar_file(const std::string& path) {
-    if (std::filesystem::path(path).extension() != ".json" || !std::filesystem::exists(path)) return false;
+    if (std::filesystem::path(path).extension() != ".json" || !std::filesystem::exists(path))
+        return false;
     return read_text(path).find("\"sylva-layout-grammar\"") != std::string::npos;
 }
 
@@ -44,7 +46,8 @@ long long parse_int(const std::string& flag, const std::string& value, long long
         used = 0;
     }
     if (used != value.size() || v < lo || v > hi)
-        throw InputError("expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + value + "'",
+        throw InputError("expected an integer in " + std::to_string(lo) + ".." +
+                             std::to_string(hi) + ", got '" + value + "'",
                          {flag});
     return v;
 }
@@ -54,8 +57,10 @@ long long parse_int(const std::string& flag, const std::string& value, long long
 int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     auto usage = [&](const std::string& why) {
         std::fprintf(err,
-                     "sylva: %s\nusage: sylva layout examples\n       sylva layout derive EXAMPLE -o grammar.json\n"
-                     "       sylva layout generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/\n",
+                     "sylva: %s\nusage: sylva layout examples\n       sylva layout derive EXAMPLE "
+                     "-o grammar.json\n"
+                     "       sylva layout generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps "
+                     "K] -o DIR/\n",
                      why.c_str());
         return 2;
     };
@@ -64,8 +69,8 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     if (sub == "examples") {
         for (const auto& [name, text] : builtin_examples()) {
             const Example ex = make_example(read_mesh_text(text, name));
-            std::fprintf(out, "%s\t%zu polygons, %zu vertices\n", name.c_str(), ex.mesh.polygons.size(),
-                         ex.graph.vertices.size());
+            std::fprintf(out, "%s\t%zu polygons, %zu vertices\n", name.c_str(),
+                         ex.mesh.polygons.size(), ex.graph.vertices.size());
         }
         return 0;
     }
@@ -74,7 +79,9 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     std::uint64_t seed = 1;
     for (std::size_t i = 2; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&]() -> const std::string* { return i + 1 < args.size() ? &args[++i] : nullptr; };
+        auto value = [&]() -> const std::string* {
+            return i + 1 < args.size() ? &args[++i] : nullptr;
+        };
         if (a == "-o" || a == "--output") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
@@ -104,29 +111,37 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     if (sub == "derive") {
         const auto start = std::chrono::steady_clock::now();
         const Grammar grammar = derive_grammar(make_example(load_example(input)));
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         FileSet files;
         files.add(output, [&](std::ostream& o) { o << write_grammar_json(grammar); });
         files.commit();
-        std::fprintf(out, "wrote %s: %zu primitives, %zu starter rules, %zu rules (hierarchy %d graphs, %d open) in %.0f ms\n",
-                     output.c_str(), grammar.primitives.size(), grammar.starters.size(), grammar.rules.size(),
-                     grammar.hierarchy_graphs, grammar.open_graphs, ms);
+        std::fprintf(out,
+                     "wrote %s: %zu primitives, %zu starter rules, %zu rules (hierarchy %d graphs, "
+                     "%d open) in %.0f ms\n",
+                     output.c_str(), grammar.primitives.size(), grammar.starters.size(),
+                     grammar.rules.size(), grammar.hierarchy_graphs, grammar.open_graphs, ms);
         return 0;
     }
     if (sub == "generate") {
-        const Grammar grammar = is_grammar_file(input) ? read_grammar_json(read_text(input), input)
-                                                       : derive_grammar(make_example(load_example(input)));
+        const Grammar grammar = is_grammar_file(input)
+                                    ? read_grammar_json(read_text(input), input)
+                                    : derive_grammar(make_example(load_example(input)));
         GenerateSettings settings;
         settings.steps = static_cast<int>(steps);
-        const std::vector<PolygonMesh> layouts = generate_layouts(grammar, static_cast<int>(count), seed, settings);
+        const std::vector<PolygonMesh> layouts =
+            generate_layouts(grammar, static_cast<int>(count), seed, settings);
         const std::filesystem::path dir(output);
         std::filesystem::create_directories(dir);
         FileSet files;
         for (std::size_t i = 0; i < layouts.size(); ++i) {
             char name[32];
             std::snprintf(name, sizeof name, "layout_%03zu", i);
-            files.add(dir / (std::string(name) + ".json"), [&](std::ostream& o) { o << write_mesh_json(layouts[i]); });
-            files.add(dir / (std::string(name) + ".svg"), [&](std::ostream& o) { o << write_mesh_svg(layouts[i]); });
+            files.add(dir / (std::string(name) + ".json"),
+                      [&](std::ostream& o) { o << write_mesh_json(layouts[i]); });
+            files.add(dir / (std::string(name) + ".svg"),
+                      [&](std::ostream& o) { o << write_mesh_svg(layouts[i]); });
         }
         files.commit();
         std::fprintf(out, "wrote %zu layouts to %s\n", layouts.size(), output.c_str());

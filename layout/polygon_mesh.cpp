@@ -46,12 +46,13 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
     for (int i = 0; i < nv; ++i)
         if (!std::isfinite(mesh.vertices[i].x) || !std::isfinite(mesh.vertices[i].y) ||
             std::abs(mesh.vertices[i].x) > 1e7 || std::abs(mesh.vertices[i].y) > 1e7)
-            throw InputError("vertex " + std::to_string(i) + " is not a finite coordinate within 1e7",
-                             {source});
+            throw InputError(
+                "vertex " + std::to_string(i) + " is not a finite coordinate within 1e7", {source});
     if (mesh.polygons.empty()) throw InputError("no polygons", {source});
     if (mesh.polygons.size() > 20000) throw InputError("more than 20000 polygons", {source});
     double extent = 1e-300;
-    for (const glm::dvec2& p : mesh.vertices) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+    for (const glm::dvec2& p : mesh.vertices)
+        extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
     const double eps = extent * 1e-9;
 
     std::map<std::pair<int, int>, int> directed;  // (a, b) -> polygon with a->b on its boundary
@@ -62,8 +63,9 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
         if (n < 3) fail(source, at, "a polygon needs at least 3 vertices (unclosed polygon)");
         for (int i : poly.vertices)
             if (i < 0 || i >= nv)
-                fail(source, at, "vertex index " + std::to_string(i) + " out of range (" +
-                                     std::to_string(nv) + " vertices)");
+                fail(source, at,
+                     "vertex index " + std::to_string(i) + " out of range (" + std::to_string(nv) +
+                         " vertices)");
         std::vector<int> sorted = poly.vertices;
         std::sort(sorted.begin(), sorted.end());
         if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
@@ -77,15 +79,17 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
             for (int j = i + 1; j < n; ++j) {
                 if (j == i + 1 || (i == 0 && j == n - 1)) continue;
                 if (segments_touch(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n], eps))
-                    fail(source, at, "the polygon is self-intersecting (edges " + std::to_string(i) +
-                                         " and " + std::to_string(j) + " meet)");
+                    fail(source, at,
+                         "the polygon is self-intersecting (edges " + std::to_string(i) + " and " +
+                             std::to_string(j) + " meet)");
             }
         for (int i = 0; i < n; ++i) {
             const int a = poly.vertices[i], b = poly.vertices[(i + 1) % n];
             auto [it, fresh] = directed.emplace(std::pair{a, b}, static_cast<int>(k));
             if (!fresh)
-                fail(source, at, "overlaps polygon " + std::to_string(it->second) + " (both have edge " +
-                                     std::to_string(a) + "-" + std::to_string(b) + " on the same side)");
+                fail(source, at,
+                     "overlaps polygon " + std::to_string(it->second) + " (both have edge " +
+                         std::to_string(a) + "-" + std::to_string(b) + " on the same side)");
         }
     }
     // Distinct undirected edges must not cross or touch except at shared endpoints, and no
@@ -107,14 +111,17 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
                 fail(source, origins[edge_polygon[i]],
                      "vertex " + std::to_string(v) + " lies on edge " + std::to_string(a) + "-" +
                          std::to_string(b) +
-                         " without being one of its corners (T-junction: the boundary is not closed)");
+                         " without being one of its corners (T-junction: the boundary is not "
+                         "closed)");
         for (std::size_t j = i + 1; j < edges.size(); ++j) {
             const auto [c, d] = edges[j];
             if (a == c || a == d || b == c || b == d) continue;
-            if (segments_touch(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c], mesh.vertices[d], eps))
+            if (segments_touch(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c],
+                               mesh.vertices[d], eps))
                 fail(source, origins[edge_polygon[j]],
                      "edge " + std::to_string(c) + "-" + std::to_string(d) + " crosses edge " +
-                         std::to_string(a) + "-" + std::to_string(b) + " (the structure is not planar)");
+                         std::to_string(a) + "-" + std::to_string(b) +
+                         " (the structure is not planar)");
         }
     }
     // With no crossings, two polygons overlap only if one holds a vertex of the other strictly
@@ -128,11 +135,12 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
             // interior point of m per polygon catches identical-outline and nested overlaps.
             const Polygon& other = mesh.polygons[m];
             for (int v : other.vertices)
-                if (std::find(mesh.polygons[k].vertices.begin(), mesh.polygons[k].vertices.end(), v) ==
-                        mesh.polygons[k].vertices.end() &&
+                if (std::find(mesh.polygons[k].vertices.begin(), mesh.polygons[k].vertices.end(),
+                              v) == mesh.polygons[k].vertices.end() &&
                     point_in_polygon(mesh.vertices[v], pts, eps) > 0)
-                    fail(source, origins[m], "overlaps polygon " + std::to_string(k) +
-                                                 " (vertex " + std::to_string(v) + " lies inside it)");
+                    fail(source, origins[m],
+                         "overlaps polygon " + std::to_string(k) + " (vertex " + std::to_string(v) +
+                             " lies inside it)");
             const glm::dvec2 inside = interior_point(mesh, other);
             if (point_in_polygon(inside, pts, eps) > 0)
                 fail(source, origins[m], "overlaps polygon " + std::to_string(k));
@@ -202,8 +210,8 @@ PolygonMesh read_mesh_text(std::string_view text, const std::string& source) {
             const std::string& s = tokens[t].first;
             double v = 0;
             int used = 0;
-            if (std::sscanf(s.c_str(), "%lf%n", &v, &used) != 1 || used != static_cast<int>(s.size()) ||
-                !std::isfinite(v))
+            if (std::sscanf(s.c_str(), "%lf%n", &v, &used) != 1 ||
+                used != static_cast<int>(s.size()) || !std::isfinite(v))
                 error(tokens[t].second, "'" + s + "' is not a number");
             return v;
         };
@@ -219,12 +227,14 @@ PolygonMesh read_mesh_text(std::string_view text, const std::string& source) {
             for (std::size_t t = 2; t < tokens.size(); ++t) {
                 const double v = number(t);
                 if (v != std::floor(v) || v < 0 || v >= static_cast<double>(mesh.vertices.size()))
-                    error(tokens[t].second, "'" + tokens[t].first + "' is not the index of a vertex above (0.." +
-                                                std::to_string(static_cast<long>(mesh.vertices.size()) - 1) + ")");
+                    error(tokens[t].second,
+                          "'" + tokens[t].first + "' is not the index of a vertex above (0.." +
+                              std::to_string(static_cast<long>(mesh.vertices.size()) - 1) + ")");
                 poly.vertices.push_back(static_cast<int>(v));
             }
             if (poly.vertices.size() < 3)
-                error(tokens.back().second, "a polygon needs at least 3 vertices (unclosed polygon)");
+                error(tokens.back().second,
+                      "a polygon needs at least 3 vertices (unclosed polygon)");
             mesh.polygons.push_back(std::move(poly));
             origins.push_back({line_no, {}});
         } else {
@@ -243,8 +253,10 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
         // Byte offset -> line and column.
         int line = 1, column = 1;
         for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-            if (text[i] == '\n') ++line, column = 1;
-            else ++column;
+            if (text[i] == '\n')
+                ++line, column = 1;
+            else
+                ++column;
         }
         throw InputError("not JSON: " + std::string(e.what()), {source, line, column});
     }
@@ -255,7 +267,8 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
     if (!doc.contains("vertices") || !doc["vertices"].is_array())
         throw key_error("vertices", "expected an array of [x, y]");
     if (!doc.contains("polygons") || !doc["polygons"].is_array())
-        throw key_error("polygons", "expected an array of {\"vertices\": [...], \"color\": \"#rrggbb\"}");
+        throw key_error("polygons",
+                        "expected an array of {\"vertices\": [...], \"color\": \"#rrggbb\"}");
     PolygonMesh mesh;
     const auto& vs = doc["vertices"];
     if (vs.size() > 200000) throw key_error("vertices", "more than 200000 vertices");
@@ -286,7 +299,8 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
                 idx[i].get<long long>() >= static_cast<long long>(mesh.vertices.size()))
                 throw key_error(key + ".vertices[" + std::to_string(i) + "]",
                                 "expected the index of a vertex (0.." +
-                                    std::to_string(static_cast<long>(mesh.vertices.size()) - 1) + ")");
+                                    std::to_string(static_cast<long>(mesh.vertices.size()) - 1) +
+                                    ")");
             poly.vertices.push_back(static_cast<int>(idx[i].get<long long>()));
         }
         mesh.polygons.push_back(std::move(poly));
@@ -312,7 +326,8 @@ std::string color_hex(std::uint32_t color) {
 }
 
 std::string write_mesh_text(const PolygonMesh& mesh) {
-    std::string out = "# sylva layout mesh: 'v X Y' vertices (from 0), 'p #rrggbb I J K ...' polygons\n";
+    std::string out =
+        "# sylva layout mesh: 'v X Y' vertices (from 0), 'p #rrggbb I J K ...' polygons\n";
     char buf[96];
     for (const glm::dvec2& v : mesh.vertices) {
         std::snprintf(buf, sizeof buf, "v %.9g %.9g\n", v.x, v.y);
@@ -389,7 +404,8 @@ std::string write_mesh_svg(const PolygonMesh& mesh) {
         out += "<polygon points=\"";
         for (int i : p.vertices) {
             const glm::dvec2 v = mesh.vertices[i];
-            std::snprintf(buf, sizeof buf, "%.2f,%.2f ", (v.x - lo.x) * scale + 10, (hi.y - v.y) * scale + 10);
+            std::snprintf(buf, sizeof buf, "%.2f,%.2f ", (v.x - lo.x) * scale + 10,
+                          (hi.y - v.y) * scale + 10);
             out += buf;
         }
         out += "\" fill=\"" + color_hex(p.color) + "\" stroke=\"#333333\" stroke-width=\"1\"/>\n";

@@ -16,11 +16,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 namespace sylva::layout {
 

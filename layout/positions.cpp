@@ -37,7 +37,8 @@ std::vector<std::vector<double>> null_space(std::vector<double> a, int rows, int
         if (is_pivot[free]) continue;
         std::vector<double> v(cols, 0.0);
         v[free] = 1.0;
-        for (std::size_t r = 0; r < pivot_col.size(); ++r) v[pivot_col[r]] = -at(static_cast<int>(r), free);
+        for (std::size_t r = 0; r < pivot_col.size(); ++r)
+            v[pivot_col[r]] = -at(static_cast<int>(r), free);
         basis.push_back(std::move(v));
     }
     return basis;
@@ -64,7 +65,8 @@ void orthonormalize(std::vector<std::vector<double>>& basis) {
     basis = std::move(out);
 }
 
-std::vector<double> project(const std::vector<std::vector<double>>& q, const std::vector<double>& t) {
+std::vector<double> project(const std::vector<std::vector<double>>& q,
+                            const std::vector<double>& t) {
     std::vector<double> s(t.size(), 0.0);
     for (const auto& b : q) {
         double d = 0;
@@ -76,7 +78,8 @@ std::vector<double> project(const std::vector<std::vector<double>>& q, const std
 
 }  // namespace
 
-std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, std::uint64_t seed, int attempts) {
+std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, std::uint64_t seed,
+                                   int attempts) {
     const Analysis a = analyze(g, dirs);
     if (!a.planar || !a.complete) return std::nullopt;
     const int nv = static_cast<int>(g.vertices.size());
@@ -160,7 +163,8 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
             if (w.turning > 0 || w.color <= 0) continue;
             Polygon p;
             p.color = dirs.palette[w.color];
-            for (auto it = w.darts.rbegin(); it != w.darts.rend(); ++it) p.vertices.push_back(g.vertices[it->first][it->second].to);
+            for (auto it = w.darts.rbegin(); it != w.darts.rend(); ++it)
+                p.vertices.push_back(g.vertices[it->first][it->second].to);
             mesh.polygons.push_back(std::move(p));
         }
         // Every edge of the drawing must keep clear of every other.
@@ -170,7 +174,8 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
         bool planar = true;
         std::vector<std::pair<int, int>> segs;
         for (const auto& [key, e] : edge_of)
-            if (g.vertices[key.first][key.second].dir == edge_dir[e]) segs.emplace_back(key.first, g.vertices[key.first][key.second].to);
+            if (g.vertices[key.first][key.second].dir == edge_dir[e])
+                segs.emplace_back(key.first, g.vertices[key.first][key.second].to);
         for (std::size_t i = 0; i < segs.size() && planar; ++i)
             for (std::size_t j = i + 1; j < segs.size() && planar; ++j) {
                 const auto [p, q] = segs[i];
@@ -203,7 +208,9 @@ std::vector<PolygonMesh> generate_layouts(const Grammar& grammar, int count, std
             const AngleGraph g = derive_graph(grammar, base + 0x9e37u * retry, s);
             mesh = realize(g, grammar.dirs, base ^ 0x5bd1e995u);
         }
-        if (!mesh) throw InputError("no drawable layout found from this grammar (variation " + std::to_string(i) + ")");
+        if (!mesh)
+            throw InputError("no drawable layout found from this grammar (variation " +
+                             std::to_string(i) + ")");
         out.push_back(std::move(*mesh));
     }
     return out;
