@@ -282,6 +282,9 @@ Example make_example(const PolygonMesh& mesh) {
         const auto it = left_of.find({a, b});
         return it == left_of.end() ? 0 : it->second;
     };
+    const int nc = ex.dirs.colors();
+    std::vector<double> label_sum(static_cast<std::size_t>(nd) * nc * nc, 0.0);
+    std::vector<int> label_count(label_sum.size(), 0);
     for (const auto& [e, unused] : undirected) {
         const int a = e.first, b = e.second;
         const int d = dir_of(angle_of(a, b));
@@ -291,7 +294,16 @@ Example make_example(const PolygonMesh& mesh) {
         const double len = glm::length(mesh.vertices[b] - mesh.vertices[a]);
         length_sum[d] += len, ++length_count[d];
         length_sum[ex.dirs.opposite[d]] += len, ++length_count[ex.dirs.opposite[d]];
+        const std::size_t forward =
+            (static_cast<std::size_t>(d) * nc + left(a, b)) * nc + left(b, a);
+        const std::size_t backward =
+            (static_cast<std::size_t>(ex.dirs.opposite[d]) * nc + left(b, a)) * nc + left(a, b);
+        label_sum[forward] += len, ++label_count[forward];
+        label_sum[backward] += len, ++label_count[backward];
     }
+    ex.dirs.label_length.resize(label_sum.size());
+    for (std::size_t k = 0; k < label_sum.size(); ++k)
+        ex.dirs.label_length[k] = label_count[k] ? label_sum[k] / label_count[k] : 0.0;
     for (auto& ds : ex.graph.vertices) {
         std::sort(ds.begin(), ds.end(), [](const Dart& x, const Dart& y) { return x.dir < y.dir; });
         for (std::size_t i = 1; i < ds.size(); ++i)

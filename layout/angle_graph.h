@@ -27,6 +27,9 @@ struct Directions {
     std::vector<double> degrees;  // in [0, 360), ascending
     std::vector<int> opposite;
     std::vector<double> mean_length;
+    // The example's mean length per edge label, index (dir * colors + left) * colors + right;
+    // 0 where the example has no such edge.
+    std::vector<double> label_length;
     // Colour 0 is the outside; palette[c] is colour c's 0xrrggbb (palette[0] unused).
     std::vector<std::uint32_t> palette;
     int colors() const { return static_cast<int>(palette.size()); }

@@ -533,6 +533,7 @@ std::string write_grammar_json(const Grammar& grammar) {
     doc["directions"] = grammar.dirs.degrees;
     doc["opposite"] = grammar.dirs.opposite;
     doc["mean_length"] = grammar.dirs.mean_length;
+    doc["label_length"] = grammar.dirs.label_length;
     nlohmann::ordered_json palette = nlohmann::ordered_json::array();
     for (std::uint32_t c : grammar.dirs.palette) palette.push_back(color_hex(c));
     doc["palette"] = palette;
@@ -616,7 +617,7 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {
         throw InputError("not JSON: " + std::string(e.what()), {source});
     }
     GrammarReader in{source};
@@ -662,6 +663,14 @@ Grammar read_grammar_json(const std::string& text, const std::string& source) {
         g.dirs.palette.push_back(static_cast<std::uint32_t>(std::stoul(s.substr(1), nullptr, 16)));
     }
     in.colors = g.dirs.colors();
+    const auto& label_lengths = in.array(member(doc, "label_length"), "label_length");
+    if (label_lengths.size() != dirs.size() * palette.size() * palette.size())
+        in.fail("label_length", "expected directions x colours x colours entries");
+    for (const auto& l : label_lengths) {
+        if (!l.is_number() || !(l.get<double>() >= 0) || l.get<double>() > 1e7)
+            in.fail("label_length", "expected lengths >= 0");
+        g.dirs.label_length.push_back(l.get<double>());
+    }
     g.example_vertices =
         in.integer(member(doc, "example_vertices"), "example_vertices", 1, 1 << 20);
     auto checked = [&](const nlohmann::json& j, const std::string& key, bool complete) {

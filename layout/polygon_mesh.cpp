@@ -259,6 +259,8 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
                 ++column;
         }
         throw InputError("not JSON: " + std::string(e.what()), {source, line, column});
+    } catch (const nlohmann::json::exception& e) {  // e.g. a number beyond double's range
+        throw InputError("not readable JSON: " + std::string(e.what()), {source});
     }
     auto key_error = [&](const std::string& key, const std::string& what) -> InputError {
         return InputError(key + ": " + what, {source});

@@ -86,12 +86,19 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
     // Edges: one per dart pair, named by the dart leaving the smaller vertex.
     std::map<std::pair<int, int>, int> edge_of;  // (vertex, dart) -> edge
     std::vector<int> edge_dir;
+    std::vector<double> edge_mean;  // the example's mean length of edges with this label
     for (int v = 0; v < nv; ++v)
         for (int i = 0; i < static_cast<int>(g.vertices[v].size()); ++i) {
             const Dart& d = g.vertices[v][i];
             if (d.to < v) continue;
             const int e = static_cast<int>(edge_dir.size());
             edge_dir.push_back(d.dir);
+            const Label l = dart_label(g, v, i);
+            const std::size_t code =
+                (static_cast<std::size_t>(l.dir) * dirs.colors() + l.left) * dirs.colors() +
+                l.right;
+            const double by_label = code < dirs.label_length.size() ? dirs.label_length[code] : 0.0;
+            edge_mean.push_back(by_label > 0 ? by_label : dirs.mean_length[d.dir]);
             edge_of[{v, i}] = e;
             edge_of[{d.to, g.find(d.to, dirs.opposite[d.dir])}] = e;
         }
@@ -125,7 +132,7 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
     for (int attempt = 0; attempt < attempts; ++attempt) {
         std::vector<double> lo(ne), t(ne);
         for (int e = 0; e < ne; ++e) {
-            const double mean = dirs.mean_length[edge_dir[e]];
+            const double mean = edge_mean[e];
             lo[e] = 0.3 * mean;
             t[e] = mean * (0.5 + rng.uniform());
         }

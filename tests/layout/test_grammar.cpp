@@ -3,13 +3,13 @@
 // generated layouts: planar, only the example's edge directions, every vertex neighbourhood
 // found in the example, the same seed giving the same layout.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <tuple>
-#include <unistd.h>
 
 #include "core/errors.h"
 #include "layout/angle_graph.h"
@@ -20,9 +20,13 @@
 namespace sylva::layout {
 namespace {
 
-Example example(const std::string& name) { return make_example(load_example(name)); }
+Example example(const std::string& name) {
+    return make_example(load_example(name));
+}
 
-int count_of(const std::string& s, char c) { return static_cast<int>(std::count(s.begin(), s.end(), c)); }
+int count_of(const std::string& s, char c) {
+    return static_cast<int>(std::count(s.begin(), s.end(), c));
+}
 
 TEST(LayoutAngleGraph, SquareHasFourCornersAndTwoFaces) {
     const Example ex = example("square");
@@ -71,7 +75,8 @@ TEST(LayoutAngleGraph, PlanarityTestRefusesASelfCrossingLoop) {
     ASSERT_TRUE(open.planar) << open.why;
     ASSERT_EQ(open.boundary.size(), 2u);
     // Two half-edges next to each other with a -180 turn: the loop gluing closes the face.
-    EXPECT_TRUE(std::abs(open.boundary[0].turn + 180.0) < 1e-6 || std::abs(open.boundary[1].turn + 180.0) < 1e-6);
+    EXPECT_TRUE(std::abs(open.boundary[0].turn + 180.0) < 1e-6 ||
+                std::abs(open.boundary[1].turn + 180.0) < 1e-6);
     // A vertex with darts out of counter-clockwise order is refused.
     AngleGraph bad = ex.graph;
     std::swap(bad.vertices[0][0], bad.vertices[0][1]);
@@ -99,8 +104,9 @@ TEST(LayoutGrammar, RulesSidesShareTheirBoundary) {
                 const Port& lp = r.left_ports[k];
                 const Port& rp = r.right_ports[k];
                 const Piece& piece = r.right[rp.piece];
-                const Label right = piece.floating ? (rp.dart == 0 ? piece.edge : reversed(piece.edge, ex.dirs))
-                                                   : dart_label(piece.graph, rp.vertex, rp.dart);
+                const Label right =
+                    piece.floating ? (rp.dart == 0 ? piece.edge : reversed(piece.edge, ex.dirs))
+                                   : dart_label(piece.graph, rp.vertex, rp.dart);
                 EXPECT_EQ(dart_label(r.left, lp.vertex, lp.dart), right) << name;
             }
         }
@@ -147,7 +153,8 @@ std::set<Star> stars_of(const Example& ex) {
     for (std::size_t v = 0; v < ex.graph.vertices.size(); ++v) {
         Star s;
         for (const Label& l : star(ex.graph, static_cast<int>(v)))
-            s.emplace_back(std::lround(ex.dirs.degrees[l.dir] * 1000.0) % 360000, ex.dirs.palette[l.left] | (l.left ? 0 : 0xff000000u),
+            s.emplace_back(std::lround(ex.dirs.degrees[l.dir] * 1000.0) % 360000,
+                           ex.dirs.palette[l.left] | (l.left ? 0 : 0xff000000u),
                            ex.dirs.palette[l.right] | (l.right ? 0 : 0xff000000u));
         out.insert(s);
     }
@@ -171,8 +178,10 @@ TEST(LayoutGenerate, EveryOutputIsPlanarAndLocallySimilarToItsExample) {
             EXPECT_NO_THROW(validate_mesh(copy, name)) << name;
             const Example out = make_example(m);
             for (double d : out.dirs.degrees)
-                EXPECT_TRUE(input_dirs.count(std::lround(d * 1000.0) % 360000)) << name << ": direction " << d;
-            for (const Star& s : stars_of(out)) EXPECT_TRUE(input_stars.count(s)) << name << ": a new vertex neighbourhood";
+                EXPECT_TRUE(input_dirs.count(std::lround(d * 1000.0) % 360000))
+                    << name << ": direction " << d;
+            for (const Star& s : stars_of(out))
+                EXPECT_TRUE(input_stars.count(s)) << name << ": a new vertex neighbourhood";
             sizes.insert(m.polygons.size() * 1000 + m.vertices.size());
         }
         distinct_sizes = static_cast<int>(sizes.size());
@@ -197,19 +206,31 @@ TEST(LayoutGenerate, SameSeedSameOutput) {
 }
 
 TEST(LayoutCli, GenerateWritesJsonAndSvgForEveryVariation) {
-    const auto dir = std::filesystem::temp_directory_path() / ("sylva_layout_cli_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("sylva_layout_cli_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::FILE* null = std::fopen("/dev/null", "w");
-    EXPECT_EQ(run_layout_cli({"layout", "generate", "village", "--count", "3", "--seed", "5", "-o", dir.string()}, null, null), 0);
+    EXPECT_EQ(run_layout_cli({"layout", "generate", "village", "--count", "3", "--seed", "5", "-o",
+                              dir.string()},
+                             null, null),
+              0);
     for (const char* f : {"layout_000.json", "layout_000.svg", "layout_002.json", "layout_002.svg"})
         EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
     EXPECT_FALSE(std::filesystem::exists(dir / "layout_003.json"));
     const auto grammar = dir / "g.json";
-    EXPECT_EQ(run_layout_cli({"layout", "derive", "l_shape", "-o", grammar.string()}, null, null), 0);
-    EXPECT_EQ(run_layout_cli({"layout", "generate", grammar.string(), "--count", "2", "-o", (dir / "g").string()}, null, null), 0);
+    EXPECT_EQ(run_layout_cli({"layout", "derive", "l_shape", "-o", grammar.string()}, null, null),
+              0);
+    EXPECT_EQ(run_layout_cli({"layout", "generate", grammar.string(), "--count", "2", "-o",
+                              (dir / "g").string()},
+                             null, null),
+              0);
     EXPECT_TRUE(std::filesystem::exists(dir / "g" / "layout_001.svg"));
-    EXPECT_THROW(run_layout_cli({"layout", "derive", "no_such_example", "-o", grammar.string()}, null, null), InputError);
-    EXPECT_EQ(run_layout_cli({"layout", "generate", "square", "--bogus", "-o", grammar.string()}, null, null), 2);
+    EXPECT_THROW(
+        run_layout_cli({"layout", "derive", "no_such_example", "-o", grammar.string()}, null, null),
+        InputError);
+    EXPECT_EQ(run_layout_cli({"layout", "generate", "square", "--bogus", "-o", grammar.string()},
+                             null, null),
+              2);
     std::fclose(null);
     std::filesystem::remove_all(dir);
 }
