@@ -135,6 +135,48 @@ Port port_of(const BoundaryItem& item, int piece, bool floating) {
     return {piece, item.vertex, item.dart};
 }
 
+bool same_star(const AngleGraph& a, int va, const AngleGraph& b, int vb) {
+    const auto& x = a.vertices[va];
+    const auto& y = b.vertices[vb];
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (x[i].dir != y[i].dir || x[i].left != y[i].left) return false;
+    return true;
+}
+
+// Maps a connected piece into g with piece vertex 0 at `anchor`; false when it does not fit.
+bool map_piece(const AngleGraph& piece, const AngleGraph& g, int anchor, std::vector<int>& map) {
+    map.assign(piece.vertices.size(), -1);
+    map[0] = anchor;
+    std::vector<int> stack{0};
+    std::set<int> used{anchor};
+    while (!stack.empty()) {
+        const int p = stack.back();
+        stack.pop_back();
+        if (!same_star(piece, p, g, map[p])) return false;
+        for (std::size_t i = 0; i < piece.vertices[p].size(); ++i) {
+            const int q = piece.vertices[p][i].to;
+            if (q < 0) continue;
+            const int gq = g.vertices[map[p]][i].to;  // same star: same dart order
+            if (gq < 0) return false;
+            if (map[q] < 0) {
+                if (!used.insert(gq).second) return false;
+                map[q] = gq;
+                stack.push_back(q);
+            } else if (map[q] != gq) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+std::vector<int> star_key(const AngleGraph& g, int v) {
+    std::vector<int> key;
+    for (const Dart& d : g.vertices[v]) key.push_back(d.dir), key.push_back(d.left);
+    return key;
+}
+
 void glue(AngleGraph& g, int v, int i, int w, int j) {
     g.vertices[v][i].to = w;
     g.vertices[w][j].to = v;
@@ -194,6 +236,19 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
             primitive_darts[dart_label(grammar.primitives[p], 0, static_cast<int>(i))].emplace_back(
                 static_cast<int>(p), static_cast<int>(i));
 
+    // Rules by the star of their left side's vertex 0: a new graph that contains a rule's left
+    // side is reduced by that rule, so it (and all it would grow into) leaves the hierarchy.
+    std::map<std::vector<int>, std::vector<int>> rules_by_star;
+    auto reducible = [&](const AngleGraph& c) {
+        std::vector<int> map;
+        for (int v = 0; v < static_cast<int>(c.vertices.size()); ++v) {
+            const auto it = rules_by_star.find(star_key(c, v));
+            if (it == rules_by_star.end()) continue;
+            for (int r : it->second)
+                if (map_piece(grammar.rules[r].left, c, v, map)) return true;
+        }
+        return false;
+    };
     std::vector<AngleGraph> frontier = grammar.primitives;
     grammar.hierarchy_graphs = static_cast<int>(frontier.size());
     grammar.generations = 1;
@@ -205,7 +260,7 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
             if (static_cast<int>(child.vertices.size()) > max_vertices) return;
             if (!seen.insert(canonical_code(child)).second) return;
             const Analysis a = analyze(child, dirs);
-            if (!a.planar) return;
+            if (!a.planar || reducible(child)) return;
             ++grammar.hierarchy_graphs;
             if (a.complete) {
                 grammar.starters.push_back(std::move(child));
@@ -227,6 +282,8 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
                         rule.right_ports[position] =
                             port_of(c.boundary[item], static_cast<int>(k), c.piece.floating);
                 }
+                rules_by_star[star_key(rule.left, 0)].push_back(
+                    static_cast<int>(grammar.rules.size()));
                 grammar.rules.push_back(std::move(rule));
                 return;
             }
@@ -278,42 +335,6 @@ struct Side {
     std::vector<const Piece*> pieces;
     const std::vector<Port>* ports = nullptr;
 };
-
-bool same_star(const AngleGraph& a, int va, const AngleGraph& b, int vb) {
-    const auto& x = a.vertices[va];
-    const auto& y = b.vertices[vb];
-    if (x.size() != y.size()) return false;
-    for (std::size_t i = 0; i < x.size(); ++i)
-        if (x[i].dir != y[i].dir || x[i].left != y[i].left) return false;
-    return true;
-}
-
-// Maps a connected piece into g with piece vertex 0 at `anchor`; false when it does not fit.
-bool map_piece(const AngleGraph& piece, const AngleGraph& g, int anchor, std::vector<int>& map) {
-    map.assign(piece.vertices.size(), -1);
-    map[0] = anchor;
-    std::vector<int> stack{0};
-    std::set<int> used{anchor};
-    while (!stack.empty()) {
-        const int p = stack.back();
-        stack.pop_back();
-        if (!same_star(piece, p, g, map[p])) return false;
-        for (std::size_t i = 0; i < piece.vertices[p].size(); ++i) {
-            const int q = piece.vertices[p][i].to;
-            if (q < 0) continue;
-            const int gq = g.vertices[map[p]][i].to;  // same star: same dart order
-            if (gq < 0) return false;
-            if (map[q] < 0) {
-                if (!used.insert(gq).second) return false;
-                map[q] = gq;
-                stack.push_back(q);
-            } else if (map[q] != gq) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
 
 template <class T>
 void shuffle(std::vector<T>& v, Random& rng) {
