@@ -19,20 +19,22 @@ ImU32 to_imgui(std::uint32_t rgb) {
 }
 
 // Ear clipping (polygons are small and counter-clockwise): ImGui fills convex shapes only.
-void fill_polygon(ImDrawList* list, const std::vector<ImVec2>& screen, const std::vector<glm::dvec2>& pts,
-                  ImU32 color) {
+void fill_polygon(ImDrawList* list, const std::vector<ImVec2>& screen,
+                  const std::vector<glm::dvec2>& pts, ImU32 color) {
     std::vector<int> idx(pts.size());
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
     int guard = 0;
     while (idx.size() > 3 && guard++ < 10000) {
         bool cut = false;
         for (std::size_t i = 0; i < idx.size() && !cut; ++i) {
-            const int a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i], c = idx[(i + 1) % idx.size()];
+            const int a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i],
+                      c = idx[(i + 1) % idx.size()];
             if (layout::cross(pts[b] - pts[a], pts[c] - pts[b]) <= 0) continue;  // reflex or flat
             bool empty = true;
             for (int k : idx) {
                 if (k == a || k == b || k == c) continue;
-                if (layout::point_in_polygon(pts[k], {pts[a], pts[b], pts[c]}, 0.0) >= 0) empty = false;
+                if (layout::point_in_polygon(pts[k], {pts[a], pts[b], pts[c]}, 0.0) >= 0)
+                    empty = false;
             }
             if (!empty) continue;
             list->AddTriangleFilled(screen[a], screen[b], screen[c], color);
@@ -41,7 +43,8 @@ void fill_polygon(ImDrawList* list, const std::vector<ImVec2>& screen, const std
         }
         if (!cut) break;
     }
-    if (idx.size() == 3) list->AddTriangleFilled(screen[idx[0]], screen[idx[1]], screen[idx[2]], color);
+    if (idx.size() == 3)
+        list->AddTriangleFilled(screen[idx[0]], screen[idx[1]], screen[idx[2]], color);
 }
 
 // Draws `mesh` fitted into a size x size cell at the cursor, and advances the cursor.
@@ -49,7 +52,8 @@ void draw_mesh(const layout::PolygonMesh& mesh, float size) {
     ImDrawList* list = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::Dummy(ImVec2(size, size));
-    list->AddRectFilled(origin, ImVec2(origin.x + size, origin.y + size), IM_COL32(250, 250, 245, 255));
+    list->AddRectFilled(origin, ImVec2(origin.x + size, origin.y + size),
+                        IM_COL32(250, 250, 245, 255));
     if (mesh.vertices.empty()) return;
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const glm::dvec2& v : mesh.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
@@ -84,10 +88,12 @@ void rebuild(LayoutPanelState& state) {
         state.input = layout::make_example(layout::read_mesh_text(text, name + ".mesh"));
         state.grammar = layout::derive_grammar(*state.input);
         for (std::size_t i = 0; i < state.grammar->starters.size(); ++i)
-            if (auto m = layout::realize(state.grammar->starters[i], state.grammar->dirs, i + 1)) state.starters.push_back(*m);
+            if (auto m = layout::realize(state.grammar->starters[i], state.grammar->dirs, i + 1))
+                state.starters.push_back(*m);
         layout::GenerateSettings settings;
         settings.steps = state.steps;
-        state.variations = layout::generate_layouts(*state.grammar, state.count, static_cast<std::uint64_t>(state.seed), settings);
+        state.variations = layout::generate_layouts(
+            *state.grammar, state.count, static_cast<std::uint64_t>(state.seed), settings);
     } catch (const std::exception& e) {
         state.error = e.what();
     }
@@ -121,7 +127,8 @@ void draw_layout_panel(LayoutPanelState& state, float width, float height) {
     ImGui::SetNextItemWidth(160);
     if (ImGui::BeginCombo("example", current)) {
         for (std::size_t i = 0; i < examples.size(); ++i)
-            if (ImGui::Selectable(examples[i].first.c_str(), static_cast<int>(i) == state.example)) {
+            if (ImGui::Selectable(examples[i].first.c_str(),
+                                  static_cast<int>(i) == state.example)) {
                 state.example = static_cast<int>(i);
                 state.dirty = true;
             }
@@ -136,12 +143,15 @@ void draw_layout_panel(LayoutPanelState& state, float width, float height) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     if (ImGui::SliderInt("steps", &state.steps, 0, 64)) state.dirty = true;
-    if (!state.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", state.error.c_str());
+    if (!state.error.empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", state.error.c_str());
     if (state.input && state.grammar) {
         const layout::Grammar& g = *state.grammar;
-        ImGui::Text("%zu primitives, %zu starter rules, %zu rules; hierarchy %d graphs in %d generations, %d open",
-                    g.primitives.size(), g.starters.size(), g.rules.size(), g.hierarchy_graphs, g.generations,
-                    g.open_graphs);
+        ImGui::Text(
+            "%zu primitives, %zu starter rules, %zu rules; hierarchy %d graphs in %d generations, "
+            "%d open",
+            g.primitives.size(), g.starters.size(), g.rules.size(), g.hierarchy_graphs,
+            g.generations, g.open_graphs);
         const float cell = 150.0f;
         ImGui::BeginGroup();
         ImGui::TextUnformatted("input");
@@ -160,14 +170,15 @@ void draw_layout_panel(LayoutPanelState& state, float width, float height) {
             const layout::Rule& r = g.rules[i];
             int floating = 0;
             for (const layout::Piece& p : r.right) floating += p.floating;
-            ImGui::Text("L%zu (%zu v) <-> %zu piece(s)%s  %s", i + 1, r.left.vertices.size(), r.right.size(),
-                        floating ? " with edges" : "", r.boundary.c_str());
+            ImGui::Text("L%zu (%zu v) <-> %zu piece(s)%s  %s", i + 1, r.left.vertices.size(),
+                        r.right.size(), floating ? " with edges" : "", r.boundary.c_str());
         }
         if (g.rules.size() > 200) ImGui::Text("... %zu more", g.rules.size() - 200);
         ImGui::EndChild();
         ImGui::Separator();
         ImGui::Text("%zu variations", state.variations.size());
-        const int per_row = std::max(1, static_cast<int>(ImGui::GetContentRegionAvail().x / (cell + 8.0f)));
+        const int per_row =
+            std::max(1, static_cast<int>(ImGui::GetContentRegionAvail().x / (cell + 8.0f)));
         for (std::size_t i = 0; i < state.variations.size(); ++i) {
             if (i % per_row != 0) ImGui::SameLine();
             draw_mesh(state.variations[i], cell);
