@@ -113,6 +113,23 @@ TEST(LayoutGrammar, RulesSidesShareTheirBoundary) {
     }
 }
 
+TEST(LayoutGrammar, GridYieldsTheWallRuleFromTwoComposedBoundaries) {
+    // The seed's example of R1 v R2: a wall across a plot (two T-junctions and the edge
+    // between them) has the boundary of two separate edges put together with one extra
+    // negative turn, so it can replace them (and be replaced by them).
+    const Example ex = example("grid_of_plots");
+    const Grammar g = derive_grammar(ex);
+    bool wall = false;
+    for (const Rule& r : g.rules) {
+        if (r.left.vertices.size() != 2 || r.right.size() != 2) continue;
+        if (!r.right[0].floating || !r.right[1].floating) continue;
+        wall = true;
+        EXPECT_EQ(r.left.edges(), 1);
+        EXPECT_EQ(r.left.half_edges(), 4);
+    }
+    EXPECT_TRUE(wall);
+}
+
 TEST(LayoutGrammar, GrammarFilesRoundTripAndRefuseBadIndices) {
     const Grammar g = derive_grammar(example("t_shape"));
     const std::string json = write_grammar_json(g);
