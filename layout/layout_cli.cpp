@@ -76,6 +76,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     }
     std::string input, output;
     long long count = 8, steps = 16;
+    DeriveSettings derive;
     std::uint64_t seed = 1;
     for (std::size_t i = 2; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -98,6 +99,11 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
             steps = parse_int(a, *v, 0, 1000);
+        } else if (a == "--max-graphs" || a == "--max-vertices") {
+            const std::string* v = value();
+            if (!v) return usage(a + " needs a value");
+            (a == "--max-graphs" ? derive.max_graphs : derive.max_vertices) =
+                static_cast<int>(parse_int(a, *v, 1, 1000000));
         } else if (!a.empty() && a[0] == '-') {
             return usage("unknown option '" + a + "'");
         } else if (input.empty()) {
@@ -110,7 +116,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     if (output.empty()) return usage("layout " + sub + " needs -o");
     if (sub == "derive") {
         const auto start = std::chrono::steady_clock::now();
-        const Grammar grammar = derive_grammar(make_example(load_example(input)));
+        const Grammar grammar = derive_grammar(make_example(load_example(input)), derive);
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
@@ -127,7 +133,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     if (sub == "generate") {
         const Grammar grammar = is_grammar_file(input)
                                     ? read_grammar_json(read_text(input), input)
-                                    : derive_grammar(make_example(load_example(input)));
+                                    : derive_grammar(make_example(load_example(input)), derive);
         GenerateSettings settings;
         settings.steps = static_cast<int>(steps);
         const std::vector<PolygonMesh> layouts =

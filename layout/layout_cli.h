@@ -1,10 +1,11 @@
 // `sylva layout ...`: the command-line face of the layout module, called from app/main.cpp.
 //   sylva layout examples
-//   sylva layout derive EXAMPLE -o grammar.json
+//   sylva layout derive EXAMPLE [--max-graphs N] [--max-vertices N] -o grammar.json
 //   sylva layout generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
-// EXAMPLE is a shipped example's name (`sylva layout examples`) or a .mesh / .json file;
-// GRAMMAR a file written by derive. generate writes DIR/layout_NNN.json and .svg for every
-// variation, all or nothing (core/file_set.h).
+// --max-graphs / --max-vertices bound the graph hierarchy (DeriveSettings; also for generate
+// from an EXAMPLE). EXAMPLE is a shipped example's name (`sylva layout examples`) or a .mesh /
+// .json file; GRAMMAR a file written by derive. generate writes DIR/layout_NNN.json and .svg for
+// every variation, all or nothing (core/file_set.h).
 #pragma once
 
 #include <cstdio>
