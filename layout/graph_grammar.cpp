@@ -582,7 +582,7 @@ std::string write_grammar_json(const Grammar& grammar) {
         rule["right_ports"] = ports_json(r.right_ports);
         doc["rules"].push_back(std::move(rule));
     }
-    return doc.dump(1) + "\n";
+    return doc.dump() + "\n";
 }
 
 namespace {

@@ -19,10 +19,11 @@ namespace {
 struct Origin {
     int line = 0;
     std::string key;
+    std::string text;  // the .mesh line
 };
 
 [[noreturn]] void fail(const std::string& source, const Origin& where, const std::string& what) {
-    if (where.line > 0) throw InputError(what, {source, where.line, 1});
+    if (where.line > 0) throw InputError(what, {source, where.line, 1}, where.text);
     throw InputError(where.key.empty() ? what : where.key + ": " + what, {source});
 }
 
@@ -174,7 +175,7 @@ glm::dvec2 interior_point(const PolygonMesh& mesh, const Polygon& poly) {
 void validate_mesh(PolygonMesh& mesh, const std::string& source) {
     std::vector<Origin> origins;
     for (std::size_t k = 0; k < mesh.polygons.size(); ++k)
-        origins.push_back({0, "polygons[" + std::to_string(k) + "]"});
+        origins.push_back({0, "polygons[" + std::to_string(k) + "]", {}});
     validate(mesh, source, origins);
 }
 
@@ -236,7 +237,7 @@ PolygonMesh read_mesh_text(std::string_view text, const std::string& source) {
                 error(tokens.back().second,
                       "a polygon needs at least 3 vertices (unclosed polygon)");
             mesh.polygons.push_back(std::move(poly));
-            origins.push_back({line_no, {}});
+            origins.push_back({line_no, {}, raw});
         } else {
             error(tokens[0].second, "unknown line kind '" + kind + "' (expected 'v' or 'p')");
         }
@@ -306,7 +307,7 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
             poly.vertices.push_back(static_cast<int>(idx[i].get<long long>()));
         }
         mesh.polygons.push_back(std::move(poly));
-        origins.push_back({0, key});
+        origins.push_back({0, key, {}});
     }
     validate(mesh, source, origins);
     return mesh;
@@ -388,7 +389,7 @@ std::string write_mesh_json(const PolygonMesh& mesh) {
         for (int i : p.vertices) poly["points"].push_back({mesh.vertices[i].x, mesh.vertices[i].y});
         doc["polygons"].push_back(std::move(poly));
     }
-    return doc.dump(1) + "\n";
+    return doc.dump() + "\n";
 }
 
 std::string write_mesh_svg(const PolygonMesh& mesh) {

@@ -105,7 +105,11 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
     const int ne = static_cast<int>(edge_dir.size());
     auto unit = [&](int dir) {
         const double r = dirs.degrees[dir] * M_PI / 180.0;
-        return glm::dvec2(std::cos(r), std::sin(r));
+        glm::dvec2 u(std::cos(r), std::sin(r));
+        // Axis directions exactly: cos(90 degrees) in doubles is 6e-17, not 0.
+        for (int k = 0; k < 2; ++k)
+            if (std::abs(u[k]) < 1e-12) u[k] = 0.0;
+        return u;
     };
     // Closed faces: the steps sum to zero. (Sign: a dart's step is +s along its own direction,
     // and an edge's direction is that of its named dart, so the reverse dart contributes -s.)
@@ -209,11 +213,12 @@ std::vector<PolygonMesh> generate_layouts(const Grammar& grammar, int count, std
         const std::uint64_t base = seeds.next();
         std::optional<PolygonMesh> mesh;
         // A graph that cannot be drawn is grown again from another seed, then with fewer steps.
-        for (int retry = 0; retry < 16 && !mesh; ++retry) {
+        // Last: a bare starter rule, sampled longer.
+        for (int retry = 0; retry <= 16 && !mesh; ++retry) {
             GenerateSettings s = settings;
             s.steps = settings.steps * (16 - retry) / 16;
             const AngleGraph g = derive_graph(grammar, base + 0x9e37u * retry, s);
-            mesh = realize(g, grammar.dirs, base ^ 0x5bd1e995u);
+            mesh = realize(g, grammar.dirs, base ^ 0x5bd1e995u, retry == 16 ? 200 : 12);
         }
         if (!mesh)
             throw InputError("no drawable layout found from this grammar (variation " +
