@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -22,6 +23,15 @@ namespace {
 
 Example example(const std::string& name) {
     return make_example(load_example(name));
+}
+
+// Deriving the larger examples takes a few hundred milliseconds (seconds under the
+// sanitizers): each grammar is derived once for all tests.
+const Grammar& grammar_of(const std::string& name) {
+    static std::map<std::string, Grammar> cache;
+    auto it = cache.find(name);
+    if (it == cache.end()) it = cache.emplace(name, derive_grammar(example(name))).first;
+    return it->second;
 }
 
 int count_of(const std::string& s, char c) {
@@ -45,7 +55,7 @@ TEST(LayoutAngleGraph, SquareHasFourCornersAndTwoFaces) {
 TEST(LayoutAngleGraph, BoundaryStringsOfPlanarGraphsHaveOneMorePositiveTurn) {
     for (const auto& [name, text] : builtin_examples()) {
         const Example ex = example(name);
-        const Grammar g = derive_grammar(ex);
+        const Grammar& g = grammar_of(name);
         std::vector<const AngleGraph*> graphs;
         for (const AngleGraph& p : g.primitives) graphs.push_back(&p);
         for (const Rule& r : g.rules) graphs.push_back(&r.left);
@@ -84,7 +94,7 @@ TEST(LayoutAngleGraph, PlanarityTestRefusesASelfCrossingLoop) {
 }
 
 TEST(LayoutGrammar, SquareYieldsOneStarterRuleAndNoOthers) {
-    const Grammar g = derive_grammar(example("square"));
+    const Grammar& g = grammar_of("square");
     EXPECT_EQ(g.primitives.size(), 4u);
     EXPECT_EQ(g.starters.size(), 1u);
     EXPECT_EQ(g.rules.size(), 0u);
@@ -95,7 +105,7 @@ TEST(LayoutGrammar, SquareYieldsOneStarterRuleAndNoOthers) {
 TEST(LayoutGrammar, RulesSidesShareTheirBoundary) {
     for (const char* name : {"l_shape", "t_shape", "h_shape", "grid_of_plots"}) {
         const Example ex = example(name);
-        const Grammar g = derive_grammar(ex);
+        const Grammar& g = grammar_of(name);
         EXPECT_FALSE(g.rules.empty()) << name;
         for (const Rule& r : g.rules) {
             ASSERT_EQ(r.left_ports.size(), r.right_ports.size());
@@ -117,8 +127,7 @@ TEST(LayoutGrammar, GridYieldsTheWallRuleFromTwoComposedBoundaries) {
     // The seed's example of R1 v R2: a wall across a plot (two T-junctions and the edge
     // between them) has the boundary of two separate edges put together with one extra
     // negative turn, so it can replace them (and be replaced by them).
-    const Example ex = example("grid_of_plots");
-    const Grammar g = derive_grammar(ex);
+    const Grammar& g = grammar_of("grid_of_plots");
     bool wall = false;
     for (const Rule& r : g.rules) {
         if (r.left.vertices.size() != 2 || r.right.size() != 2) continue;
@@ -131,7 +140,7 @@ TEST(LayoutGrammar, GridYieldsTheWallRuleFromTwoComposedBoundaries) {
 }
 
 TEST(LayoutGrammar, GrammarFilesRoundTripAndRefuseBadIndices) {
-    const Grammar g = derive_grammar(example("t_shape"));
+    const Grammar& g = grammar_of("t_shape");
     const std::string json = write_grammar_json(g);
     const Grammar back = read_grammar_json(json, "t.json");
     EXPECT_TRUE(write_grammar_json(back) == json);
@@ -184,7 +193,7 @@ TEST(LayoutGenerate, EveryOutputIsPlanarAndLocallySimilarToItsExample) {
         const std::set<Star> input_stars = stars_of(ex);
         std::set<long> input_dirs;
         for (double d : ex.dirs.degrees) input_dirs.insert(std::lround(d * 1000.0) % 360000);
-        const Grammar g = derive_grammar(ex);
+        const Grammar& g = grammar_of(name);
         const std::vector<PolygonMesh> layouts = generate_layouts(g, 12, 7);
         ASSERT_EQ(layouts.size(), 12u);
         int distinct_sizes = 0;
@@ -209,7 +218,7 @@ TEST(LayoutGenerate, EveryOutputIsPlanarAndLocallySimilarToItsExample) {
 }
 
 TEST(LayoutGenerate, SameSeedSameOutput) {
-    const Grammar g = derive_grammar(example("h_shape"));
+    const Grammar& g = grammar_of("h_shape");
     const auto a = generate_layouts(g, 5, 42);
     const auto b = generate_layouts(g, 5, 42);
     const auto c = generate_layouts(g, 5, 43);
