@@ -21,8 +21,17 @@ ImU32 to_imgui(std::uint32_t rgb) {
 // Ear clipping (polygons are small and counter-clockwise): ImGui fills convex shapes only.
 void fill_polygon(ImDrawList* list, const std::vector<ImVec2>& screen,
                   const std::vector<glm::dvec2>& pts, ImU32 color) {
-    std::vector<int> idx(pts.size());
-    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+    // Collinear corners (a path's side passing plots) would make zero-area ears, which the
+    // anti-aliased fill draws as spikes: leave them out, and fill without the AA fringe.
+    std::vector<int> idx;
+    const std::size_t n = pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec2 a = pts[(i + n - 1) % n], b = pts[i], c = pts[(i + 1) % n];
+        if (std::abs(layout::cross(b - a, c - b)) > 1e-12 * glm::dot(c - a, c - a))
+            idx.push_back(static_cast<int>(i));
+    }
+    const ImDrawListFlags flags = list->Flags;
+    list->Flags &= ~ImDrawListFlags_AntiAliasedFill;
     int guard = 0;
     while (idx.size() > 3 && guard++ < 10000) {
         bool cut = false;
@@ -45,6 +54,7 @@ void fill_polygon(ImDrawList* list, const std::vector<ImVec2>& screen,
     }
     if (idx.size() == 3)
         list->AddTriangleFilled(screen[idx[0]], screen[idx[1]], screen[idx[2]], color);
+    list->Flags = flags;
 }
 
 // Draws `mesh` fitted into a size x size cell at the cursor, and advances the cursor.
