@@ -59,9 +59,9 @@ struct PlantingPolygon {
 };
 std::vector<PlantingPolygon> planting_polygons(const PolygonMesh& mesh);
 
-// The JSON form read above plus, for `sylva forest --layout`, "planting": the same polygons
-// as {"points": [[x, y], ...], "class": "forest"} (and a top-level "polygons" list of that
-// form is under "planting" to keep the input form readable by read_mesh_json).
+// The JSON form read above, each polygon also carrying what `sylva forest --layout` reads:
+// {"polygons": [{"vertices": [...], "color": "#rrggbb", "points": [[x, y], ...],
+// "class": "forest"}, ...]}; read_mesh_json reads it back.
 std::string write_mesh_json(const PolygonMesh& mesh);
 // An SVG picture (y up), each polygon filled with its colour.
 std::string write_mesh_svg(const PolygonMesh& mesh);
