@@ -17,6 +17,9 @@
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
+#ifdef SYLVA_HAS_LAYOUT
+#include "layout/layout_cli.h"
+#endif
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/cost.h"
@@ -43,6 +46,9 @@ Usage:
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva templates
+  sylva layout   examples | derive EXAMPLE -o grammar.json |
+                 generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
+                 (2D layouts from one example, seed 002; see docs/layout.md)
   sylva --help
 
   -t NAME|FILE     a built-in template (see `sylva templates`) or a grammar file;
@@ -303,6 +309,12 @@ int run_skeleton(const Options& o) {
 }
 
 int run(int argc, char** argv) {
+#ifdef SYLVA_HAS_LAYOUT
+    // `sylva layout ...` (layout/layout_cli.h) parses its own arguments.
+    if (argc >= 2 && std::string(argv[1]) == "layout")
+        return layout::run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
+                                      stderr);
+#endif
     Options o = parse_options(argc, argv);
     if (o.command == "--help" || o.command == "-h" || o.command == "help") {
         print_help(stdout);

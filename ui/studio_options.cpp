@@ -47,6 +47,10 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--replay takes a growth step of at least 0, got '" +
                                  std::string(text) + "'");
             options.replay_iteration = step;
+        } else if (arg == "--layout") {
+            const std::string_view name = value();
+            if (name.empty()) throw UsageError("--layout needs an example name");
+            options.layout_example = std::string(name);
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -70,7 +74,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--screenshot PATH [--frames N]]\n"
+           "                    [--replay STEP] [--layout EXAMPLE] [--screenshot PATH [--frames "
+           "N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -82,6 +87,8 @@ std::string studio_usage() {
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
+           "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
+           "                     examples lists them)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

@@ -19,6 +19,7 @@ struct StudioOptions {
     bool envelope = true;
     bool points = false;
     std::optional<int> replay_iteration;
+    std::optional<std::string> layout_example;  // open the layout panel on this example
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.
