@@ -3,11 +3,14 @@
 // Y is up and units are meters in all of them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "export/engine_profile.h"
 #include "export/named_mesh.h"
 
 namespace sylva {
@@ -19,6 +22,19 @@ enum class Shading {
     Smooth,  // one normal per vertex, vertices shared except across creases (mesh_normals.h)
 };
 
+// What write_tree() (export/export_tree.h) puts on the parts for engines.
+struct EngineSettings {
+    bool uvs = true;   // bark along the branches, leaf cards, a box projection on crowns
+    bool wind = true;  // the per-vertex wind data
+    // Collision shapes (trunk hull, crown piece hulls); unset: the profile's default.
+    std::optional<bool> collision = std::nullopt;
+    // 0 (flat colours) to 1: a seeded per-branch, per-crown-piece and per-leaf tint.
+    float color_variation = 0.0f;
+    // 0 (none) to 1: darkening toward the middle of the crown, like ambient occlusion.
+    float crown_occlusion = 0.0f;
+    std::uint64_t seed = 1;  // of the colour variation and the wind phases
+};
+
 struct ExportOptions {
     Shading shading = Shading::Flat;
     // Smooth shading only: faces meeting at more than this many degrees stay sharp.
@@ -27,6 +43,9 @@ struct ExportOptions {
     bool ply_binary = true;
     // The model's name: glTF root node, and with _LOD0.. the level nodes of a LOD chain.
     std::string model_name = "tree";
+    // The engine whose conventions the export follows (export/engine_profile.h).
+    EngineProfile profile = EngineProfile::Generic;
+    EngineSettings engine{};  // read by write_tree(), not by the writers
 };
 
 // One level of detail: the parts of a model.
