@@ -14,7 +14,8 @@ std::vector<Mesh> collision_hulls(const Mesh& trunk, const Mesh& crown, const Sk
                                   std::size_t max_crown_hulls) {
     std::vector<Mesh> hulls;
     if (!trunk.positions.empty() && !skeleton.segments.empty()) {
-        float ground = std::numeric_limits<float>::max(), top = std::numeric_limits<float>::lowest();
+        float ground = std::numeric_limits<float>::max(),
+              top = std::numeric_limits<float>::lowest();
         for (const glm::vec3& p : trunk.positions) {
             ground = std::min(ground, p.y);
             top = std::max(top, p.y);

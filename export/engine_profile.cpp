@@ -35,16 +35,16 @@ std::string profile_names() {
 
 std::string collision_name(EngineProfile profile, const std::string& model, std::size_t index) {
     switch (profile) {
-    case EngineProfile::Unreal: {
-        char number[8];
-        std::snprintf(number, sizeof number, "%02zu", index);
-        return "UCX_" + model + "_" + number;
-    }
-    case EngineProfile::Godot:
-        return model + "_collision_" + std::to_string(index) + "-convcolonly";
-    case EngineProfile::Unity:
-    case EngineProfile::Generic:
-        break;
+        case EngineProfile::Unreal: {
+            char number[8];
+            std::snprintf(number, sizeof number, "%02zu", index);
+            return "UCX_" + model + "_" + number;
+        }
+        case EngineProfile::Godot:
+            return model + "_collision_" + std::to_string(index) + "-convcolonly";
+        case EngineProfile::Unity:
+        case EngineProfile::Generic:
+            break;
     }
     return model + "_collider_" + std::to_string(index);
 }

@@ -83,6 +83,12 @@ class GltfBuilder {
         const PartAttributes* attributes = part.collision ? nullptr : part.attributes;
         const bool with_uv = attributes && !attributes->uv.empty();
         Vertices out;
+        if (part.collision) {  // shared vertices: a closed hull, no normals needed
+            out.positions = mesh.positions;
+            for (const auto& t : mesh.triangles)
+                out.indices.insert(out.indices.end(), t.begin(), t.end());
+            return out;
+        }
         auto add = [&](std::uint32_t source, const glm::vec3& normal, const glm::vec2& uv) {
             out.indices.push_back(static_cast<std::uint32_t>(out.positions.size()));
             out.positions.push_back(mesh.positions[source]);

@@ -30,8 +30,8 @@ std::uint64_t position_key(const glm::vec3& p) {
 }
 
 float sway(const glm::vec3& p, const TreeFrame& frame) {
-    const float h = std::clamp((p.y - frame.ground) / std::max(frame.top - frame.ground, 1e-6f),
-                               0.0f, 1.0f);
+    const float h =
+        std::clamp((p.y - frame.ground) / std::max(frame.top - frame.ground, 1e-6f), 0.0f, 1.0f);
     return h * h;
 }
 
@@ -84,23 +84,23 @@ std::vector<std::array<glm::vec2, 3>> corner_uvs(const Mesh& mesh,
 // The skeleton as branches: a segment continues its parent's branch when it has the
 // parent's depth, else it starts a branch of its own.
 struct Branches {
-    std::vector<int> root;        // per segment: the first segment of its branch
-    std::vector<float> start;     // per segment: branch length before it, metres
-    std::vector<glm::vec3> dir;   // per segment: unit axis
-    std::vector<float> length;    // per segment
-    std::vector<glm::vec3> ref;   // per segment: where u = 0.5 points, transported along
-    std::vector<float> total;     // per root: the branch's length
-    std::vector<int> repeats;     // per root: u repeats around it
-    std::vector<float> base_flex; // per root: the parent's flex where it starts
-    std::vector<float> phase;     // per root
+    std::vector<int> root;         // per segment: the first segment of its branch
+    std::vector<float> start;      // per segment: branch length before it, metres
+    std::vector<glm::vec3> dir;    // per segment: unit axis
+    std::vector<float> length;     // per segment
+    std::vector<glm::vec3> ref;    // per segment: where u = 0.5 points, transported along
+    std::vector<float> total;      // per root: the branch's length
+    std::vector<int> repeats;      // per root: u repeats around it
+    std::vector<float> base_flex;  // per root: the parent's flex where it starts
+    std::vector<float> phase;      // per root
 };
 
 Branches branches(const Skeleton& skeleton, std::uint64_t seed) {
     const auto& segs = skeleton.segments;
     const std::size_t n = segs.size();
-    Branches b{std::vector<int>(n),       std::vector<float>(n), std::vector<glm::vec3>(n),
-               std::vector<float>(n),     std::vector<glm::vec3>(n), std::vector<float>(n, 0.0f),
-               std::vector<int>(n, 1),    std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f)};
+    Branches b{std::vector<int>(n),    std::vector<float>(n),       std::vector<glm::vec3>(n),
+               std::vector<float>(n),  std::vector<glm::vec3>(n),   std::vector<float>(n, 0.0f),
+               std::vector<int>(n, 1), std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f)};
     auto continues = [&](std::size_t i) {
         const int p = segs[i].parent;
         return p >= 0 && static_cast<std::size_t>(p) < i &&
@@ -140,12 +140,14 @@ Branches branches(const Skeleton& skeleton, std::uint64_t seed) {
         }
         // Parents come first, so their root's values are set.
         const auto pr = static_cast<std::size_t>(b.root[static_cast<std::size_t>(p)]);
-        const float along = b.start[static_cast<std::size_t>(p)] + b.length[static_cast<std::size_t>(p)];
+        const float along =
+            b.start[static_cast<std::size_t>(p)] + b.length[static_cast<std::size_t>(p)];
         const bool on_trunk = segs[pr].depth == 0;
-        b.base_flex[i] =
-            on_trunk ? 0.0f
-                     : b.base_flex[pr] + (1.0f - b.base_flex[pr]) *
-                                             std::clamp(along / std::max(b.total[pr], 1e-6f), 0.0f, 1.0f);
+        b.base_flex[i] = on_trunk
+                             ? 0.0f
+                             : b.base_flex[pr] +
+                                   (1.0f - b.base_flex[pr]) *
+                                       std::clamp(along / std::max(b.total[pr], 1e-6f), 0.0f, 1.0f);
         b.phase[i] = on_trunk ? hash01(i, seed) : b.phase[pr];
     }
     return b;
@@ -259,8 +261,8 @@ std::vector<int> owning_segments(const Mesh& mesh, const Skeleton& skeleton) {
     return owner;
 }
 
-PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton,
-                                const TreeFrame& frame, const EngineSettings& settings) {
+PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton, const TreeFrame& frame,
+                                const EngineSettings& settings) {
     PartAttributes out;
     const Branches b = branches(skeleton, settings.seed);
     const SegmentGrid grid(skeleton);
@@ -276,23 +278,29 @@ PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton,
             // A fork's triangles take the branch of their middle, all three corners alike.
             int s = owner[t[0]];
             if (root_of(owner[t[1]]) != root_of(s) || root_of(owner[t[2]]) != root_of(s))
-                s = grid.nearest((trunk.positions[t[0]] + trunk.positions[t[1]] +
-                                  trunk.positions[t[2]]) /
-                                 3.0f);
+                s = grid.nearest(
+                    (trunk.positions[t[0]] + trunk.positions[t[1]] + trunk.positions[t[2]]) / 3.0f);
             if (s >= 0) {
                 for (std::size_t k = 0; k < 3; ++k) {
                     const int own = root_of(owner[t[k]]) == root_of(s) ? owner[t[k]] : s;
                     uv[k] = bark_uv(b, static_cast<std::size_t>(own),
                                     segs[static_cast<std::size_t>(own)], trunk.positions[t[k]]);
                 }
-                // No triangle wraps around the branch: the corners past the seam get u + n.
+                // No triangle wraps around the branch: it spans the shorter way round,
+                // the complement of the widest gap between its corners' u on the circle.
                 const float repeats =
                     static_cast<float>(b.repeats[static_cast<std::size_t>(root_of(s))]);
-                const float lo = std::min({uv[0].x, uv[1].x, uv[2].x});
-                const float hi = std::max({uv[0].x, uv[1].x, uv[2].x});
-                if (hi - lo > 0.5f * repeats)
-                    for (glm::vec2& c : uv)
-                        if (c.x < 0.5f * repeats) c.x += repeats;
+                std::array<std::size_t, 3> order{0, 1, 2};
+                std::sort(order.begin(), order.end(),
+                          [&](std::size_t i, std::size_t j) { return uv[i].x < uv[j].x; });
+                const float lo = uv[order[0]].x, mid = uv[order[1]].x, hi = uv[order[2]].x;
+                const float gap_low = mid - lo, gap_high = hi - mid, gap_wrap = repeats - (hi - lo);
+                if (gap_low > gap_wrap && gap_low >= gap_high) {
+                    uv[order[0]].x += repeats;
+                } else if (gap_high > gap_wrap && gap_high > gap_low) {
+                    uv[order[0]].x += repeats;
+                    uv[order[1]].x += repeats;
+                }
             }
             out.uv.push_back(uv);
         }
@@ -354,7 +362,8 @@ PartAttributes crown_attributes(const Mesh& crown, const TreeFrame& frame,
             // of a LOD chain rarely keeps it, but the phase only has to differ between
             // pieces of one level.
             const std::uint64_t key = position_key(crown.positions[piece[v]]);
-            if (settings.wind) out.wind[v] = {sway(p, frame), 0.5f, hash01(key, settings.seed), 0.0f};
+            if (settings.wind)
+                out.wind[v] = {sway(p, frame), 0.5f, hash01(key, settings.seed), 0.0f};
             if (wants_tint(settings))
                 out.tint[v] = tint(p, hash01(key, settings.seed + 1), frame, settings);
         }
@@ -380,9 +389,8 @@ PartAttributes leaf_attributes(const Mesh& leaves, const TreeFrame& frame,
     for (const auto& t : leaves.triangles) {
         const std::uint32_t leaf = base[t[0]];
         if (has_across[leaf]) continue;
-        const glm::vec3 normal =
-            glm::cross(leaves.positions[t[1]] - leaves.positions[t[0]],
-                       leaves.positions[t[2]] - leaves.positions[t[0]]);
+        const glm::vec3 normal = glm::cross(leaves.positions[t[1]] - leaves.positions[t[0]],
+                                            leaves.positions[t[2]] - leaves.positions[t[0]]);
         const glm::vec3 side = glm::cross(normal, along[leaf]);
         if (glm::length(side) > 0.0f) {
             across[leaf] = glm::normalize(side);
@@ -403,7 +411,8 @@ PartAttributes leaf_attributes(const Mesh& leaves, const TreeFrame& frame,
     for (std::size_t v = 0; v < n; ++v) {
         const glm::vec3& p = leaves.positions[v];
         const std::uint64_t key = position_key(leaves.positions[base[v]]);
-        if (settings.wind) out.wind[v] = {sway(p, frame), 1.0f, hash01(key, settings.seed), uv[v].y};
+        if (settings.wind)
+            out.wind[v] = {sway(p, frame), 1.0f, hash01(key, settings.seed), uv[v].y};
         if (wants_tint(settings))
             out.tint[v] = tint(p, hash01(key, settings.seed + 1), frame, settings);
     }

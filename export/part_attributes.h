@@ -44,8 +44,8 @@ struct TreeFrame {
 };
 TreeFrame tree_frame(const Mesh& trunk, const Mesh& crown, const Mesh& leaves);
 
-PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton,
-                                const TreeFrame& frame, const EngineSettings& settings);
+PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton, const TreeFrame& frame,
+                                const EngineSettings& settings);
 PartAttributes crown_attributes(const Mesh& crown, const TreeFrame& frame,
                                 const EngineSettings& settings);
 // Leaves as tree/leaves.h makes them: no two share a vertex, each fanned from its base.
