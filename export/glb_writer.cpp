@@ -151,9 +151,12 @@ class GltfBuilder {
         const PartAttributes& a = *part.attributes;
         const bool wind = !a.wind.empty();
         const WindChannel channel = profile_info(options_.profile).wind;
-        if (!v.uv.empty() || (wind && channel == WindChannel::TexCoord12))
-            primitive.attributes["TEXCOORD_0"] =
-                add_floats(v.uv.empty() ? std::vector<glm::vec2>(v.positions.size()) : v.uv);
+        if (!v.uv.empty() || (wind && channel == WindChannel::TexCoord12)) {
+            // PartAttributes' v runs up the image (OBJ, OpenGL); glTF's runs down.
+            std::vector<glm::vec2> uv(v.positions.size(), glm::vec2(0.0f));
+            for (std::size_t i = 0; i < v.uv.size(); ++i) uv[i] = {v.uv[i].x, 1.0f - v.uv[i].y};
+            primitive.attributes["TEXCOORD_0"] = add_floats(uv);
+        }
         if (!a.tint.empty() || (wind && channel == WindChannel::Color1)) {
             std::vector<glm::vec3> tint;
             for (std::uint32_t s : v.source)

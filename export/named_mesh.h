@@ -19,7 +19,8 @@ namespace sylva {
 struct PartAttributes {
     // Texture coordinates per triangle corner (triangles[f][k] -> uv[f][k]): a vertex on a
     // seam has different UVs in the triangles around it, while the mesh itself stays one
-    // closed surface. glTF splits such vertices, OBJ indexes `vt` apart from `v`.
+    // closed surface. glTF splits such vertices, OBJ indexes `vt` apart from `v`. v runs
+    // up the image as in OBJ and OpenGL (the glTF writer flips it to glTF's v down).
     std::vector<std::array<glm::vec2, 3>> uv;
     // Per vertex, multiplies the part's colour (each channel in [0, 1]): colour variation
     // and crown occlusion. Empty: the flat part colour.

@@ -47,6 +47,14 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--replay takes a growth step of at least 0, got '" +
                                  std::string(text) + "'");
             options.replay_iteration = step;
+        } else if (arg == "--wind") {
+            std::string_view text = value();
+            float seconds = -1.0f;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+            if (error != std::errc() || end != text.data() + text.size() || !(seconds >= 0.0f))
+                throw UsageError("--wind takes a time in seconds of at least 0, got '" +
+                                 std::string(text) + "'");
+            options.wind_seconds = seconds;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -70,7 +78,7 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--screenshot PATH [--frames N]]\n"
+           "                    [--replay STEP] [--wind SECONDS] [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -82,6 +90,7 @@ std::string studio_usage() {
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
+           "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

@@ -19,6 +19,8 @@ struct StudioOptions {
     bool envelope = true;
     bool points = false;
     std::optional<int> replay_iteration;
+    // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
+    std::optional<float> wind_seconds;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

@@ -18,6 +18,7 @@
 #include "export/convex_hull.h"
 #include "export/export_tree.h"
 #include "export/part_attributes.h"
+#include "export/wind_motion.h"
 #include "marching/mesh_checks.h"
 #include "tree/template_library.h"
 
@@ -32,8 +33,8 @@ std::vector<float> floats(const tinygltf::Model& model, int index, int component
     EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
     EXPECT_EQ(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)), components);
     const tinygltf::BufferView& v = model.bufferViews.at(static_cast<std::size_t>(a.bufferView));
-    const unsigned char* data =
-        model.buffers.at(static_cast<std::size_t>(v.buffer)).data.data() + v.byteOffset + a.byteOffset;
+    const unsigned char* data = model.buffers.at(static_cast<std::size_t>(v.buffer)).data.data() +
+                                v.byteOffset + a.byteOffset;
     std::vector<float> out(a.count * static_cast<std::size_t>(components));
     std::memcpy(out.data(), data, out.size() * sizeof(float));
     return out;
@@ -109,9 +110,9 @@ TEST_F(EngineExport, EveryPartHasUvsAndTheWindInTheProfilesChannel) {
             const std::vector<float> uv = floats(e.model, p.attributes.at("TEXCOORD_0"), 2);
             ASSERT_EQ(uv.size(), 2 * n);
             // Not all one point: a smear would be.
-            EXPECT_GT(*std::max_element(uv.begin(), uv.end()) -
-                          *std::min_element(uv.begin(), uv.end()),
-                      0.1f);
+            EXPECT_GT(
+                *std::max_element(uv.begin(), uv.end()) - *std::min_element(uv.begin(), uv.end()),
+                0.1f);
             std::vector<float> wind;
             if (profile_info(profile).wind == WindChannel::Color1) {
                 EXPECT_FALSE(p.attributes.contains("TEXCOORD_1"));
@@ -161,7 +162,8 @@ TEST_F(EngineExport, CollisionHullsCarryTheProfilesNamesAndAreClosedAndConvex) {
             for (std::size_t i = 0; i < pos.size(); i += 3)
                 hull.positions.push_back({pos[i], pos[i + 1], pos[i + 2]});
             const tinygltf::Accessor& ia = e.model.accessors[static_cast<std::size_t>(p.indices)];
-            const tinygltf::BufferView& iv = e.model.bufferViews[static_cast<std::size_t>(ia.bufferView)];
+            const tinygltf::BufferView& iv =
+                e.model.bufferViews[static_cast<std::size_t>(ia.bufferView)];
             const unsigned char* data = e.model.buffers[0].data.data() + iv.byteOffset;
             for (std::size_t i = 0; i < ia.count; i += 3) {
                 std::array<std::uint32_t, 3> t{};
@@ -240,7 +242,8 @@ TEST_F(EngineExport, BarkUvsFollowTheBranchesOnAReducedTrunk) {
                 << "a triangle wraps around the seam";
             for (std::size_t k = 0; k < 3; ++k) {
                 const glm::vec3 p = reduced.trunk.positions[reduced.trunk.triangles[f][k]];
-                const glm::vec3 q = reduced.trunk.positions[reduced.trunk.triangles[f][(k + 1) % 3]];
+                const glm::vec3 q =
+                    reduced.trunk.positions[reduced.trunk.triangles[f][(k + 1) % 3]];
                 const glm::vec2 d = a.uv[f][(k + 1) % 3] - a.uv[f][k];
                 if (std::abs(d.y) * kBarkTile > 1.2f * glm::length(q - p) + 0.02f) ++stretched;
             }
@@ -262,6 +265,27 @@ TEST(ConvexHull, OfACubesCornersAndInnerPointsIsTheCube) {
     EXPECT_TRUE(convex_hull(std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})
                     .triangles.empty())
         << "a flat set has no hull";
+}
+
+}  // namespace
+}  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// The exported wind data does what docs/wind.glsl says: the trunk's base stays put, the top
+// moves most, leaves tips flutter while their bases follow the branch.
+TEST(WindMotion, TheBaseStaysAndTheTopMovesWithinTheStrength) {
+    const WindMotion motion{{1.0f, 0.0f}, 0.3f};
+    for (float t = 0.0f; t < 10.0f; t += 0.37f) {
+        EXPECT_EQ(wind_position({0, 0, 0}, {0, 0, 0.4f, 0}, t, motion), glm::vec3(0, 0, 0));
+        const glm::vec3 top = wind_position({0, 10, 0}, {1, 0, 0, 0}, t, motion);
+        EXPECT_GT(top.x, 0.0f) << "the top leans downwind";
+        EXPECT_LE(top.x, motion.strength);
+        EXPECT_EQ(top.y, 10.0f) << "sway alone moves sideways only";
+        const glm::vec3 tip = wind_position({1, 5, 0}, {0.3f, 1, 0.2f, 1}, t, motion);
+        EXPECT_LE(glm::length(tip - glm::vec3(1, 5, 0)), 1.5f * motion.strength);
+    }
 }
 
 }  // namespace
