@@ -71,6 +71,9 @@ Usage:
   --collision on|off
                    convex collision hulls (trunk, crown pieces); default: on for unity,
                    unreal and godot, off for generic
+  --palette        UVs into a small palette texture of colour swatches (a row per part,
+                   four shades), embedded in a .glb or written as OUT_palette.png beside
+                   an .obj (its map_Kd)
   --no-uvs, --no-wind
                    leave out the UVs (bark, leaf cards, crown projection) or the wind data
   --color-variation V, --crown-occlusion V
@@ -194,6 +197,8 @@ Options parse_options(int argc, char** argv) {
             if (state != "on" && state != "off")
                 throw UsageError("--collision expects on or off, not '" + state + "'");
             o.export_options.engine.collision = state == "on";
+        } else if (arg == "--palette") {
+            o.export_options.engine.palette = true;
         } else if (arg == "--no-uvs") {
             o.export_options.engine.uvs = false;
         } else if (arg == "--no-wind") {

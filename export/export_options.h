@@ -33,6 +33,8 @@ struct EngineSettings {
     // 0 (none) to 1: darkening toward the middle of the crown, like ambient occlusion.
     float crown_occlusion = 0.0f;
     std::uint64_t seed = 1;  // of the colour variation and the wind phases
+    // UVs into a palette texture of colour swatches instead (export/palette.h).
+    bool palette = false;
 };
 
 struct ExportOptions {
@@ -46,6 +48,9 @@ struct ExportOptions {
     // The engine whose conventions the export follows (export/engine_profile.h).
     EngineProfile profile = EngineProfile::Generic;
     EngineSettings engine{};  // read by write_tree(), not by the writers
+    // The palette texture's PNG when the parts' UVs point into it (write_tree() sets it
+    // with engine.palette): embedded in a glb, `<stem>_palette.png` beside an OBJ.
+    std::vector<std::uint8_t> palette_png{};
 };
 
 // One level of detail: the parts of a model.

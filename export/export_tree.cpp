@@ -3,6 +3,7 @@
 #include <map>
 
 #include "export/collision.h"
+#include "export/palette.h"
 #include "export/part_attributes.h"
 
 namespace sylva {
@@ -81,6 +82,7 @@ EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const P
                 model.attributes.push_back(crown_attributes(mesh, frame, engine));
             else
                 model.attributes.push_back(leaf_attributes(mesh, frame, engine));
+            if (engine.palette) use_palette(model.attributes.back(), mesh, part.name);
             part.attributes = done[&mesh] = &model.attributes.back();
         }
     const bool collision =
@@ -104,7 +106,9 @@ std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
                                               const PartColors& colors,
                                               const ExportOptions& options,
                                               const ExportFormat* format) {
-    return write_lod_chain(path, engine_model(tree, finished, colors, options).levels, options,
+    ExportOptions with_palette = options;
+    if (options.engine.palette) with_palette.palette_png = palette_png(colors);
+    return write_lod_chain(path, engine_model(tree, finished, colors, options).levels, with_palette,
                            format);
 }
 

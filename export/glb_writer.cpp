@@ -157,10 +157,11 @@ class GltfBuilder {
             for (std::size_t i = 0; i < v.uv.size(); ++i) uv[i] = {v.uv[i].x, 1.0f - v.uv[i].y};
             primitive.attributes["TEXCOORD_0"] = add_floats(uv);
         }
-        if (!a.tint.empty() || (wind && channel == WindChannel::Color1)) {
+        // With a palette the texture carries the tint.
+        const bool tinted = !a.tint.empty() && options_.palette_png.empty();
+        if (tinted || (wind && channel == WindChannel::Color1)) {
             std::vector<glm::vec3> tint;
-            for (std::uint32_t s : v.source)
-                tint.push_back(a.tint.empty() ? glm::vec3(1.0f) : a.tint[s]);
+            for (std::uint32_t s : v.source) tint.push_back(tinted ? a.tint[s] : glm::vec3(1.0f));
             primitive.attributes["COLOR_0"] = add_floats(tint);
         }
         if (!wind) return;
@@ -254,6 +255,10 @@ class GltfBuilder {
         tinygltf::Material m;
         m.name = part.name;
         m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
+        if (!options_.palette_png.empty()) {  // the swatches carry the colour
+            m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+            m.pbrMetallicRoughness.baseColorTexture.index = palette_texture();
+        }
         m.pbrMetallicRoughness.metallicFactor = 0.0;  // bark and leaves are dielectric
         m.pbrMetallicRoughness.roughnessFactor = 0.9;
         m.doubleSided = !part.closed;
@@ -261,6 +266,27 @@ class GltfBuilder {
         const int index = static_cast<int>(model_.materials.size()) - 1;
         materials_[part.name] = index;
         return index;
+    }
+
+    // The palette PNG as the one image, texture and (nearest, clamped) sampler; made once.
+    int palette_texture() {
+        if (!model_.textures.empty()) return 0;
+        tinygltf::Image image;
+        image.name = "palette";
+        image.mimeType = "image/png";
+        image.bufferView = add_view(options_.palette_png.data(), options_.palette_png.size(), 0);
+        model_.images.push_back(image);
+        tinygltf::Sampler sampler;
+        sampler.magFilter = TINYGLTF_TEXTURE_FILTER_NEAREST;
+        sampler.minFilter = TINYGLTF_TEXTURE_FILTER_NEAREST;
+        sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        model_.samplers.push_back(sampler);
+        tinygltf::Texture texture;
+        texture.source = 0;
+        texture.sampler = 0;
+        model_.textures.push_back(texture);
+        return 0;
     }
 
     const ExportOptions& options_;

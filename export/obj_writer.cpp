@@ -161,18 +161,38 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
     }
 }
 
-void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts) {
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts, std::string_view texture) {
     out << "# Sylva materials: Kd is the part's base colour, linear RGB\n";
     std::string line;
     for (const NamedMesh& part : parts) {
         if (!has_triangles(part) || part.collision) continue;
         out << "\nnewmtl " << part.name << "\n";
         out << "Ka 0 0 0\n";
-        append_vector(line, "Kd", part.color);
+        append_vector(line, "Kd", texture.empty() ? part.color : glm::vec3(1.0f));
         out << line;
         out << "Ks 0 0 0\nNs 10\nd 1\nillum 1\n";
+        if (!texture.empty()) out << "map_Kd " << texture << "\n";
     }
 }
+
+namespace {
+
+// With a palette: `<stem>_palette.png` beside `path`, added to `files`; its file name for
+// the .mtl (empty without a palette).
+std::string add_palette(FileSet& files, const std::filesystem::path& path,
+                        const ExportOptions& options) {
+    if (options.palette_png.empty()) return {};
+    std::filesystem::path png = path;
+    png.replace_filename(path.stem().string() + "_palette.png");
+    const std::vector<std::uint8_t>& bytes = options.palette_png;
+    files.add(png, [&bytes](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+    });
+    return png.filename().string();
+}
+
+}  // namespace
 
 namespace {
 
@@ -183,7 +203,9 @@ void add_obj_with_mtl(FileSet& files, const std::filesystem::path& path,
     files.add(path, [&](std::ostream& out) {
         write_obj_with_mtl(out, parts, options, mtl.filename().string());
     });
-    files.add(mtl, [&](std::ostream& out) { write_mtl(out, parts); });
+    files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
+        write_mtl(out, parts, texture);
+    });
 }
 
 }  // namespace
@@ -211,7 +233,9 @@ void add_obj_files(FileSet& files, const std::filesystem::path& path,
                 std::none_of(all_parts.begin(), all_parts.end(),
                              [&](const NamedMesh& p) { return p.name == part.name; }))
                 all_parts.push_back(part);
-    files.add(mtl, [&](std::ostream& out) { write_mtl(out, all_parts); });
+    files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
+        write_mtl(out, all_parts, texture);
+    });
     const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
     for (std::size_t i = 0; i < levels.size(); ++i)
         files.add(names[i], [&](std::ostream& out) {

@@ -32,8 +32,10 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
                         std::string_view group_suffix = {});
 
 // One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
-// baseColorFactor), no specular.
-void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts);
+// baseColorFactor), no specular. With a `texture` (the palette, export/palette.h): Kd 1 1 1
+// and `map_Kd texture`.
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
+               std::string_view texture = {});
 
 // Writes `path` and its material library (`path` with the extension .mtl) as one
 // transaction (core/file_set.h): both or neither. Returns both paths. Throws IoError naming

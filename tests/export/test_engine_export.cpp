@@ -290,3 +290,26 @@ TEST(WindMotion, TheBaseStaysAndTheTopMovesWithinTheStrength) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+TEST_F(EngineExport, APaletteIsOneEmbeddedPngTheUvsPointInto) {
+    EngineSettings palette;
+    palette.palette = true;
+    palette.color_variation = 1.0f;
+    const Exported e = export_glb("oak", EngineProfile::Generic, false, palette);
+    ASSERT_EQ(e.model.images.size(), 1u);
+    ASSERT_EQ(e.model.textures.size(), 1u);
+    EXPECT_EQ(e.model.images[0].mimeType, "image/png");
+    for (const tinygltf::Node* node : e.parts) {
+        const tinygltf::Primitive& p = primitive_of(e, node);
+        const tinygltf::Material& m = e.model.materials[static_cast<std::size_t>(p.material)];
+        EXPECT_EQ(m.pbrMetallicRoughness.baseColorTexture.index, 0) << node->name;
+        const std::vector<float> uv = floats(e.model, p.attributes.at("TEXCOORD_0"), 2);
+        for (float c : uv) ASSERT_TRUE(c > 0.0f && c < 1.0f) << node->name << " UV " << c;
+    }
+}
+
+}  // namespace
+}  // namespace sylva
