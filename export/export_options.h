@@ -1,6 +1,7 @@
 // What every exporter (OBJ + MTL, glTF binary, PLY) agrees on: the shading, a few
-// per-format choices, and the shape of a format's entry in the registry (export/export.h).
-// Y is up and units are meters in all of them.
+// per-format choices, the engine profile and what write_tree() adds for engines, and the
+// shape of a format's entry in the registry (export/export.h). glTF and OBJ are Y up, PLY
+// Z up; units are metres (OBJ and PLY in centimetres for the unreal profile).
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,9 @@
 // Two flavours: write_obj() writes bare geometry (positions and triangles), and
 // write_obj_with_mtl() adds normals (flat or smooth) and a material library beside the
 // file (`tree.obj` -> `tree.mtl`) with one material per part, named like the part, whose
-// Kd is the part's colour.
+// Kd is the part's colour. A part's attributes add `vt` (indexed apart from `v`, so seams
+// split no vertex) and, with a tint, `v x y z r g b`; collision parts are bare `o` groups
+// without material; a palette is written beside as `<stem>_palette.png` (map_Kd).
 #pragma once
 
 #include <filesystem>

@@ -57,9 +57,9 @@ void use_palette(PartAttributes& attributes, const Mesh& mesh, std::string_view 
         if (!attributes.tint.empty()) {
             const glm::vec3& t = attributes.tint[v];
             const float brightness = (t.r + t.g + t.b) / 3.0f;
-            shade = std::clamp(static_cast<int>(std::lround((1.0f - brightness) / 0.35f *
-                                                            (kPaletteShades - 1))),
-                               0, kPaletteShades - 1);
+            shade = std::clamp(
+                static_cast<int>(std::lround((1.0f - brightness) / 0.35f * (kPaletteShades - 1))),
+                0, kPaletteShades - 1);
         }
         return glm::vec2((static_cast<float>(shade) + 0.5f) / kPaletteShades,
                          (static_cast<float>(row) + 0.5f) / 3.0f);
