@@ -2,6 +2,8 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
 #include <limits>
@@ -160,24 +162,49 @@ class GltfBuilder {
         // With a palette the texture carries the tint.
         const bool tinted = !a.tint.empty() && options_.palette_png.empty();
         if (tinted || (wind && channel == WindChannel::Color1)) {
-            std::vector<glm::vec3> tint;
-            for (std::uint32_t s : v.source) tint.push_back(tinted ? a.tint[s] : glm::vec3(1.0f));
-            primitive.attributes["COLOR_0"] = add_floats(tint);
+            std::vector<glm::vec4> tint;
+            for (std::uint32_t s : v.source)
+                tint.push_back(glm::vec4(tinted ? a.tint[s] : glm::vec3(1.0f), 1.0f));
+            primitive.attributes["COLOR_0"] = add_normalized<std::uint8_t>(tint);
         }
         if (!wind) return;
         if (channel == WindChannel::Color1) {
             std::vector<glm::vec4> w;
             for (std::uint32_t s : v.source) w.push_back(a.wind[s]);
-            primitive.attributes["COLOR_1"] = add_floats(w);
+            primitive.attributes["COLOR_1"] = add_normalized<std::uint8_t>(w);
         } else {
             std::vector<glm::vec2> w1, w2;
             for (std::uint32_t s : v.source) {
                 w1.push_back({a.wind[s].x, a.wind[s].y});
                 w2.push_back({a.wind[s].z, a.wind[s].w});
             }
-            primitive.attributes["TEXCOORD_1"] = add_floats(w1);
-            primitive.attributes["TEXCOORD_2"] = add_floats(w2);
+            primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
+            primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
         }
+    }
+
+    // Values in [0, 1] as normalized 8- or 16-bit integers: colours and wind need no more,
+    // and a vertex takes 4 bytes per attribute instead of 8-16 (glTF wants each element
+    // 4-byte aligned, hence vec4 bytes and vec2 shorts).
+    template <class Int, class Vec>
+    int add_normalized(const std::vector<Vec>& values) {
+        static_assert(sizeof(Int) * Vec::length() % 4 == 0);
+        constexpr float top = static_cast<float>(std::numeric_limits<Int>::max());
+        std::vector<Int> ints;
+        ints.reserve(values.size() * Vec::length());
+        for (const Vec& value : values)
+            for (int c = 0; c < Vec::length(); ++c)
+                ints.push_back(
+                    static_cast<Int>(std::lround(std::clamp(value[c], 0.0f, 1.0f) * top)));
+        tinygltf::Accessor accessor;
+        accessor.bufferView = add_view(ints.data(), ints.size() * sizeof(Int), kArrayBuffer);
+        accessor.componentType = sizeof(Int) == 1 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+                                                  : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        accessor.normalized = true;
+        accessor.type = Vec::length() == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC4;
+        accessor.count = values.size();
+        model_.accessors.push_back(accessor);
+        return static_cast<int>(model_.accessors.size()) - 1;
     }
 
     // A float vertex attribute of 2, 3 or 4 components.

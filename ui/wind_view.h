@@ -16,9 +16,9 @@ namespace sylva::studio {
 struct WindView {
     WindMotion motion;
     struct Part {
-        Mesh rest;                      // as generated
-        std::vector<glm::vec4> wind;    // per vertex of rest
-        Mesh swayed;                    // rest moved to the last time given to sway()
+        Mesh rest;                    // as generated
+        std::vector<glm::vec4> wind;  // per vertex of rest
+        Mesh swayed;                  // rest moved to the last time given to sway()
     };
     std::array<Part, 3> parts;  // trunk, crown, leaves
     bool ready = false;         // parts hold the tree on screen

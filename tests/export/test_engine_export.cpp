@@ -27,16 +27,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An accessor's floats, `components` per element.
+// An accessor's values as floats, `components` per element (normalized integers mapped to
+// [0, 1], as glTF reads them).
 std::vector<float> floats(const tinygltf::Model& model, int index, int components) {
     const tinygltf::Accessor& a = model.accessors.at(static_cast<std::size_t>(index));
-    EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
     EXPECT_EQ(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)), components);
     const tinygltf::BufferView& v = model.bufferViews.at(static_cast<std::size_t>(a.bufferView));
     const unsigned char* data = model.buffers.at(static_cast<std::size_t>(v.buffer)).data.data() +
                                 v.byteOffset + a.byteOffset;
     std::vector<float> out(a.count * static_cast<std::size_t>(components));
-    std::memcpy(out.data(), data, out.size() * sizeof(float));
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            std::memcpy(&out[i], data + 4 * i, 4);
+        } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && a.normalized) {
+            std::uint16_t value = 0;
+            std::memcpy(&value, data + 2 * i, 2);
+            out[i] = value / 65535.0f;
+        } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a.normalized) {
+            out[i] = data[i] / 255.0f;
+        } else {
+            ADD_FAILURE() << "unexpected component type " << a.componentType;
+        }
+    }
     return out;
 }
 

@@ -17,8 +17,8 @@ namespace {
 TEST(WindView, TheBaseStaysWhileTheCrownSways) {
     const Tree tree = generate_tree(load_template("palm"));
     WindView view;
-    set_wind_parts(view, tree.skeleton, tree.trunk, tree.crown, tree.leaves, tree.trunk,
-                   tree.crown, tree.leaves);
+    set_wind_parts(view, tree.skeleton, tree.trunk, tree.crown, tree.leaves, tree.trunk, tree.crown,
+                   tree.leaves);
     ASSERT_TRUE(view.ready);
     sway(view, 1.3f);
     const Mesh& rest = view.parts[0].rest;
