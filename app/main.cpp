@@ -73,6 +73,19 @@ Usage:
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --format F       obj, glb or ply (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
+  --profile P      generic (default), unity, unreal or godot: collision names, the wind
+                   channel, OBJ/PLY units (README "Engine profiles")
+  --collision on|off
+                   convex collision hulls (trunk, crown pieces); default: on for unity,
+                   unreal and godot, off for generic
+  --palette        UVs into a small palette texture of colour swatches (a row per part,
+                   four shades), embedded in a .glb or written as OUT_palette.png beside
+                   an .obj (its map_Kd)
+  --no-uvs, --no-wind
+                   leave out the UVs (bark, leaf cards, crown projection) or the wind data
+  --color-variation V, --crown-occlusion V
+                   0 to 1 (default 0: flat colours): a seeded tint per branch, crown piece
+                   and leaf; darkening toward the middle of the crown
   --ply-ascii      write PLY as text instead of binary
   --fidelity       also report the distance of the reduced trunk + crown to the
                    resolution-200 surface, in percent of the tree's height
@@ -180,6 +193,32 @@ Options parse_options(int argc, char** argv) {
             if (name != "flat" && name != "smooth")
                 throw UsageError("--shading expects flat or smooth, not '" + name + "'");
             o.export_options.shading = name == "flat" ? Shading::Flat : Shading::Smooth;
+        } else if (arg == "--profile") {
+            std::string name = value();
+            const std::optional<EngineProfile> profile = profile_from_name(name);
+            if (!profile)
+                throw UsageError("--profile expects " + profile_names() + ", not '" + name + "'");
+            o.export_options.profile = *profile;
+        } else if (arg == "--collision") {
+            std::string state = value();
+            if (state != "on" && state != "off")
+                throw UsageError("--collision expects on or off, not '" + state + "'");
+            o.export_options.engine.collision = state == "on";
+        } else if (arg == "--palette") {
+            o.export_options.engine.palette = true;
+        } else if (arg == "--no-uvs") {
+            o.export_options.engine.uvs = false;
+        } else if (arg == "--no-wind") {
+            o.export_options.engine.wind = false;
+        } else if (arg == "--color-variation" || arg == "--crown-occlusion") {
+            const std::string text = value();
+            double v = -1.0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (error != std::errc() || end != text.data() + text.size() || !(v >= 0.0 && v <= 1.0))
+                throw UsageError(arg + " expects a number from 0 to 1, not '" + text + "'");
+            (arg == "--color-variation" ? o.export_options.engine.color_variation
+                                        : o.export_options.engine.crown_occlusion) =
+                static_cast<float>(v);
         } else if (arg == "--ply-ascii") {
             o.export_options.ply_binary = false;
         } else if (arg == "--max-memory") {
@@ -248,8 +287,10 @@ int run_export(const Options& o) {
 
     Stopwatch clock;
     const FinishedTree finished = finish_tree(tree, finish);
+    ExportOptions export_options = o.export_options;
+    export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
     const std::vector<std::filesystem::path> files =
-        write_tree(o.output, tree, finished, tmpl.colors, o.export_options, format);
+        write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
     tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());

@@ -1,13 +1,17 @@
 // What every exporter (OBJ + MTL, glTF binary, PLY) agrees on: the shading, a few
-// per-format choices, and the shape of a format's entry in the registry (export/export.h).
-// Y is up and units are meters in all of them.
+// per-format choices, the engine profile and what write_tree() adds for engines, and the
+// shape of a format's entry in the registry (export/export.h). glTF and OBJ are Y up, PLY
+// Z up; units are metres (OBJ and PLY in centimetres for the unreal profile).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "export/engine_profile.h"
 #include "export/named_mesh.h"
 
 namespace sylva {
@@ -19,6 +23,21 @@ enum class Shading {
     Smooth,  // one normal per vertex, vertices shared except across creases (mesh_normals.h)
 };
 
+// What write_tree() (export/export_tree.h) puts on the parts for engines.
+struct EngineSettings {
+    bool uvs = true;   // bark along the branches, leaf cards, a box projection on crowns
+    bool wind = true;  // the per-vertex wind data
+    // Collision shapes (trunk hull, crown piece hulls); unset: the profile's default.
+    std::optional<bool> collision = std::nullopt;
+    // 0 (flat colours) to 1: a seeded per-branch, per-crown-piece and per-leaf tint.
+    float color_variation = 0.0f;
+    // 0 (none) to 1: darkening toward the middle of the crown, like ambient occlusion.
+    float crown_occlusion = 0.0f;
+    std::uint64_t seed = 1;  // of the colour variation and the wind phases
+    // UVs into a palette texture of colour swatches instead (export/palette.h).
+    bool palette = false;
+};
+
 struct ExportOptions {
     Shading shading = Shading::Flat;
     // Smooth shading only: faces meeting at more than this many degrees stay sharp.
@@ -27,6 +46,12 @@ struct ExportOptions {
     bool ply_binary = true;
     // The model's name: glTF root node, and with _LOD0.. the level nodes of a LOD chain.
     std::string model_name = "tree";
+    // The engine whose conventions the export follows (export/engine_profile.h).
+    EngineProfile profile = EngineProfile::Generic;
+    EngineSettings engine{};  // read by write_tree(), not by the writers
+    // The palette texture's PNG when the parts' UVs point into it (write_tree() sets it
+    // with engine.palette): embedded in a glb, `<stem>_palette.png` beside an OBJ.
+    std::vector<std::uint8_t> palette_png{};
 };
 
 // One level of detail: the parts of a model.

@@ -1,5 +1,11 @@
 #include "export/export_tree.h"
 
+#include <map>
+
+#include "export/collision.h"
+#include "export/palette.h"
+#include "export/part_attributes.h"
+
 namespace sylva {
 
 std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Mesh& leaves,
@@ -54,12 +60,56 @@ std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& fin
     return levels;
 }
 
+EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const PartColors& colors,
+                         const ExportOptions& options) {
+    EngineModel model;
+    model.levels = finished_parts(tree, finished, colors);
+    const EngineSettings& engine = options.engine;
+    // One frame for all levels, so a level's wind and tint match the next one's.
+    const TreeFrame frame = tree_frame(tree.trunk, tree.crown, tree.leaves);
+    // A mesh in several levels (unthinned leaves) gets its attributes once.
+    std::map<const Mesh*, const PartAttributes*> done;
+    for (ModelParts& level : model.levels)
+        for (NamedMesh& part : level) {
+            const Mesh& mesh = *part.mesh;
+            if (auto found = done.find(&mesh); found != done.end()) {
+                part.attributes = found->second;
+                continue;
+            }
+            if (part.name == "trunk")
+                model.attributes.push_back(trunk_attributes(mesh, tree.skeleton, frame, engine));
+            else if (part.name == "crown")
+                model.attributes.push_back(crown_attributes(mesh, frame, engine));
+            else
+                model.attributes.push_back(leaf_attributes(mesh, frame, engine));
+            if (engine.palette) use_palette(model.attributes.back(), mesh, part.name);
+            part.attributes = done[&mesh] = &model.attributes.back();
+        }
+    const bool collision =
+        engine.collision.value_or(profile_info(options.profile).collision_by_default);
+    if (collision && !model.levels.empty()) {
+        // From the finest solids: the shapes a player bumps into.
+        const SolidParts solids = finest_solids(tree, finished);
+        for (Mesh& hull : collision_hulls(solids.trunk, solids.crown, tree.skeleton)) {
+            model.hulls.push_back(std::move(hull));
+            const std::string name =
+                collision_name(options.profile, options.model_name, model.hulls.size() - 1);
+            model.levels[0].push_back(
+                {name, &model.hulls.back(), glm::vec3(1.0f), true, nullptr, true});
+        }
+    }
+    return model;
+}
+
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
                                               const FinishedTree& finished,
                                               const PartColors& colors,
                                               const ExportOptions& options,
                                               const ExportFormat* format) {
-    return write_lod_chain(path, finished_parts(tree, finished, colors), options, format);
+    ExportOptions with_palette = options;
+    if (options.engine.palette) with_palette.palette_png = palette_png(colors);
+    return write_lod_chain(path, engine_model(tree, finished, colors, options).levels, with_palette,
+                           format);
 }
 
 }  // namespace sylva

@@ -4,6 +4,7 @@
 // written in the format the path's extension (or the caller) names.
 #pragma once
 
+#include <deque>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -61,7 +62,20 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
 std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
                                        const PartColors& colors);
 
-// Writes the finished tree to `path` (format: given, or from the extension). Returns every
+// The finished parts dressed for engines as options.engine and options.profile say: every
+// part with its UVs, tint and wind (export/part_attributes.h), and with collision on, the
+// collision hulls (export/collision.h) in level 0, named for the profile. Owns what the
+// parts point to (besides the meshes owned by `tree` and `finished`); moving it keeps them.
+struct EngineModel {
+    std::vector<ModelParts> levels;
+    std::deque<PartAttributes> attributes;
+    std::deque<Mesh> hulls;
+};
+EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const PartColors& colors,
+                         const ExportOptions& options);
+
+// Writes engine_model() of the finished tree to `path` (format: given, or from the
+// extension). Returns every
 // file written. Throws InputError for an unknown extension, IoError when a file cannot be
 // written.
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,

@@ -2,11 +2,14 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
 #include <limits>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -47,14 +50,14 @@ class GltfBuilder {
     }
 
     // A node with the part's mesh under `parent`, named `name`; empty parts are skipped.
-    // A mesh handed in twice with the same material (leaves in every LOD level) is stored
-    // once and shared by the nodes.
+    // A mesh handed in twice with the same material and attributes (leaves in every LOD
+    // level) is stored once and shared by the nodes. Collision parts get no material.
     void add_part(int parent, const NamedMesh& part, const std::string& name) {
         if (!part.mesh || part.mesh->triangles.empty()) return;
-        const int mat = material(part);
-        auto [shared, added] =
-            meshes_.try_emplace({part.mesh, mat}, static_cast<int>(model_.meshes.size()));
-        if (added) add_mesh(*part.mesh, mat, name);
+        const int mat = part.collision ? -1 : material(part);
+        auto [shared, added] = meshes_.try_emplace({part.mesh, part.attributes, mat},
+                                                   static_cast<int>(model_.meshes.size()));
+        if (added) add_mesh(part, mat, name);
         const int node = add_group(parent, name);
         model_.nodes[static_cast<std::size_t>(node)].mesh = shared->second;
     }
@@ -67,39 +70,156 @@ class GltfBuilder {
     }
 
   private:
-    void add_mesh(const Mesh& mesh, int mat, const std::string& name) {
+    // The vertices glTF gets: one per distinct (corner normal, UV) at each mesh vertex, so
+    // flat shading splits every triangle apart and smooth shading splits only at creases
+    // and UV seams. `source` is the mesh vertex each one copies.
+    struct Vertices {
         std::vector<glm::vec3> positions, normals;
+        std::vector<glm::vec2> uv;
+        std::vector<std::uint32_t> source;
         std::vector<std::uint32_t> indices;
+    };
+
+    Vertices vertices(const NamedMesh& part) const {
+        const Mesh& mesh = *part.mesh;
+        const PartAttributes* attributes = part.collision ? nullptr : part.attributes;
+        const bool with_uv = attributes && !attributes->uv.empty();
+        Vertices out;
+        if (part.collision) {  // shared vertices: a closed hull, no normals needed
+            out.positions = mesh.positions;
+            for (const auto& t : mesh.triangles)
+                out.indices.insert(out.indices.end(), t.begin(), t.end());
+            return out;
+        }
+        auto add = [&](std::uint32_t source, const glm::vec3& normal, const glm::vec2& uv) {
+            out.indices.push_back(static_cast<std::uint32_t>(out.positions.size()));
+            out.positions.push_back(mesh.positions[source]);
+            out.normals.push_back(normal);
+            if (with_uv) out.uv.push_back(uv);
+            out.source.push_back(source);
+        };
         if (options_.shading == Shading::Flat) {
             const std::vector<glm::vec3> face = face_normals(mesh);
-            positions.reserve(3 * mesh.triangles.size());
-            normals.reserve(3 * mesh.triangles.size());
             for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-                for (std::uint32_t i : mesh.triangles[f]) {
-                    indices.push_back(static_cast<std::uint32_t>(positions.size()));
-                    positions.push_back(mesh.positions[i]);
+                for (std::size_t k = 0; k < 3; ++k)
                     // A degenerate triangle has no normal; glTF wants unit length.
-                    normals.push_back(face[f] == glm::vec3(0.0f) ? glm::vec3(0, 1, 0) : face[f]);
-                }
-        } else {
-            ShadedMesh shaded = smooth_shaded(mesh, options_.crease_degrees);
-            positions = std::move(shaded.mesh.positions);
-            normals = std::move(shaded.normals);
-            for (const auto& t : shaded.mesh.triangles)
-                indices.insert(indices.end(), t.begin(), t.end());
+                    add(mesh.triangles[f][k],
+                        face[f] == glm::vec3(0.0f) ? glm::vec3(0, 1, 0) : face[f],
+                        with_uv ? attributes->uv[f][k] : glm::vec2(0.0f));
+            return out;
         }
+        const ShadedMesh shaded = smooth_shaded(mesh, options_.crease_degrees);
+        std::map<std::tuple<std::uint32_t, float, float>, std::uint32_t> welded;
+        for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::uint32_t corner = shaded.mesh.triangles[f][k];
+                const glm::vec2 uv = with_uv ? attributes->uv[f][k] : glm::vec2(0.0f);
+                auto [found, added] = welded.try_emplace(
+                    {corner, uv.x, uv.y}, static_cast<std::uint32_t>(out.positions.size()));
+                if (added) {
+                    add(mesh.triangles[f][k], shaded.normals[corner], uv);
+                } else {
+                    out.indices.push_back(found->second);
+                }
+            }
+        return out;
+    }
 
+    void add_mesh(const NamedMesh& part, int mat, const std::string& name) {
+        const Vertices v = vertices(part);
         tinygltf::Primitive primitive;
         primitive.mode = TINYGLTF_MODE_TRIANGLES;
-        primitive.attributes["POSITION"] = add_vec3(positions, true);
-        primitive.attributes["NORMAL"] = add_vec3(normals, false);
-        primitive.indices = add_indices(indices, positions.size());
-        primitive.material = mat;
+        primitive.attributes["POSITION"] = add_vec3(v.positions, true);
+        if (!part.collision) {
+            primitive.attributes["NORMAL"] = add_vec3(v.normals, false);
+            add_engine_attributes(primitive, part, v);
+            primitive.material = mat;
+        }
+        primitive.indices = add_indices(v.indices, v.positions.size());
 
         tinygltf::Mesh gltf_mesh;
         gltf_mesh.name = name;
         gltf_mesh.primitives.push_back(primitive);
         model_.meshes.push_back(gltf_mesh);
+    }
+
+    // TEXCOORD_0 (UVs), COLOR_0 (tint) and the wind in the profile's channel. glTF wants
+    // each set numbered from 0 without gaps, so wind in TEXCOORD_1/2 comes with a
+    // TEXCOORD_0 (zeros without UVs) and wind in COLOR_1 with a COLOR_0 (white without a
+    // tint).
+    void add_engine_attributes(tinygltf::Primitive& primitive, const NamedMesh& part,
+                               const Vertices& v) {
+        if (!part.attributes) return;
+        const PartAttributes& a = *part.attributes;
+        const bool wind = !a.wind.empty();
+        const WindChannel channel = profile_info(options_.profile).wind;
+        if (!v.uv.empty() || (wind && channel == WindChannel::TexCoord12)) {
+            // PartAttributes' v runs up the image (OBJ, OpenGL); glTF's runs down.
+            std::vector<glm::vec2> uv(v.positions.size(), glm::vec2(0.0f));
+            for (std::size_t i = 0; i < v.uv.size(); ++i) uv[i] = {v.uv[i].x, 1.0f - v.uv[i].y};
+            primitive.attributes["TEXCOORD_0"] = add_floats(uv);
+        }
+        // With a palette the texture carries the tint.
+        const bool tinted = !a.tint.empty() && options_.palette_png.empty();
+        if (tinted || (wind && channel == WindChannel::Color1)) {
+            std::vector<glm::vec4> tint;
+            for (std::uint32_t s : v.source)
+                tint.push_back(glm::vec4(tinted ? a.tint[s] : glm::vec3(1.0f), 1.0f));
+            primitive.attributes["COLOR_0"] = add_normalized<std::uint8_t>(tint);
+        }
+        if (!wind) return;
+        if (channel == WindChannel::Color1) {
+            std::vector<glm::vec4> w;
+            for (std::uint32_t s : v.source) w.push_back(a.wind[s]);
+            primitive.attributes["COLOR_1"] = add_normalized<std::uint8_t>(w);
+        } else {
+            std::vector<glm::vec2> w1, w2;
+            for (std::uint32_t s : v.source) {
+                w1.push_back({a.wind[s].x, a.wind[s].y});
+                w2.push_back({a.wind[s].z, a.wind[s].w});
+            }
+            primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
+            primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
+        }
+    }
+
+    // Values in [0, 1] as normalized 8- or 16-bit integers: colours and wind need no more,
+    // and a vertex takes 4 bytes per attribute instead of 8-16 (glTF wants each element
+    // 4-byte aligned, hence vec4 bytes and vec2 shorts).
+    template <class Int, class Vec>
+    int add_normalized(const std::vector<Vec>& values) {
+        static_assert(sizeof(Int) * Vec::length() % 4 == 0);
+        constexpr float top = static_cast<float>(std::numeric_limits<Int>::max());
+        std::vector<Int> ints;
+        ints.reserve(values.size() * Vec::length());
+        for (const Vec& value : values)
+            for (int c = 0; c < Vec::length(); ++c)
+                ints.push_back(
+                    static_cast<Int>(std::lround(std::clamp(value[c], 0.0f, 1.0f) * top)));
+        tinygltf::Accessor accessor;
+        accessor.bufferView = add_view(ints.data(), ints.size() * sizeof(Int), kArrayBuffer);
+        accessor.componentType = sizeof(Int) == 1 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+                                                  : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        accessor.normalized = true;
+        accessor.type = Vec::length() == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC4;
+        accessor.count = values.size();
+        model_.accessors.push_back(accessor);
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    // A float vertex attribute of 2, 3 or 4 components.
+    template <class Vec>
+    int add_floats(const std::vector<Vec>& values) {
+        static_assert(sizeof(Vec) == Vec::length() * sizeof(float));
+        tinygltf::Accessor accessor;
+        accessor.bufferView = add_view(values.data(), values.size() * sizeof(Vec), kArrayBuffer);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.type = Vec::length() == 2   ? TINYGLTF_TYPE_VEC2
+                        : Vec::length() == 3 ? TINYGLTF_TYPE_VEC3
+                                             : TINYGLTF_TYPE_VEC4;
+        accessor.count = values.size();
+        model_.accessors.push_back(accessor);
+        return static_cast<int>(model_.accessors.size()) - 1;
     }
 
     // Appends raw bytes to the buffer as one buffer view (4-byte aligned).
@@ -162,6 +282,10 @@ class GltfBuilder {
         tinygltf::Material m;
         m.name = part.name;
         m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
+        if (!options_.palette_png.empty()) {  // the swatches carry the colour
+            m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+            m.pbrMetallicRoughness.baseColorTexture.index = palette_texture();
+        }
         m.pbrMetallicRoughness.metallicFactor = 0.0;  // bark and leaves are dielectric
         m.pbrMetallicRoughness.roughnessFactor = 0.9;
         m.doubleSided = !part.closed;
@@ -171,11 +295,32 @@ class GltfBuilder {
         return index;
     }
 
+    // The palette PNG as the one image, texture and (nearest, clamped) sampler; made once.
+    int palette_texture() {
+        if (!model_.textures.empty()) return 0;
+        tinygltf::Image image;
+        image.name = "palette";
+        image.mimeType = "image/png";
+        image.bufferView = add_view(options_.palette_png.data(), options_.palette_png.size(), 0);
+        model_.images.push_back(image);
+        tinygltf::Sampler sampler;
+        sampler.magFilter = TINYGLTF_TEXTURE_FILTER_NEAREST;
+        sampler.minFilter = TINYGLTF_TEXTURE_FILTER_NEAREST;
+        sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        model_.samplers.push_back(sampler);
+        tinygltf::Texture texture;
+        texture.source = 0;
+        texture.sampler = 0;
+        model_.textures.push_back(texture);
+        return 0;
+    }
+
     const ExportOptions& options_;
     tinygltf::Model model_;
     std::vector<unsigned char> bytes_;
     std::map<std::string, int> materials_;
-    std::map<std::pair<const Mesh*, int>, int> meshes_;
+    std::map<std::tuple<const Mesh*, const PartAttributes*, int>, int> meshes_;
 };
 
 // IoErrors from serialising, with the path in front.
@@ -209,8 +354,13 @@ void write_glb_lods(std::ostream& out, const std::vector<std::vector<NamedMesh>>
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const std::string suffix = "_LOD" + std::to_string(i);
         const int level = builder.add_group(0, options.model_name + suffix);
-        for (const NamedMesh& part : levels[i]) builder.add_part(level, part, part.name + suffix);
+        for (const NamedMesh& part : levels[i])
+            if (!part.collision) builder.add_part(level, part, part.name + suffix);
     }
+    // Collision belongs to the model, not to a level: once, under the root.
+    for (const auto& level : levels)
+        for (const NamedMesh& part : level)
+            if (part.collision) builder.add_part(0, part, part.name);
     builder.write(out);
 }
 

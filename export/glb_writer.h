@@ -2,7 +2,11 @@
 // Y up, meters (glTF's own axes and unit, so no root transform). Materials are
 // metallic-roughness with the part's colour as baseColorFactor; open parts (leaves) are
 // double-sided. Flat shading splits vertices per triangle so every face carries its own
-// normal; smooth shares them.
+// normal; smooth shares them except at creases and UV seams. A part's attributes
+// (export/named_mesh.h) become TEXCOORD_0 (v flipped to glTF's v down), COLOR_0 (the
+// tint) and the wind in the profile's channel (export/engine_profile.h); collision parts
+// are bare POSITION + indices without material, once under the root; a palette
+// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture.
 #pragma once
 
 #include <filesystem>

@@ -1,13 +1,34 @@
-// A part of a model as the exporters see it: a name, a mesh, a colour and whether it is a
-// closed solid. The writers (OBJ, glTF, PLY) take lists of these.
+// A part of a model as the exporters see it: a name, a mesh, a colour, whether it is a
+// closed solid, and optionally what engines want on top (UVs, tints, wind; a collision
+// shape). The writers (OBJ, glTF, PLY) take lists of these.
 #pragma once
 
+#include <array>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 
 namespace sylva {
+
+// What a part carries besides its shape (export/part_attributes.h computes it). Any of the
+// lists may be empty: the part then has none of it.
+struct PartAttributes {
+    // Texture coordinates per triangle corner (triangles[f][k] -> uv[f][k]): a vertex on a
+    // seam has different UVs in the triangles around it, while the mesh itself stays one
+    // closed surface. glTF splits such vertices, OBJ indexes `vt` apart from `v`. v runs
+    // up the image as in OBJ and OpenGL (the glTF writer flips it to glTF's v down).
+    std::vector<std::array<glm::vec2, 3>> uv;
+    // Per vertex, multiplies the part's colour (each channel in [0, 1]): colour variation
+    // and crown occlusion. Empty: the flat part colour.
+    std::vector<glm::vec3> tint;
+    // Per vertex, the wind data (sway, flex, phase, flutter), each in [0, 1]; see README
+    // "Wind" and docs/wind.glsl.
+    std::vector<glm::vec4> wind;
+};
 
 struct NamedMesh {
     std::string name;  // the OBJ group and material, the glTF node, mesh and material
@@ -16,6 +37,10 @@ struct NamedMesh {
     // Solid parts are closed and seen from outside only; open ones (leaves) get
     // double-sided materials where the format has them (glTF).
     bool closed = true;
+    const PartAttributes* attributes = nullptr;  // none when null
+    // A collision shape (a convex hull): written without material, colour or attributes,
+    // once per model (not per LOD level), and left out of PLY.
+    bool collision = false;
 };
 
 }  // namespace sylva

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <map>
 #include <system_error>
 
 #include "core/atomic_file.h"
@@ -71,23 +72,50 @@ void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
                         const ExportOptions& options, std::string_view mtl_file_name,
                         std::string_view group_suffix) {
-    out << "# Sylva low-poly tree: Y up, meters, "
+    const float scale = profile_info(options.profile).unitless_scale;
+    out << "# Sylva low-poly tree: Y up, " << (scale == 1.0f ? "meters" : "centimeters") << ", "
         << (options.shading == Shading::Flat ? "flat" : "smooth") << " normals\n";
     out << "mtllib " << mtl_file_name << "\n";
-    std::size_t vertex_base = 1, normal_base = 1;  // 1-based, global across groups
+    std::size_t vertex_base = 1, normal_base = 1, uv_base = 1;  // 1-based, global across groups
     std::string line;
     for (const NamedMesh& part : parts) {
         if (!has_triangles(part)) continue;
         const Mesh& mesh = *part.mesh;
+        if (part.collision) {  // bare geometry, no material, never a LOD suffix
+            out << "o " << part.name << "\ng " << part.name << "\n";
+            for (const glm::vec3& p : mesh.positions) {
+                append_vector(line, "v", scale * p);
+                out << line;
+            }
+            for (const auto& t : mesh.triangles) {
+                line.assign("f");
+                for (std::uint32_t i : t) append_index(line, vertex_base + i);
+                line.push_back('\n');
+                out << line;
+            }
+            vertex_base += mesh.positions.size();
+            continue;
+        }
+        const PartAttributes* attributes = part.attributes;
         const bool flat = options.shading == Shading::Flat;
         // Smooth: OBJ indexes normals apart from positions, so the vertices stay shared (the
-        // part stays closed) and only the normals split at creases.
+        // part stays closed) and only the normals split at creases. UVs likewise: `vt` per
+        // distinct corner UV, so seams split no vertex.
         const ShadedMesh shaded = flat ? ShadedMesh{} : smooth_shaded(mesh, options.crease_degrees);
         const std::string group = part.name + std::string(group_suffix);
         out << "o " << group << "\ng " << group << "\nusemtl " << part.name << "\n"
             << (flat ? "s off\n" : "s 1\n");
-        for (const glm::vec3& p : mesh.positions) {
-            append_vector(line, "v", p);
+        const bool tinted = attributes && !attributes->tint.empty();
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            append_vector(line, "v", scale * mesh.positions[i]);
+            if (tinted) {  // the common `v x y z r g b` extension: linear RGB, like Kd
+                line.pop_back();
+                const glm::vec3 c = part.color * attributes->tint[i];
+                append_number(line, c.r);
+                append_number(line, c.g);
+                append_number(line, c.b);
+                line.push_back('\n');
+            }
             out << line;
         }
         const std::vector<glm::vec3> normals = flat ? face_normals(mesh) : shaded.normals;
@@ -95,11 +123,33 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
             append_vector(line, "vn", n);
             out << line;
         }
+        const bool with_uv = attributes && !attributes->uv.empty();
+        std::vector<std::array<std::size_t, 3>> uv_index(with_uv ? mesh.triangles.size() : 0);
+        std::size_t uv_count = 0;
+        if (with_uv) {
+            std::map<std::pair<float, float>, std::size_t> known;
+            for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const glm::vec2 uv = attributes->uv[f][k];
+                    auto [it, added] = known.try_emplace({uv.x, uv.y}, known.size());
+                    if (added) {
+                        line.assign("vt");
+                        append_number(line, uv.x);
+                        append_number(line, uv.y);
+                        line.push_back('\n');
+                        out << line;
+                    }
+                    uv_index[f][k] = it->second;
+                }
+            uv_count = known.size();
+        }
         for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
             line.assign("f");
             for (std::size_t k = 0; k < 3; ++k) {
-                append_index(line, vertex_base + mesh.triangles[f][k]);  // " v//vn"
-                line.append("//");
+                append_index(line, vertex_base + mesh.triangles[f][k]);  // " v/vt/vn" or " v//vn"
+                line.push_back('/');
+                if (with_uv) append_digits(line, uv_base + uv_index[f][k]);
+                line.push_back('/');
                 append_digits(line, normal_base + (flat ? f : shaded.mesh.triangles[f][k]));
             }
             line.push_back('\n');
@@ -107,21 +157,42 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
         }
         vertex_base += mesh.positions.size();
         normal_base += normals.size();
+        uv_base += uv_count;
     }
 }
 
-void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts) {
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts, std::string_view texture) {
     out << "# Sylva materials: Kd is the part's base colour, linear RGB\n";
     std::string line;
     for (const NamedMesh& part : parts) {
-        if (!has_triangles(part)) continue;
+        if (!has_triangles(part) || part.collision) continue;
         out << "\nnewmtl " << part.name << "\n";
         out << "Ka 0 0 0\n";
-        append_vector(line, "Kd", part.color);
+        append_vector(line, "Kd", texture.empty() ? part.color : glm::vec3(1.0f));
         out << line;
         out << "Ks 0 0 0\nNs 10\nd 1\nillum 1\n";
+        if (!texture.empty()) out << "map_Kd " << texture << "\n";
     }
 }
+
+namespace {
+
+// With a palette: `<stem>_palette.png` beside `path`, added to `files`; its file name for
+// the .mtl (empty without a palette).
+std::string add_palette(FileSet& files, const std::filesystem::path& path,
+                        const ExportOptions& options) {
+    if (options.palette_png.empty()) return {};
+    std::filesystem::path png = path;
+    png.replace_filename(path.stem().string() + "_palette.png");
+    const std::vector<std::uint8_t>& bytes = options.palette_png;
+    files.add(png, [&bytes](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+    });
+    return png.filename().string();
+}
+
+}  // namespace
 
 namespace {
 
@@ -132,7 +203,9 @@ void add_obj_with_mtl(FileSet& files, const std::filesystem::path& path,
     files.add(path, [&](std::ostream& out) {
         write_obj_with_mtl(out, parts, options, mtl.filename().string());
     });
-    files.add(mtl, [&](std::ostream& out) { write_mtl(out, parts); });
+    files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
+        write_mtl(out, parts, texture);
+    });
 }
 
 }  // namespace
@@ -156,11 +229,13 @@ void add_obj_files(FileSet& files, const std::filesystem::path& path,
     ModelParts all_parts;
     for (const auto& level : levels)
         for (const NamedMesh& part : level)
-            if (part.mesh && !part.mesh->triangles.empty() &&
+            if (part.mesh && !part.mesh->triangles.empty() && !part.collision &&
                 std::none_of(all_parts.begin(), all_parts.end(),
                              [&](const NamedMesh& p) { return p.name == part.name; }))
                 all_parts.push_back(part);
-    files.add(mtl, [&](std::ostream& out) { write_mtl(out, all_parts); });
+    files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
+        write_mtl(out, all_parts, texture);
+    });
     const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
     for (std::size_t i = 0; i < levels.size(); ++i)
         files.add(names[i], [&](std::ostream& out) {

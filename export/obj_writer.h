@@ -3,7 +3,9 @@
 // Two flavours: write_obj() writes bare geometry (positions and triangles), and
 // write_obj_with_mtl() adds normals (flat or smooth) and a material library beside the
 // file (`tree.obj` -> `tree.mtl`) with one material per part, named like the part, whose
-// Kd is the part's colour.
+// Kd is the part's colour. A part's attributes add `vt` (indexed apart from `v`, so seams
+// split no vertex) and, with a tint, `v x y z r g b`; collision parts are bare `o` groups
+// without material; a palette is written beside as `<stem>_palette.png` (map_Kd).
 #pragma once
 
 #include <filesystem>
@@ -32,8 +34,10 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
                         std::string_view group_suffix = {});
 
 // One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
-// baseColorFactor), no specular.
-void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts);
+// baseColorFactor), no specular. With a `texture` (the palette, export/palette.h): Kd 1 1 1
+// and `map_Kd texture`.
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
+               std::string_view texture = {});
 
 // Writes `path` and its material library (`path` with the extension .mtl) as one
 // transaction (core/file_set.h): both or neither. Returns both paths. Throws IoError naming

@@ -39,31 +39,51 @@ void put(std::string& bytes, T value) {
     bytes.append(raw, sizeof(T));
 }
 
+// Y up to Z up, a rotation about X (so windings stay outward): Blender and most mesh tools
+// take a PLY's Z as up.
+glm::vec3 z_up(const glm::vec3& p) {
+    return {p.x, -p.z, p.y};
+}
+
 }  // namespace
 
 void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
                const ExportOptions& options) {
     const bool smooth = options.shading == Shading::Smooth;
+    const float scale = profile_info(options.profile).unitless_scale;
     // What is written of each part: its mesh, or with smooth shading the mesh split at
     // creases with its normals.
     struct Written {
         const NamedMesh* part;
         ShadedMesh shaded;
         const Mesh& mesh() const { return shaded.normals.empty() ? *part->mesh : shaded.mesh; }
+        // The part's vertex that vertex i of mesh() copies (smooth shading appends copies).
+        std::vector<std::uint32_t> copied;
+        std::uint32_t source(std::size_t i) const {
+            return i < copied.size() ? copied[i] : static_cast<std::uint32_t>(i);
+        }
     };
     std::vector<Written> written;
     std::size_t vertices = 0, faces = 0;
     std::string names;
     for (const NamedMesh& part : parts) {
-        if (!part.mesh || part.mesh->triangles.empty()) continue;
+        if (!part.mesh || part.mesh->triangles.empty() || part.collision) continue;
         written.push_back(
-            {&part, smooth ? smooth_shaded(*part.mesh, options.crease_degrees) : ShadedMesh{}});
-        vertices += written.back().mesh().positions.size();
+            {&part, smooth ? smooth_shaded(*part.mesh, options.crease_degrees) : ShadedMesh{}, {}});
+        Written& w = written.back();
+        if (smooth) {
+            w.copied.resize(w.shaded.mesh.positions.size());
+            for (std::size_t f = 0; f < part.mesh->triangles.size(); ++f)
+                for (std::size_t k = 0; k < 3; ++k)
+                    w.copied[w.shaded.mesh.triangles[f][k]] = part.mesh->triangles[f][k];
+        }
+        vertices += w.mesh().positions.size();
         faces += part.mesh->triangles.size();
         names += " " + part.name;
     }
     out << "ply\nformat " << (options.ply_binary ? "binary_little_endian" : "ascii") << " 1.0\n"
-        << "comment Sylva low-poly tree: Y up, meters; parts in order:" << names << "\n"
+        << "comment Sylva low-poly tree: Z up (Blender's axes), "
+        << (scale == 1.0f ? "meters" : "centimeters") << "; parts in order:" << names << "\n"
         << "element vertex " << vertices << "\n"
         << "property float x\nproperty float y\nproperty float z\n"
         << (smooth ? "property float nx\nproperty float ny\nproperty float nz\n" : "")
@@ -77,20 +97,27 @@ void write_ply(std::ostream& out, const std::vector<NamedMesh>& parts,
     for (const Written& w : written) {
         const Mesh& mesh = w.mesh();
         const glm::vec3& color = w.part->color;
-        const std::array<std::uint8_t, 3> rgb{srgb8(color.r), srgb8(color.g), srgb8(color.b)};
-        const std::vector<glm::vec3>& normals = w.shaded.normals;
+        const PartAttributes* attributes = w.part->attributes;
+        const bool tinted = attributes && !attributes->tint.empty();
+        std::array<std::uint8_t, 3> rgb{srgb8(color.r), srgb8(color.g), srgb8(color.b)};
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            const glm::vec3& p = mesh.positions[i];
+            const glm::vec3 p = z_up(scale * mesh.positions[i]);
+            const glm::vec3 n = smooth ? z_up(w.shaded.normals[i]) : glm::vec3(0.0f);
+            if (tinted) {
+                // A smooth-shaded copy of a vertex sits after the mesh's own vertices.
+                const glm::vec3 c = color * attributes->tint[w.source(i)];
+                rgb = {srgb8(c.r), srgb8(c.g), srgb8(c.b)};
+            }
             bytes.clear();
             if (options.ply_binary) {
                 for (float v : {p.x, p.y, p.z}) put(bytes, v);
                 if (smooth)
-                    for (float v : {normals[i].x, normals[i].y, normals[i].z}) put(bytes, v);
+                    for (float v : {n.x, n.y, n.z}) put(bytes, v);
                 for (std::uint8_t c : rgb) put(bytes, c);
             } else {
                 for (float v : {p.x, p.y, p.z}) put_text(bytes, v);
                 if (smooth)
-                    for (float v : {normals[i].x, normals[i].y, normals[i].z}) put_text(bytes, v);
+                    for (float v : {n.x, n.y, n.z}) put_text(bytes, v);
                 for (std::uint8_t c : rgb) bytes += " " + std::to_string(c);
                 bytes.erase(0, 1);  // no leading space
                 bytes.push_back('\n');

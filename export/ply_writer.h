@@ -1,5 +1,7 @@
 // PLY export (binary little-endian or ASCII): all parts in one vertex and face list, each
-// vertex coloured with its part's colour (8-bit sRGB, as viewers expect), Y up, meters.
+// vertex coloured with its part's colour times its tint (8-bit sRGB, as viewers expect),
+// Z up (Blender's axes; PLY has no convention, and Y up lands on its back there), meters
+// (centimetres for the unreal profile). Collision parts are left out.
 // Vertices stay shared, so closed parts stay closed for mesh tools; smooth shading adds
 // per-vertex normals (nx, ny, nz), flat shading leaves normals to the viewer.
 #pragma once

@@ -20,6 +20,7 @@
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
 #include "ui/studio_state.h"
+#include "ui/wind_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -78,6 +79,7 @@ struct Viewport {
     static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
     int points_step = kNothing, replay_step = kNothing;
+    WindView wind;  // the wind toggle's parts (ui/wind_view.h)
 };
 
 GLFWwindow* create_window() {
@@ -135,7 +137,22 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
     viewport.crown.upload(meshes.crown);
     viewport.leaves.upload(meshes.leaves);
     viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
+    viewport.wind.ready = false;
     return meshes.level;
+}
+
+// The wind toggle: the shown parts swayed to `seconds` and uploaded in place of the rest.
+void upload_swayed(Viewport& viewport, const GeneratedTree& generated, int level, float seconds) {
+    if (!viewport.wind.ready) {
+        const ShownParts meshes = shown_parts(generated, level);
+        const sylva::Tree& tree = generated.tree;
+        set_wind_parts(viewport.wind, tree.skeleton, tree.trunk, tree.crown, tree.leaves,
+                       meshes.trunk, meshes.crown, meshes.leaves);
+    }
+    sway(viewport.wind, seconds);
+    viewport.trunk.upload(viewport.wind.parts[0].swayed);
+    viewport.crown.upload(viewport.wind.parts[1].swayed);
+    viewport.leaves.upload(viewport.wind.parts[2].swayed);
 }
 
 // Replaying: shows only the segments made up to the chosen growth step.
@@ -312,15 +329,17 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         state.view.replay = true;
         state.view.replay_iteration = *options.replay_iteration;
     }
+    state.view.wind = options.wind_seconds.has_value();
     start_generation(state);
 
     int frames_with_tree = 0;
+    bool swaying = false;    // the viewport holds swayed parts
     int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
         // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
         // while anything runs or is being edited it draws every frame.
-        const bool busy = options.screenshot_path || generation_running(state) ||
+        const bool busy = options.screenshot_path || state.view.wind || generation_running(state) ||
                           !state.stale.empty() || state.export_job.valid() ||
                           ImGui::IsAnyItemActive();
         if (busy)
@@ -350,6 +369,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         } else if (state.tree &&
                    shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+        }
+        if (state.tree && state.view.wind) {
+            upload_swayed(viewport, *state.tree, uploaded_level,
+                          options.wind_seconds.value_or(static_cast<float>(glfwGetTime())));
+            swaying = true;
+        } else if (state.tree && swaying) {
+            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            swaying = false;
         }
         update_colonization(viewport, state, false);
         if (state.frame_requested && state.tree) {

@@ -308,6 +308,9 @@ void view_section(StudioState& state) {
     ImGui::Checkbox("leaves", &v.leaves);
     ImGui::SameLine();
     ImGui::Checkbox("wireframe", &v.wireframe);
+    ImGui::Checkbox("wind", &v.wind);
+    tooltip("sway the tree with the wind data an export writes (docs/wind.glsl)");
+    ImGui::SameLine();
     ImGui::Checkbox("low poly", &v.low_poly);
     tooltip(
         "the game mesh: trunk and crown reduced to triangle_budget, leaves thinned to their "
@@ -325,6 +328,21 @@ void view_section(StudioState& state) {
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
+}
+
+// The engine whose conventions the export follows (README "Engine profiles").
+void profile_combo(EngineProfile& profile) {
+    ImGui::SetNextItemWidth(110.0f);
+    if (ImGui::BeginCombo("profile", std::string(profile_info(profile).name).c_str())) {
+        for (EngineProfile p : {EngineProfile::Generic, EngineProfile::Unity, EngineProfile::Unreal,
+                                EngineProfile::Godot})
+            if (ImGui::Selectable(std::string(profile_info(p).name).c_str(), p == profile))
+                profile = p;
+        ImGui::EndCombo();
+    }
+    tooltip(
+        "collision names, wind channel and OBJ/PLY units for unity, unreal or godot; generic "
+        "writes no collision");
 }
 
 void export_section(StudioState& state) {
@@ -346,6 +364,7 @@ void export_section(StudioState& state) {
         "template's triangle_budget");
     ImGui::Checkbox("LOD chain", &e.lod);
     tooltip("four levels: budget, 1/2, 1/4, 1/8 (one .glb, or a file per level)");
+    profile_combo(e.profile);
     ImGui::SameLine();
     ImGui::BeginDisabled(state.export_job.valid() || !state.tree);
     if (ImGui::Button("Export (Ctrl+E)")) start_export(state);

@@ -51,6 +51,14 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
             const std::string_view name = value();
             if (name.empty()) throw UsageError("--layout needs an example name");
             options.layout_example = std::string(name);
+        } else if (arg == "--wind") {
+            std::string_view text = value();
+            float seconds = -1.0f;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+            if (error != std::errc() || end != text.data() + text.size() || !(seconds >= 0.0f))
+                throw UsageError("--wind takes a time in seconds of at least 0, got '" +
+                                 std::string(text) + "'");
+            options.wind_seconds = seconds;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -74,8 +82,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--layout EXAMPLE] [--screenshot PATH [--frames "
-           "N]]\n"
+           "                    [--replay STEP] [--layout EXAMPLE] [--wind SECONDS]\n"
+           "                    [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -89,6 +97,7 @@ std::string studio_usage() {
            "                     STEP (0: the trunk), without the meshes\n"
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
            "                     examples lists them)\n"
+           "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

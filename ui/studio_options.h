@@ -20,6 +20,8 @@ struct StudioOptions {
     bool points = false;
     std::optional<int> replay_iteration;
     std::optional<std::string> layout_example;  // open the layout panel on this example
+    // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
+    std::optional<float> wind_seconds;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

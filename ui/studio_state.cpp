@@ -122,7 +122,10 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
         finish.lod = settings.lod;
         finished = finish_tree(tree, finish);
     }
-    const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl));
+    ExportOptions options;
+    options.profile = settings.profile;
+    options.engine.seed = tmpl.params.seed;
+    const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl), options);
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +
                std::to_string(finished.levels.size() - 1) + ", " +

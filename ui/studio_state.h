@@ -105,12 +105,14 @@ struct ViewToggles {
     bool points = false;       // the attraction points the growth started from
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
+    bool wind = false;         // sway the tree with its exported wind data (ui/wind_view.h)
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
 struct ExportSettings {
     std::string path = "tree.glb";  // the extension picks the format: .obj, .glb, .ply
     bool lod = false;
+    EngineProfile profile = EngineProfile::Generic;  // export/engine_profile.h
 };
 
 struct StudioState {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -243,6 +244,36 @@ TEST_F(Cli, SkeletonJson) {
     EXPECT_NE(text.find("\"format\": \"sylva-skeleton\""), std::string::npos);
     EXPECT_NE(text.find("\"segments\""), std::string::npos);
     EXPECT_NE(text.find("\"generations\": 3"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+std::string read_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(Cli, EngineProfilesNameCollisionAndBadEngineOptionsAreUsageErrors) {
+    Result bad = run("export --profile cryengine -o " + path("t.glb"));
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.output.find("generic, unity, unreal or godot"), std::string::npos) << bad.output;
+    EXPECT_EQ(run("export --collision maybe -o " + path("t.glb")).code, 2);
+    EXPECT_EQ(run("export --color-variation 2 -o " + path("t.glb")).code, 2);
+    EXPECT_TRUE(listing().empty()) << "a usage error writes nothing";
+
+    Result unreal = run("export -t palm --profile unreal --palette -o " + path("palm.obj"));
+    ASSERT_EQ(unreal.code, 0) << unreal.output;
+    const std::string obj = read_text(path("palm.obj"));
+    EXPECT_NE(obj.find("o UCX_tree_00"), std::string::npos);
+    EXPECT_NE(obj.find("centimeters"), std::string::npos);
+    EXPECT_NE(obj.find("\nvt "), std::string::npos);
+    EXPECT_NE(read_text(path("palm.mtl")).find("map_Kd palm_palette.png"), std::string::npos);
+    EXPECT_TRUE(fs::exists(path("palm_palette.png")));
+
+    ASSERT_EQ(run("export -t palm --profile godot -o " + path("palm.glb")).code, 0);
+    EXPECT_NE(read_text(path("palm.glb")).find("tree_collision_0-convcolonly"), std::string::npos);
 }
 
 }  // namespace
