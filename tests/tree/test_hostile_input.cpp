@@ -55,7 +55,7 @@ TEST(HostileBudget, APartBudgetOfZeroKeepsThatPartLikeTheWholeBudgetDoes) {
 // Marching cubes on a very fine grid makes slivers of zero area; the reduction used to
 // refuse them as "not a closed 2-manifold" (an internal error for valid input).
 TEST(HostileBudget, AVeryFineTrunkGridStillReduces) {
-    TreeTemplate t = load_template("spruce");
+    TreeTemplate t = load_template("seed_spruce");
     t.params.trunk_resolution = 900;
     MeshOptions options;
     options.budget = 800;

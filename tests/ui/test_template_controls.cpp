@@ -105,8 +105,9 @@ TEST(TemplateControls, InertParametersChangeNoSkeleton) {
         t.params.generations = std::min(t.params.generations, 4);
         const auto inert = inert_params(t);
         const Skeleton base = grow(t);
-        for (const char* key : {"branch_length", "pitch_angle", "yaw_angle", "branch_width",
-                                "trunk_taper", "branch_taper", "tip_width", "pipe_exponent", "tropism"}) {
+        for (const char* key :
+             {"branch_length", "pitch_angle", "yaw_angle", "branch_width", "trunk_taper",
+              "branch_taper", "tip_width", "pipe_exponent", "tropism"}) {
             TreeTemplate changed = t;
             const ParamInfo* info = nullptr;
             for (const ParamInfo& i : param_infos())
