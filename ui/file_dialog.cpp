@@ -93,8 +93,8 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
     const bool can_confirm = !dialog.name.empty();
     ImGui::BeginDisabled(!can_confirm);
     if ((ImGui::Button(dialog.saving ? "Save" : "Open") || entered) && can_confirm) {
-        fs::path path = fs::path(dialog.name).is_absolute() ? fs::path(dialog.name)
-                                                            : folder / dialog.name;
+        fs::path path =
+            fs::path(dialog.name).is_absolute() ? fs::path(dialog.name) : folder / dialog.name;
         if (dialog.saving && !path.has_extension()) path += ".toml";
         chosen = path.string();
     }

@@ -70,7 +70,8 @@ bool parse_define_line(std::string_view line, DefineLine& out) {
     if (i == name_begin) return false;
     out.name = std::string(line.substr(name_begin, i - name_begin));
     const std::size_t hash = line.find('#', i);
-    const std::string_view rest = line.substr(i, hash == std::string_view::npos ? line.npos : hash - i);
+    const std::string_view rest =
+        line.substr(i, hash == std::string_view::npos ? line.npos : hash - i);
     const auto value_first = rest.find_first_not_of(" \t");
     if (value_first == std::string_view::npos) return false;
     const auto value_last = rest.find_last_not_of(" \t\r");
@@ -95,7 +96,9 @@ bool parse_range_comment(std::string_view comment, double& min, double& max, std
     return true;
 }
 
-bool whole(double v) { return std::floor(v) == v && std::abs(v) < 1e9; }
+bool whole(double v) {
+    return std::floor(v) == v && std::abs(v) < 1e9;
+}
 
 // The text a turtle draws from: the axiom and every production's successor, comments and
 // directives left out (the predecessor and condition of a rule are matched, not drawn).
@@ -205,14 +208,22 @@ bool axiom_sets_width(std::string_view grammar) {
 
 bool colonization_key(std::string_view key) {
     static constexpr std::array<std::string_view, 34> keys = {
-        "attraction_points", "influence_radius",  "kill_distance",     "step_size",
-        "max_iterations",    "envelope",          "envelope_size_x",   "envelope_size_y",
-        "envelope_size_z",   "envelope_base",     "envelope_offset_x", "envelope_offset_z",
-        "envelope_template", "envelope_tilt",     "obstacle",          "obstacle_x",
-        "obstacle_y",        "obstacle_z",        "obstacle_size_x",   "obstacle_size_y",
-        "obstacle_size_z",   "roots",             "root_spread",       "point_distribution",
-        "trunk_height",      "tropism_vector_x",  "tropism_vector_y",  "tropism_vector_z",
-        "max_degree",        "max_depth",         "max_no_grow",       "weighted_growth",
+        "attraction_points", "influence_radius",
+        "kill_distance",     "step_size",
+        "max_iterations",    "envelope",
+        "envelope_size_x",   "envelope_size_y",
+        "envelope_size_z",   "envelope_base",
+        "envelope_offset_x", "envelope_offset_z",
+        "envelope_template", "envelope_tilt",
+        "obstacle",          "obstacle_x",
+        "obstacle_y",        "obstacle_z",
+        "obstacle_size_x",   "obstacle_size_y",
+        "obstacle_size_z",   "roots",
+        "root_spread",       "point_distribution",
+        "trunk_height",      "tropism_vector_x",
+        "tropism_vector_y",  "tropism_vector_z",
+        "max_degree",        "max_depth",
+        "max_no_grow",       "weighted_growth",
         "curve_reduction",   "angle_smoothing"};
     return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
@@ -304,11 +315,12 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
                  "an L-system parameter: space colonization does not read it (its branches "
                  "follow the attraction points; widths come from tip_width and pipe_exponent)");
         if (p.envelope == kEnvelopeTemplate) {
-            for (std::string_view key : {"envelope_size_x", "envelope_size_y", "envelope_size_z",
-                                         "envelope_base", "envelope_offset_x",
-                                         "envelope_offset_z", "envelope_tilt"})
-                mark(key, "the envelope is another template's crown (envelope = template): "
-                          "its own size and place are not used");
+            for (std::string_view key :
+                 {"envelope_size_x", "envelope_size_y", "envelope_size_z", "envelope_base",
+                  "envelope_offset_x", "envelope_offset_z", "envelope_tilt"})
+                mark(key,
+                     "the envelope is another template's crown (envelope = template): "
+                     "its own size and place are not used");
         } else {
             mark("envelope_template", "only used with envelope = template");
         }
@@ -316,12 +328,14 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
             for (std::string_view key : {"obstacle_x", "obstacle_y", "obstacle_z",
                                          "obstacle_size_x", "obstacle_size_y", "obstacle_size_z"})
                 mark(key, "no obstacle: set obstacle to sphere or box first");
-        if (p.roots <= 1) mark("root_spread", "one root: the spread of a circle of roots is unused");
+        if (p.roots <= 1)
+            mark("root_spread", "one root: the spread of a circle of roots is unused");
     } else {
         for (const ParamInfo& info : param_infos())
             if (colonization_key(info.key))
-                mark(info.key, "a space colonization parameter: the L-system does not read it "
-                               "(switch growth to colonization)");
+                mark(info.key,
+                     "a space colonization parameter: the L-system does not read it "
+                     "(switch growth to colonization)");
         const std::vector<std::string_view> texts = drawn_texts(tree.grammar);
         auto unread = [&](std::string_view key, std::string_view symbols) {
             return !uses_default(texts, symbols) && !names_param(tree.grammar, key);
@@ -344,8 +358,8 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
                     return "widths = taper: per-segment factors set the widths";
             }
         };
-        for (std::string_view key : {"trunk_taper", "branch_taper", "tip_width", "pipe_exponent",
-                                     "branch_width"}) {
+        for (std::string_view key :
+             {"trunk_taper", "branch_taper", "tip_width", "pipe_exponent", "branch_width"}) {
             if (names_param(tree.grammar, key)) continue;
             const bool taper_key = key == "trunk_taper" || key == "branch_taper";
             const bool pipe_key = key == "tip_width" || key == "pipe_exponent";
@@ -397,7 +411,8 @@ SliderRange slider_range(std::string_view key, double value) {
     if (key == "branch_length" || key == "branch_width" || key == "sphere_diameter") max = 3;
     if (key == "crown_offset") min = -2, max = 2;
     // The template's own value sits inside, with room to go past it.
-    if (value > max) max = std::min(info->max, info->integer ? std::ceil(value * 1.5) : value * 1.5);
+    if (value > max)
+        max = std::min(info->max, info->integer ? std::ceil(value * 1.5) : value * 1.5);
     if (value < min) min = std::max(info->min, value < 0 ? value * 1.5 : info->min);
     return {min, max};
 }
