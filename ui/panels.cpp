@@ -62,7 +62,7 @@ void section(const char* title) {
 // What the edited tree will cost, before anything runs.
 void estimate_line(const StudioState& state) {
     const bool over = !state.cost_warning.empty();
-    const std::string text = "size: " + cost_text(state.estimate);
+    const std::string text = "estimate, at least: " + cost_text(state.estimate);
     ImGui::PushStyleColor(ImGuiCol_Text,
                           over ? kWarningColor : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::PushTextWrapPos(0.0f);
@@ -192,7 +192,7 @@ void this_tree_section(StudioState& state) {
         } else {
             float v = static_cast<float>(c.value);
             changed = ImGui::SliderFloat(c.name.c_str(), &v, static_cast<float>(c.min),
-                                         static_cast<float>(c.max), "%.3g");
+                                         static_cast<float>(c.max), "%.4g");
             value = round_for_range(v, c.min, c.max);
         }
         if (ImGui::IsItemHovered())

@@ -299,6 +299,10 @@ void set_growth_method(StudioState& state, std::string_view method) {
     commit_edit(state);
 }
 
+bool asks_first(const StudioState& state, const Cost& cost) {
+    return !within(cost, state.ask_limits) || cost.segments > state.ask_segments;
+}
+
 void start_generation(StudioState& state) {
     const bool draft = draft_wanted(state);
     const std::size_t budget = preview_budget(state);
@@ -320,9 +324,14 @@ void start_generation(StudioState& state) {
     // anyway"; the tree on screen stays.
     const Cost cost = estimate_cost(state.tree_template, budget);
     state.estimate = cost;
-    if (!within(cost, CostLimits{}) && !state.run_costly) {
-        state.cost_warning = "Not started: estimated " + cost_text(cost) +
-                             ", over the 2 GB / 10 s a job may take unasked.";
+    if (asks_first(state, cost) && !state.run_costly) {
+        char limits[128];
+        std::snprintf(limits, sizeof limits, "%.0f segments, %.2g GB or %.2g s", state.ask_segments,
+                      state.ask_limits.max_bytes / 1e9, state.ask_limits.max_seconds);
+        state.cost_warning = "Not started: this tree is estimated at " + cost_text(cost) +
+                             " at least, over the " + limits +
+                             " a job may take unasked (the real time is often several times "
+                             "the estimate).";
         return;
     }
     state.run_costly = false;

@@ -141,6 +141,13 @@ struct StudioState {
     // estimate is shown, and "run anyway" sets run_costly and starts it once.
     std::string cost_warning;  // empty: nothing held back
     bool run_costly = false;
+    // Where the studio asks first: over the CLI's limits, or over ask_segments skeleton
+    // segments. The time estimate is a lower bound that misses most of what many segments
+    // cost (the oak at generations 12: 16 000 segments, estimated 0.9 s, took 12 s on a
+    // shared machine), so the segment count asks well before the time limit would; every
+    // built-in template's default stays under both (tests/ui checks).
+    CostLimits ask_limits;
+    double ask_segments = 10000;
     // The estimate of the edited template (before any job starts) and of the running job,
     // for the size line and the progress bar's time left.
     Cost estimate;
@@ -225,6 +232,9 @@ void set_growth_method(StudioState& state, std::string_view method);
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);
+
+// True when a job of this estimated cost waits for "run anyway" (ask_limits, ask_segments).
+bool asks_first(const StudioState& state, const Cost& cost);
 
 // Stops the running generation (a cancel button, Esc); the tree on screen stays, and the
 // edit is not generated again until the next edit or Generate.

@@ -50,9 +50,9 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0xaa9dafaf09148250ull},
-        {"oak.glb", 0xd593abe9637606b1ull},
-        {"oak.ply", 0x179ad58048086beeull},
+        {"oak.obj", 0x46fa6f8cf173be05ull},
+        {"oak.glb", 0xf0a3bfde8c0a4130ull},
+        {"oak.ply", 0x6ebd563669bbb61cull},
         {"baobab.obj", 0xb099f957a98e8a63ull},
         {"baobab.glb", 0xe1cc1c62d37c710eull},
         {"baobab.ply", 0x3d53c356815d3843ull},

@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "tree/cost.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 #include "ui/studio_state.h"
@@ -60,8 +61,8 @@ TEST(StudioBasics, AnExpensiveEditAsksFirst) {
     EXPECT_FALSE(state.job.has_value());  // nothing started
     EXPECT_FALSE(state.cost_warning.empty());
     EXPECT_NE(state.cost_warning.find("modules"), std::string::npos);
-    EXPECT_GT(state.estimate.modules, 100 * cheap_modules);
-    EXPECT_GT(state.estimate.seconds, CostLimits{}.max_seconds);
+    EXPECT_GT(state.estimate.modules, 20 * cheap_modules);
+    EXPECT_GT(state.estimate.segments, state.ask_segments);
     EXPECT_EQ(state.tree, shown);  // the tree on screen stays
 
     state.run_costly = true;
@@ -73,6 +74,14 @@ TEST(StudioBasics, AnExpensiveEditAsksFirst) {
     EXPECT_FALSE(state.job.has_value());
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_EQ(state.tree, shown);
+}
+
+// No built-in template asks before its own default tree is made.
+TEST(StudioBasics, NoTemplateAsksForItsDefault) {
+    const StudioState state;
+    for (const TreeTemplate* t : builtin_templates())
+        EXPECT_FALSE(asks_first(state, estimate_cost(*t)))
+            << t->name << ": " << cost_text(estimate_cost(*t));
 }
 
 TEST(StudioBasics, ResetGoesBackToTheTemplateAndUndoBringsTheEditBack) {
@@ -134,7 +143,7 @@ TEST(StudioBasics, SavingKeepsCommentsAndShortNumbers) {
     EXPECT_NE(text.find("leaf_size = 0.8\n"), std::string::npos) << text;
     EXPECT_NE(text.find("crown = [0.1, 0.7, 0.2]"), std::string::npos) << text;
     EXPECT_EQ(text.find("0000000"), std::string::npos) << text;
-    EXPECT_NE(text.find("# fork angle"), std::string::npos);  // the grammar's own comments
+    EXPECT_NE(text.find("fork angle, degrees"), std::string::npos);  // the grammar's own comments
     const TreeTemplate back = parse_template_file(text, state.template_path);
     EXPECT_TRUE(same_template(back, state.tree_template));
 
@@ -172,7 +181,8 @@ TEST(StudioBasics, RecentFilesPersistNewestFirst) {
     TempDir dir;
     StudioState state;
     state.recent_store = (dir.path / "config" / "recent_files").string();
-    for (int i = 0; i < 10; ++i) remember_file(state, (dir.path / (std::to_string(i) + ".toml")).string());
+    for (int i = 0; i < 10; ++i)
+        remember_file(state, (dir.path / (std::to_string(i) + ".toml")).string());
     remember_file(state, (dir.path / "3.toml").string());
     ASSERT_EQ(state.recent_files.size(), kMaxRecentFiles);
     EXPECT_EQ(std::filesystem::path(state.recent_files[0]).filename(), "3.toml");

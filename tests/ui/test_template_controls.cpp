@@ -101,8 +101,7 @@ TEST(TemplateControls, InertParametersOfSpaceColonization) {
 TEST(TemplateControls, InertParametersChangeNoSkeleton) {
     for (const TreeTemplate* builtin : builtin_templates()) {
         if (builtin->growth != "lsystem") continue;
-        TreeTemplate t = *builtin;
-        t.params.generations = std::min(t.params.generations, 4);
+        const TreeTemplate& t = *builtin;
         const auto inert = inert_params(t);
         const Skeleton base = grow(t);
         for (const char* key :
