@@ -59,19 +59,23 @@ void section(const char* title) {
     ImGui::Separator();
 }
 
-// What the edited tree will cost, before anything runs.
+// What the edited tree will cost, before anything runs: one line (it never pushes the panel),
+// the whole estimate in the tooltip.
 void estimate_line(const StudioState& state) {
+    const Cost& cost = state.estimate;
     const bool over = !state.cost_warning.empty();
-    const std::string text = "estimate, at least: " + cost_text(state.estimate);
+    char line[128];
+    std::snprintf(line, sizeof line, "estimate: %.0f segments, %.2g GB, %.2g s or more%s",
+                  cost.segments, cost.bytes / 1e9, cost.seconds, over ? " - asks first" : "");
     ImGui::PushStyleColor(ImGuiCol_Text,
                           over ? kWarningColor : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
+    ImGui::TextUnformatted(line);
     ImGui::PopStyleColor();
-    tooltip(
-        "estimated before the job starts (tree/cost.h): the derived word's modules, the "
-        "skeleton's segments, the meshing grids' cells, peak memory and time on two cores");
+    const std::string text =
+        "estimated before the job starts (tree/cost.h), a lower bound: " + cost_text(cost) +
+        "\n(the derived word's modules, the skeleton's segments, the meshing grids' cells, "
+        "peak memory and time on two cores)";
+    tooltip(text.c_str());
 }
 
 void actions_row(StudioState& state) {

@@ -93,7 +93,8 @@ void apply_edit(StudioState& state, const TreeTemplate& edit) {
     state.tree_template = edit;
     state.committed = edit;
     state.frame_next_tree |= other_tree;
-    start_generation(state);
+    // A colour's undo needs no new tree (poll_jobs hands the colours to the tree on screen).
+    if (!state.tree || edit_pending(state)) start_generation(state);
 }
 
 std::string files_text(const std::vector<std::filesystem::path>& files) {
@@ -422,6 +423,10 @@ void poll_jobs(StudioState& state) {
             state.error_line = state.error_column = 0;
         }
     }
+    // Colours need no new tree: when the edit is the tree on screen but for its colours
+    // (reset, undo or redo of a colour), the tree on screen takes them.
+    if (state.tree && same_tree_input(state.shown_template, state.tree_template))
+        state.shown_template.colors = state.tree_template.colors;
     if (state.generate_wanted && state.stale.empty()) {
         // The edit may have moved on while the workers wound down (or the drag's job ran):
         // generate the newest.

@@ -123,6 +123,8 @@ TEST(StudioBasics, ColoursRecolourTheShownTreeWithoutANewOne) {
     undo(state);
     EXPECT_EQ(state.tree_template.colors.trunk, t.colors.trunk);
     ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_EQ(state.tree, shown);                                  // still no new tree
+    EXPECT_EQ(state.shown_template.colors.trunk, t.colors.trunk);  // but the old colour
 }
 
 // Saving the oak keeps the built-in file's comments (its header, the grammar's), writes 0.8
