@@ -292,7 +292,11 @@ void parameter_section(StudioState& state) {
     if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
     tooltip("a new random seed");
     // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
-    const auto inert = inert_params(t);
+    auto inert = inert_params(t);
+    // These shape only the game mesh, which the full-detail view does not show.
+    if (!state.view.low_poly)
+        for (const char* key : {"crown_merge", "drop_hidden"})
+            inert.emplace(key, "it acts on the game mesh only: switch the low-poly view on");
     for (const ParamInfo& info : param_infos()) {
         double value = *get_param(params, info.key);
         const auto unread = inert.find(info.key);
@@ -649,7 +653,7 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
         ImGui::SameLine();
     }
     if (!state.crown_notice.empty()) {
-        ImGui::TextColored(kWarningColor, "crown vanished (see Tree)  ");
+        ImGui::TextColored(kWarningColor, "crown vanished (hover: why)  ");
         tooltip(state.crown_notice.c_str());
         ImGui::SameLine();
     }
