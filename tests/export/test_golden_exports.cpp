@@ -71,9 +71,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"honda.obj", 0xdf6bc7b0f0cd17b8ull},
         {"honda.glb", 0xff1c8cf9c34c1e31ull},
         {"honda.ply", 0x581358eeadb1a10aull},
-        {"palm.obj", 0x168ec09c63b45673ull},
-        {"palm.glb", 0x6e6fb91896cf8df0ull},
-        {"palm.ply", 0xec50ad110fe1f97cull},
+        {"palm.obj", 0x6f18956cf4bc2ebeull},
+        {"palm.glb", 0x9ddc6228fe1ecc51ull},
+        {"palm.ply", 0xe2fa791e180198c9ull},
         {"pine.obj", 0x9e1a8fdd720e6b4eull},
         {"pine.glb", 0xf255b2dca4af52c0ull},
         {"pine.ply", 0xea81977276f2d079ull},
@@ -102,8 +102,8 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"windswept.glb", 0xd90b1136a81c3560ull},
         {"windswept.ply", 0xc4733da282dd2725ull},
         // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
-        {"palm_lod.glb", 0xc386932690f6c90full},
-        {"palm_lod.obj", 0xc5a42f614dd651d7ull},
+        {"palm_lod.glb", 0xcd465dd0f78e67caull},
+        {"palm_lod.obj", 0x900d2529d0f8fc68ull},
     };
     return hashes;
 }
