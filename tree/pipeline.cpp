@@ -234,8 +234,10 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
 
     check_extent(out.skeleton);
+    throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
     TreeFields fields = tree_fields(out.skeleton, p);
+    throw_if_cancelled(options.cancel);
     if (!fields.trunk)
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
