@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
     std::vector<int> resolutions = {25, 50, 75, 100, 125, 150, 200, 300, 400};
     if (quick) resolutions = {25, 50, 100};
 
-    TreeTemplate spruce = load_template("spruce");
+    TreeTemplate spruce = load_template("seed_spruce");
     Skeleton skeleton = grow(spruce);
     std::printf(
         "Seed 001 spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "

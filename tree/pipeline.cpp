@@ -294,11 +294,13 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
 
     check_extent(out.skeleton);
+    throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
     TreeFields fields = tree_fields(out.skeleton, p, cells);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
+    throw_if_cancelled(options.cancel);
     if (!fields.trunk)
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
@@ -354,8 +356,19 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         leaves.seed = p.seed;
         leaves.cancel = options.cancel;
         const SphereField& crown = *fields.crown;
-        out.leaves = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
-                                    fields.crown_box, leaves);
+        // Behind a meshed crown only the leaves near its surface are ever seen: they fill a
+        // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
+        // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).
+        const float shell = static_cast<float>(p.leaf_size);
+        if (mesh_crown && crown.is_distance_bound() && shell > 0.0f)
+            out.leaves = scatter_leaves(
+                [&crown, shell](const glm::vec3& q) {
+                    return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
+                },
+                fields.crown_box, leaves);
+        else
+            out.leaves = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
+                                        fields.crown_box, leaves);
     }
     add_polygon_leaves(out.leaves, out.skeleton.polygons);
     out.times.push_back({"leaves", clock.lap_ms()});

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
@@ -132,7 +133,102 @@ int grammar_first_line(std::string_view text, const toml::node* grammar) {
     return int(where.begin.line) + (newline_after ? 1 : 0);
 }
 
+// The shortest text that reads back to `value`, always a TOML float ("0.8", "34.0", "1e-07"):
+// 0.8 is written as 0.8, not 0.80000000000000004.
+template <class Real>
+std::string toml_float(Real value) {
+    if (value == 0) return "0.0";
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    std::string text = error == std::errc() ? std::string(buffer, end) : std::to_string(value);
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+    return text;
+}
+
+// A value's end on its line: past a quoted string (which may hold '#'), else the first '#'.
+std::size_t comment_start(std::string_view line, std::size_t value_begin) {
+    char quote = 0;
+    for (std::size_t i = value_begin; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quote) {
+            if (c == '\\' && quote == '"')
+                ++i;
+            else if (c == quote)
+                quote = 0;
+        } else if (c == '"' || c == '\'') {
+            quote = c;
+        } else if (c == '#') {
+            return i;
+        }
+    }
+    return std::string_view::npos;
+}
+
 }  // namespace
+
+TemplateComments template_comments(std::string_view text) {
+    TemplateComments comments;
+    std::string section, pending;
+    bool seen_key = false;
+    std::string_view multiline_end;  // inside a multi-line string: its closing quotes
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        if (!multiline_end.empty()) {
+            if (line.find(multiline_end) != std::string_view::npos) multiline_end = {};
+            continue;
+        }
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string_view::npos) {
+            if (!seen_key && !pending.empty()) pending += "\n";
+            continue;
+        }
+        if (line[first] == '#') {
+            pending += std::string(line.substr(first)) + "\n";
+            continue;
+        }
+        if (line[first] == '[') {
+            const auto close = line.find(']', first);
+            section = std::string(line.substr(first + 1, close - first - 1));
+            if (!pending.empty()) comments.above["[" + section + "]"] = pending;
+            pending.clear();
+            seen_key = true;
+            continue;
+        }
+        const auto equals = line.find('=', first);
+        if (equals == std::string_view::npos) continue;
+        std::string_view key = line.substr(first, equals - first);
+        key = key.substr(0, key.find_last_not_of(" \t") + 1);
+        const std::string id = section + "." + std::string(key);
+        if (!seen_key) {
+            comments.header = pending;
+            seen_key = true;
+        } else if (!pending.empty()) {
+            comments.above[id] = pending;
+        }
+        pending.clear();
+        const auto value = line.find_first_not_of(" \t", equals + 1);
+        if (value == std::string_view::npos) continue;
+        for (std::string_view quotes : {"'''", "\"\"\""}) {
+            if (line.substr(value, 3) == quotes &&
+                line.find(quotes, value + 3) == std::string_view::npos) {
+                multiline_end = quotes;
+                break;
+            }
+        }
+        if (!multiline_end.empty()) continue;
+        const auto hash = comment_start(line, value);
+        if (hash != std::string_view::npos) {
+            std::string_view comment = line.substr(hash);
+            comment = comment.substr(0, comment.find_last_not_of(" \t\r") + 1);
+            comments.after[id] = std::string(comment);
+        }
+    }
+    return comments;
+}
 
 TreeTemplate parse_template_file(std::string_view text, const std::string& source) {
     toml::table doc;
@@ -176,37 +272,35 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
     return tree;
 }
 
-std::string template_file_text(const TreeTemplate& tree) {
+std::string template_file_text(const TreeTemplate& tree, std::string_view original) {
     auto name_of = [](const auto& names, int value) {
         for (const Named& n : names)
             if (n.value == value) return n.name;
         return std::string_view{};
     };
-    toml::table params;
-    for (const ParamInfo& info : param_infos()) {
-        double value = *get_param(tree.params, info.key);
-        if (!info.choices.empty())
-            params.insert(info.key, param_text(tree.params, info));
-        else if (info.integer)
-            params.insert(info.key, static_cast<int64_t>(value));
-        else
-            params.insert(info.key, value);
-    }
-    params.insert("seed", static_cast<int64_t>(tree.params.seed));
-    auto rgb = [](const glm::vec3& c) {
-        return toml::array{double(c.r), double(c.g), double(c.b)};
-    };
-    toml::table colors{{"trunk", rgb(tree.colors.trunk)},
-                       {"crown", rgb(tree.colors.crown)},
-                       {"leaves", rgb(tree.colors.leaves)}};
-    // Written by hand around the tables so the grammar stays a readable multi-line string.
+    const TemplateComments comments = template_comments(original);
     std::ostringstream out;
-    out << "# Sylva tree template\n";
-    out << "name = " << toml::value<std::string>(tree.name) << "\n";
-    out << "description = " << toml::value<std::string>(tree.description) << "\n";
-    if (tree.growth != "lsystem") out << "growth = \"" << tree.growth << "\"\n";
-    out << "turtle = \"" << name_of(kModes, int(tree.mode)) << "\"\n";
-    out << "widths = \"" << name_of(kWidths, int(tree.width_model)) << "\"\n";
+    // A key's comment lines above it, then the key, then its comment at the line's end.
+    auto put = [&](std::string_view section, std::string_view key, const std::string& value) {
+        const std::string id = std::string(section) + "." + std::string(key);
+        if (auto above = comments.above.find(id); above != comments.above.end())
+            out << above->second;
+        out << key << " = " << value;
+        if (auto after = comments.after.find(id); after != comments.after.end())
+            out << "  " << after->second;
+        out << "\n";
+    };
+    auto quoted = [](const std::string& text) {
+        std::ostringstream q;
+        q << toml::value<std::string>(text);
+        return q.str();
+    };
+    out << (comments.header.empty() ? std::string("# Sylva tree template\n") : comments.header);
+    put("", "name", quoted(tree.name));
+    put("", "description", quoted(tree.description));
+    if (tree.growth != "lsystem") put("", "growth", quoted(tree.growth));
+    put("", "turtle", "\"" + std::string(name_of(kModes, int(tree.mode))) + "\"");
+    put("", "widths", "\"" + std::string(name_of(kWidths, int(tree.width_model))) + "\"");
     // Written so it reads back byte for byte: the closing quotes follow the grammar's last
     // character (a newline there would be read as part of it), and a grammar a literal
     // string cannot hold (three quotes, a control character) goes into an escaped string.
@@ -219,7 +313,7 @@ std::string template_file_text(const TreeTemplate& tree) {
     if (grammar.empty() && tree.growth != "lsystem") {
         // A growth method without a grammar (colonization) writes none.
     } else if (literal) {
-        out << "grammar = '''\n" << grammar << "'''\n";
+        put("", "grammar", "'''\n" + grammar + "'''");
     } else {
         std::string escaped;
         for (char c : grammar) {
@@ -235,14 +329,39 @@ std::string template_file_text(const TreeTemplate& tree) {
                 escaped += c;
             }
         }
-        out << "grammar = \"\"\"\n" << escaped << "\"\"\"\n";
+        put("", "grammar", "\"\"\"\n" + escaped + "\"\"\"");
     }
-    out << "\n[params]\n" << params << "\n\n[colors]\n" << colors << "\n";
+    out << "\n";
+    if (auto above = comments.above.find("[params]"); above != comments.above.end())
+        out << above->second;
+    out << "[params]\n";
+    for (const ParamInfo& info : param_infos()) {
+        const double value = *get_param(tree.params, info.key);
+        if (!info.choices.empty())
+            put("params", info.key, quoted(param_text(tree.params, info)));
+        else if (info.integer)
+            put("params", info.key, std::to_string(static_cast<int64_t>(value)));
+        else
+            put("params", info.key, toml_float(value));
+    }
+    put("params", "seed", std::to_string(tree.params.seed));
+    out << "\n";
+    if (auto above = comments.above.find("[colors]"); above != comments.above.end())
+        out << above->second;
+    out << "[colors]\n";
+    auto rgb = [](const glm::vec3& c) {
+        // Shortest as floats, which is what they are: 0.33, not 0.33000001311302185.
+        return "[" + toml_float(c.r) + ", " + toml_float(c.g) + ", " + toml_float(c.b) + "]";
+    };
+    put("colors", "trunk", rgb(tree.colors.trunk));
+    put("colors", "crown", rgb(tree.colors.crown));
+    put("colors", "leaves", rgb(tree.colors.leaves));
     return out.str();
 }
 
-void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree) {
-    std::string text = template_file_text(tree);
+void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree,
+                        std::string_view original) {
+    std::string text = template_file_text(tree, original);
     write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 

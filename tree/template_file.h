@@ -18,6 +18,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -28,10 +29,24 @@ namespace sylva {
 // Throws InputError naming `source` (a file name), the line and the key at fault.
 TreeTemplate parse_template_file(std::string_view text, const std::string& source);
 
+// The comments of a template file, to write them again: the header above the first key,
+// the comment lines above a key or table ("params.leaf_size", "[colors]") and the comment
+// at the end of a key's line (with its '#').
+struct TemplateComments {
+    std::string header;
+    std::map<std::string, std::string> above;
+    std::map<std::string, std::string> after;
+};
+TemplateComments template_comments(std::string_view text);
+
 // The TOML text of a template; parse_template_file reads it back to an equal template.
-std::string template_file_text(const TreeTemplate& tree);
+// Numbers are written as the shortest text that reads back to them (0.8, not
+// 0.80000000000000004). The comments of `original` (the text the template was read from,
+// when there is one) are kept at the keys they stood at.
+std::string template_file_text(const TreeTemplate& tree, std::string_view original = {});
 
 // Throws IoError naming the path; never leaves a partial file.
-void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree);
+void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree,
+                        std::string_view original = {});
 
 }  // namespace sylva

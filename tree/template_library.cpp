@@ -45,6 +45,18 @@ const std::vector<const TreeTemplate*>& builtin_templates() {
     return all;
 }
 
+std::string_view builtin_template_text(std::string_view name) {
+    const auto& texts = builtin_template_texts();
+    for (const auto& [file, text] : texts) {
+        // The file's stem is the template's name for every built-in one; fall back to parsing.
+        if (std::filesystem::path(file).stem().string() == name) return text;
+    }
+    for (std::size_t i = 0; i < texts.size(); ++i)
+        if (parse_template_file(texts[i].second, std::string(texts[i].first)).name == name)
+            return texts[i].second;
+    return {};
+}
+
 const TreeTemplate& default_template() {
     return *builtin_templates().front();
 }

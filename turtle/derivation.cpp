@@ -35,6 +35,8 @@ class Deriver {
             next.clear();
             next.reserve(word.size() * 2, word.param_count() * 2);
             for (size_t i = 0; i < word.size(); ++i) {
+                // A long step answers a cancel too (the studio's cancel within 100 ms).
+                if ((i & 4095) == 4095) throw_if_cancelled(settings_.cancel);
                 rewrite(word, i, next);
                 if (next.size() > settings_.max_modules)
                     throw GrammarError("derivation step " + std::to_string(step) +

@@ -17,6 +17,7 @@
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
 #include "ui/panels.h"
+#include "ui/scale_figure.h"
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
 #include "ui/studio_state.h"
@@ -30,7 +31,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -46,6 +52,7 @@ constexpr glm::vec3 kWireColor{0.05f, 0.05f, 0.05f};
 constexpr glm::vec3 kEnvelopeColor{0.45f, 0.62f, 0.85f};
 constexpr glm::vec3 kPointColor{0.78f, 0.84f, 0.95f};
 constexpr float kPointSize = 2.0f;
+constexpr glm::vec3 kFigureColor{0.92f, 0.92f, 0.92f};
 
 // GLFW reports errors through a C callback without a user pointer; the last one is kept to
 // explain a failed window creation.
@@ -67,12 +74,29 @@ void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action,
     if (action != GLFW_RELEASE) g_key_presses.push_back({key, mods});
 }
 
+// Files dropped on the window since the last frame (GLFW's drop callback).
+std::vector<std::string> g_dropped_files;
+
+void remember_drop(GLFWwindow* /*window*/, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) g_dropped_files.emplace_back(paths[i]);
+}
+
+// Where the recent files persist: $XDG_CONFIG_HOME/sylva, else ~/.config/sylva.
+std::string recent_files_store() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
+        return std::string(config) + "/sylva/recent_files";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::string(home) + "/.config/sylva/recent_files";
+    return {};
+}
+
 // The GL objects of the 3D view. Destroyed before the context that owns them.
 struct Viewport {
     Backdrop backdrop;
     GroundGrid grid;
     MeshRenderer trunk, crown, leaves;
     LineRenderer skeleton;
+    LineRenderer figure;  // the 1.8 m person beside the trunk
     // Space colonization: the envelope's wire, its attraction points, and the skeleton up to
     // a growth step. What each holds: the step (-1: the whole growth), kNothing after a new
     // tree.
@@ -197,6 +221,22 @@ void frame_tree(Viewport& viewport, StudioState& state, float aspect) {
     viewport.grid.layout(0.5f * (low + high), radius, grid_cell_for(2.0f * radius));
 }
 
+// The person stands on the ground beside the tree, off the crown's edge so it is not hidden.
+void place_scale_figure(Viewport& viewport, const GeneratedTree& generated) {
+    const sylva::Tree& tree = generated.tree;
+    glm::vec3 low(0.0f), high(0.0f);
+    bool any = false;
+    for (const sylva::Mesh* mesh : {&tree.trunk, &tree.crown, &tree.leaves})
+        for (const glm::vec3& p : mesh->positions) {
+            low = any ? glm::min(low, p) : p;
+            high = any ? glm::max(high, p) : p;
+            any = true;
+        }
+    const float ground = any ? std::min(low.y, 0.0f) : 0.0f;
+    const float x = any ? high.x + 0.6f : 1.0f;
+    viewport.figure.upload(scale_figure_lines({x, ground, 0.5f * (low.z + high.z)}));
+}
+
 // The 3D view takes the mouse only when ImGui does not want it (not over or dragging a panel).
 // A drag moves the camera from the frame after the press on, so the jump of a pointer that
 // arrives and presses within one frame does not spin the view.
@@ -213,8 +253,9 @@ void handle_camera_input(StudioState& state, float view_height) {
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
 }
 
-// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, F frame, 0-3 show that LOD level
-// of the game mesh (switching the low-poly view on). While a text field has the keyboard,
+// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, Ctrl+S save, F frame, P screenshot,
+// T turntable, F1 the shortcut list, Esc cancel, 0-3 show that LOD level of the game mesh
+// (switching the low-poly view on). While a text field has the keyboard,
 // Ctrl+Z / Ctrl+Y are its own undo of the typing, and F and the digits are text.
 void handle_shortcuts(StudioState& state) {
     const bool typing = ImGui::GetIO().WantTextInput;
@@ -224,7 +265,13 @@ void handle_shortcuts(StudioState& state) {
         if (typing) continue;
         if (ctrl && press.key == GLFW_KEY_Z) shift ? redo(state) : undo(state);
         if (ctrl && press.key == GLFW_KEY_Y) redo(state);
+        if (ctrl && press.key == GLFW_KEY_S) save_template_to_file(state);
+        if (ctrl && press.key == GLFW_KEY_O) request_file_dialog(false);
         if (!ctrl && press.key == GLFW_KEY_F) state.frame_requested = true;
+        if (!ctrl && press.key == GLFW_KEY_P) state.screenshot_requested = true;
+        if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
+        if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
+        if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
         for (int level = 0; level < kLodLevels; ++level)
             if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
                 state.view.low_poly = true;
@@ -295,6 +342,7 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
     viewport.grid.draw(view, projection);
+    if (show.scale_figure) viewport.figure.draw(view, projection, kFigureColor);
     if (replay)
         viewport.replay.draw(view, projection, kSkeletonColor);
     else if (show.skeleton)
@@ -320,7 +368,26 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
 #endif
     state.view.low_poly = options.low_poly;
-    state.tree_template = state.committed = sylva::load_template(options.tree_template);
+    {
+        const sylva::TreeTemplate opened = sylva::load_template(options.tree_template);
+        std::string text;  // a template file's own text, so saving keeps its comments
+        if (std::filesystem::path(options.tree_template).extension() == ".toml") {
+            std::ifstream in(options.tree_template, std::ios::binary);
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            state.template_path = options.tree_template;
+        }
+        state.tree_template = state.committed = opened;
+        state.original = state.saved = opened;
+        state.original.source.clear();
+        state.original.grammar_line = 1;
+        state.saved = state.original;
+        state.original_text =
+            text.empty() ? std::string(sylva::builtin_template_text(opened.name)) : text;
+    }
+    if (!options.screenshot_path) {
+        state.recent_store = recent_files_store();
+        load_recent_files(state);
+    }
 
     state.view.lod_level = options.lod_level;
     state.view.envelope = options.envelope;
@@ -334,6 +401,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 
     int frames_with_tree = 0;
     bool swaying = false;    // the viewport holds swayed parts
+    std::string window_title;
     int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
@@ -341,7 +409,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // while anything runs or is being edited it draws every frame.
         const bool busy = options.screenshot_path || state.view.wind || generation_running(state) ||
                           !state.stale.empty() || state.export_job.valid() ||
-                          ImGui::IsAnyItemActive();
+                          ImGui::IsAnyItemActive() || state.view.turntable;
         if (busy)
             glfwPollEvents();
         else
@@ -360,7 +428,20 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const float aspect = rect.aspect();
 
         poll_jobs(state);
+        for (const std::string& file : g_dropped_files) {
+            const std::string ext = std::filesystem::path(file).extension().string();
+            if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
+                state.template_path = file;
+                open_template_file(state);
+            } else {
+                state.file_message = "not a template: " + file + " (drop a .toml, .lsys or .txt)";
+                state.file_failed = true;
+            }
+        }
+        g_dropped_files.clear();
+        if (state.view.turntable) state.camera.yaw_deg += 0.5f;
         if (state.tree_changed) {
+            place_scale_figure(viewport, *state.tree);
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
             update_colonization(viewport, state, true);
             state.tree_changed = false;
@@ -407,7 +488,27 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
         render_viewport(viewport, state, width, height, rect);
+        if (state.screenshot_requested) {
+            // The 3D view alone, before the panels are drawn over the frame.
+            state.screenshot_requested = false;
+            char name[64];
+            const std::time_t now = std::time(nullptr);
+            std::strftime(name, sizeof name, "sylva-%Y%m%d-%H%M%S.png", std::localtime(&now));
+            try {
+                save_back_buffer_png(name, rect.x, rect.y, rect.width, rect.height);
+                state.screenshot_message = std::string("saved ") + name;
+            } catch (const std::exception& e) {
+                state.screenshot_message = e.what();
+            }
+        }
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        // The window's title names the template and marks unsaved changes.
+        const std::string title =
+            "Sylva Studio - " + state.tree_template.name + (unsaved_changes(state) ? " *" : "");
+        if (title != window_title) {
+            glfwSetWindowTitle(window, title.c_str());
+            window_title = title;
+        }
 
         if (options.screenshot_path && state.tree && !generation_running(state) &&
             ++frames_with_tree == options.screenshot_frames) {
@@ -462,6 +563,7 @@ int main(int argc, char** argv) {
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini dropped into the working directory
     ImGui::StyleColorsDark();
     glfwSetKeyCallback(window, remember_key);  // before ImGui's backend, which chains it
+    glfwSetDropCallback(window, remember_drop);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 

@@ -4,15 +4,19 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <random>
 #include <string>
 
 #include "export/export.h"
+#include "tree/cost.h"
 #include "tree/growth.h"
 #include "tree/template_library.h"
 #include "ui/colonization_view.h"
+#include "ui/file_dialog.h"
+#include "ui/template_controls.h"
 
 namespace sylva::studio {
 namespace {
@@ -24,21 +28,6 @@ constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFl
                                      ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                      ImGuiWindowFlags_NoSavedSettings;
 
-// Slider ends for parameters whose valid range is far wider than a useful drag; typed
-// values (Ctrl+click) may still go to the full range.
-double slider_max(const ParamInfo& info) {
-    const std::string key(info.key);
-    if (key == "trunk_resolution" || key == "crown_resolution") return 300;
-    if (key == "triangle_budget") return 5000;
-    if (key == "leaf_density") return 500;
-    if (key == "branch_length" || key == "branch_width" || key == "sphere_diameter") return 3;
-    if (key == "crown_offset") return 2;
-    return info.max;
-}
-double slider_min(const ParamInfo& info) {
-    return std::string(info.key) == "crown_offset" ? -2 : info.min;
-}
-
 void wrapped_text(const std::string& text, bool failed) {
     if (text.empty()) return;
     if (failed) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
@@ -49,13 +38,44 @@ void wrapped_text(const std::string& text, bool failed) {
 }
 
 void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
 }
+
+// A message on one line that never grows the panel: cut at the panel's edge, the whole of it
+// in the tooltip. The line is kept when there is no message, so nothing below it jumps.
+void message_line(const std::string& text, bool failed) {
+    if (failed) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+    ImGui::TextUnformatted(text.empty() ? " " : text.c_str());
+    if (failed) ImGui::PopStyleColor();
+    if (!text.empty()) tooltip(text.c_str());
+}
+
+// The studio's own file dialog (ui/file_dialog.h), shared by Open and Save as.
+FileDialogState g_file_dialog;
 
 void section(const char* title) {
     ImGui::Spacing();
     ImGui::TextDisabled("%s", title);
     ImGui::Separator();
+}
+
+// What the edited tree will cost, before anything runs: one line (it never pushes the panel),
+// the whole estimate in the tooltip.
+void estimate_line(const StudioState& state) {
+    const Cost& cost = state.estimate;
+    const bool over = !state.cost_warning.empty();
+    char line[128];
+    std::snprintf(line, sizeof line, "estimate: %.0f segments, %.2g GB, %.2g s or more%s",
+                  cost.segments, cost.bytes / 1e9, cost.seconds, over ? " - asks first" : "");
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          over ? kWarningColor : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextUnformatted(line);
+    ImGui::PopStyleColor();
+    const std::string text =
+        "estimated before the job starts (tree/cost.h), a lower bound: " + cost_text(cost) +
+        "\n(the derived word's modules, the skeleton's segments, the meshing grids' cells, "
+        "peak memory and time on two cores)";
+    tooltip(text.c_str());
 }
 
 void actions_row(StudioState& state) {
@@ -75,6 +95,14 @@ void actions_row(StudioState& state) {
     if (ImGui::Button("redo")) redo(state);
     tooltip("Ctrl+Y or Ctrl+Shift+Z");
     ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(same_template(state.tree_template, state.original));
+    if (ImGui::Button("reset")) reset_to_template(state);
+    tooltip("back to the template as it was opened or picked (undo brings the edits back)");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("?")) state.show_shortcuts = true;
+    tooltip("keyboard shortcuts (F1)");
 }
 
 // The growth method that makes the skeleton; the rest of the pipeline is shared.
@@ -93,7 +121,8 @@ void growth_combo(StudioState& state) {
 }
 
 void template_section(StudioState& state) {
-    section("Template");
+    // The unsaved-changes mark (the window's title carries it too, main).
+    section(unsaved_changes(state) ? "Template  * unsaved changes" : "Template");
     if (ImGui::BeginCombo("template", state.tree_template.name.c_str(),
                           ImGuiComboFlags_HeightLargest)) {
         for (const TreeTemplate* t : builtin_templates()) {
@@ -107,19 +136,91 @@ void template_section(StudioState& state) {
     ImGui::TextDisabled("%s", state.tree_template.description.c_str());
     ImGui::PopTextWrapPos();
     growth_combo(state);
-    const float buttons = ImGui::CalcTextSize("OpenSave as").x +
-                          4.0f * ImGui::GetStyle().FramePadding.x +
-                          2.0f * ImGui::GetStyle().ItemSpacing.x;
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttons);
-    ImGui::InputText("##file", &state.template_path);
-    tooltip("a template file (.toml), or a grammar file (.lsys, .txt: the rules alone)");
+    if (ImGui::Button("Open...")) {
+        g_file_dialog.saving = false;
+        g_file_dialog.open_requested = true;
+    }
+    tooltip(
+        "open a template file (.toml) or a grammar file (.lsys, .txt: the rules alone); "
+        "Ctrl+O, or drop a file on the window");
     ImGui::SameLine();
-    if (ImGui::Button("Open")) open_template_file(state);
-    tooltip("open the template or grammar file named on the left");
+    if (ImGui::Button("Save")) {
+        if (std::filesystem::exists(state.template_path)) {
+            save_template_to_file(state);
+        } else {
+            g_file_dialog.saving = true;
+            g_file_dialog.open_requested = true;
+        }
+    }
+    tooltip(
+        ("save to " + state.template_path + " (Ctrl+S); comments of the file are kept").c_str());
     ImGui::SameLine();
-    if (ImGui::Button("Save as")) save_template_to_file(state);
+    if (ImGui::Button("Save as...")) {
+        g_file_dialog.saving = true;
+        g_file_dialog.name = std::filesystem::path(state.template_path).filename().string();
+        g_file_dialog.open_requested = true;
+    }
     tooltip("the rules, parameters and colours as a template file (.toml)");
-    wrapped_text(state.file_message, state.file_failed);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##recent", "recent", ImGuiComboFlags_HeightLarge)) {
+        if (state.recent_files.empty()) ImGui::TextDisabled("(no files opened or saved yet)");
+        for (const std::string& file : state.recent_files)
+            if (ImGui::Selectable(file.c_str())) {
+                state.template_path = file;
+                open_template_file(state);
+            }
+        ImGui::EndCombo();
+    }
+    if (auto path = file_dialog(g_file_dialog, state.recent_files)) {
+        state.template_path = *path;
+        g_file_dialog.saving ? save_template_to_file(state) : open_template_file(state);
+    }
+    message_line(state.file_message, state.file_failed);
+}
+
+// The template's own knobs: its #define constants that carry a range (ui/template_controls.h),
+// its colours, and the way back to it as it was opened.
+void this_tree_section(StudioState& state) {
+    section("This tree");
+    TreeTemplate& t = state.tree_template;
+    const std::vector<GrammarConstant> constants = grammar_constants(t.grammar);
+    for (const GrammarConstant& c : constants) {
+        bool changed = false;
+        double value = c.value;
+        if (c.integer) {
+            int v = static_cast<int>(c.value);
+            changed = ImGui::SliderInt(c.name.c_str(), &v, static_cast<int>(c.min),
+                                       static_cast<int>(c.max));
+            value = v;
+        } else {
+            float v = static_cast<float>(c.value);
+            changed = ImGui::SliderFloat(c.name.c_str(), &v, static_cast<float>(c.min),
+                                         static_cast<float>(c.max), "%.4g");
+            value = round_for_range(v, c.min, c.max);
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s\n#define %s, line %d of the rules; range %g to %g",
+                              c.help.empty() ? c.name.c_str() : c.help.c_str(), c.name.c_str(),
+                              c.line, c.min, c.max);
+        if (changed && value != c.value) set_grammar_constant(t.grammar, c.name, value);
+    }
+    if (constants.empty() && !grows_by_colonization(t)) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled(
+            "No constants with a range in the rules. A #define with \"# [min, max] help\" "
+            "after its value becomes a slider here, e.g.  #define a 34  # [10, 60] fork angle");
+        ImGui::PopTextWrapPos();
+    }
+    PartColors colors = t.colors;
+    const ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float;
+    bool recolor = ImGui::ColorEdit3("bark", &colors.trunk.x, flags);
+    tooltip("the trunk and branches' colour (linear RGB)");
+    recolor |= ImGui::ColorEdit3("crown", &colors.crown.x, flags);
+    tooltip("the crown mesh's colour");
+    recolor |= ImGui::ColorEdit3("leaves", &colors.leaves.x, flags);
+    tooltip("the leaf cards' colour");
+    if (recolor) set_colors(state, colors);
 }
 
 template <class Enum>
@@ -138,7 +239,7 @@ void enum_combo(const char* label, Enum& value, std::initializer_list<const char
 }
 
 // One parameter's widget: a list for choices, a checkbox for 0/1, else a slider.
-bool parameter_widget(const ParamInfo& info, double& value) {
+bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& range) {
     const std::string key(info.key);
     if (!info.choices.empty()) {
         int index = static_cast<int>(value);
@@ -163,32 +264,19 @@ bool parameter_widget(const ParamInfo& info, double& value) {
     }
     if (info.integer) {
         int v = static_cast<int>(value);
-        bool changed = ImGui::SliderInt(key.c_str(), &v, static_cast<int>(slider_min(info)),
-                                        static_cast<int>(slider_max(info)));
+        bool changed = ImGui::SliderInt(key.c_str(), &v, static_cast<int>(range.min),
+                                        static_cast<int>(range.max));
         value = v;
         return changed;
     }
     float v = static_cast<float>(value);
-    bool changed = ImGui::SliderFloat(key.c_str(), &v, static_cast<float>(slider_min(info)),
-                                      static_cast<float>(slider_max(info)), "%.3f");
+    bool changed = ImGui::SliderFloat(key.c_str(), &v, static_cast<float>(range.min),
+                                      static_cast<float>(range.max), "%.3f");
     value = v;
     return changed;
 }
 
 // One parameter's widget with its help and range as a tooltip.
-void parameter_row(TreeParams& params, const ParamInfo& info) {
-    double value = *get_param(params, info.key);
-    const bool changed = parameter_widget(info, value);
-    if (ImGui::IsItemHovered()) {
-        if (info.choices.empty())
-            ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)",
-                              std::string(info.help).c_str(), info.min, info.max);
-        else
-            ImGui::SetTooltip("%s", std::string(info.help).c_str());
-    }
-    if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
-}
-
 // The age slider and the noise controls (issue 14), shown above the other parameters.
 bool is_variation_key(std::string_view key) {
     for (std::string_view k : {"age", "bend", "bend_frequency", "jitter", "width_variation",
@@ -212,12 +300,116 @@ void parameter_section(StudioState& state) {
     ImGui::SameLine();
     if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
     tooltip("a new random seed");
+    // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
+    auto inert = inert_params(t);
+    // These shape only the game mesh, which the full-detail view does not show.
+    if (!state.view.low_poly)
+        for (const char* key : {"crown_merge", "drop_hidden"})
+            inert.emplace(key, "it acts on the game mesh only: switch the low-poly view on");
+    auto row = [&](const ParamInfo& info) {
+        double value = *get_param(params, info.key);
+        const auto unread = inert.find(info.key);
+        const bool disabled = unread != inert.end();
+        ImGui::BeginDisabled(disabled);
+        const double own = *get_param(state.original.params, info.key);
+        const SliderRange range = slider_range(info.key, std::max(own, value));
+        const bool changed = parameter_widget(info, value, range);
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+            const std::string help(info.help);
+            if (disabled)
+                ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
+                                  unread->second.c_str());
+            else if (info.choices.empty())
+                ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(), info.min,
+                                  info.max);
+            else
+                ImGui::SetTooltip("%s", help.c_str());
+        }
+        if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+    };
     // Issue 14: the age slider and the noise controls first, the other parameters below.
     for (const ParamInfo& info : param_infos())
-        if (is_variation_key(info.key)) parameter_row(params, info);
+        if (is_variation_key(info.key)) row(info);
     ImGui::Separator();
     for (const ParamInfo& info : param_infos())
-        if (!is_variation_key(info.key)) parameter_row(params, info);
+        if (!is_variation_key(info.key)) row(info);
+}
+
+// The confirmation an expensive edit asks for before it runs (generations 12 on the oak).
+void cost_confirmation(StudioState& state) {
+    static std::string asked;  // the warning already asked about
+    if (state.cost_warning.empty()) {
+        asked.clear();
+        return;
+    }
+    if (asked != state.cost_warning) {
+        asked = state.cost_warning;
+        ImGui::OpenPopup("Expensive tree");
+    }
+    if (!ImGui::BeginPopupModal(
+            "Expensive tree", nullptr,
+            ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings))
+        return;
+    ImGui::PushTextWrapPos(420.0f);
+    ImGui::TextUnformatted(state.cost_warning.c_str());
+    ImGui::TextDisabled(
+        "The tree on screen stays until you decide. A running job can be "
+        "cancelled from the status bar at any time.");
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("Run anyway")) {
+        state.run_costly = true;
+        start_generation(state);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Undo the edit")) {
+        undo(state);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Not now")) ImGui::CloseCurrentPopup();
+    tooltip("keep the edit without running it; \"run anyway\" stays under the rules");
+    ImGui::EndPopup();
+}
+
+// Every key the studio answers to.
+void shortcuts_window(StudioState& state) {
+    if (!state.show_shortcuts) return;
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
+    if (ImGui::Begin("Shortcuts", &state.show_shortcuts,
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+        static constexpr const char* kKeys[][2] = {
+            {"Ctrl+Z", "undo"},
+            {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
+            {"Ctrl+O", "open a template"},
+            {"Ctrl+S", "save the template"},
+            {"Ctrl+E", "export"},
+            {"F", "frame the tree"},
+            {"0 - 3", "show that LOD of the game mesh"},
+            {"P", "screenshot of the 3D view"},
+            {"T", "turntable on / off"},
+            {"Esc", "cancel the running generation"},
+            {"F1", "this list"},
+            {"left drag", "orbit"},
+            {"right / middle drag", "pan"},
+            {"wheel", "zoom"},
+            {"Ctrl+click a slider", "type a value"},
+            {"drop a .toml", "open it"},
+        };
+        if (ImGui::BeginTable("keys", 2)) {
+            for (const auto& row : kKeys) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(row[0]);
+                ImGui::TableNextColumn();
+                ImGui::TextDisabled("%s", row[1]);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
 }
 
 // A generation held back by its estimated cost, and the button that runs it anyway.
@@ -325,6 +517,15 @@ void view_section(StudioState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
+    ImGui::Checkbox("scale figure", &v.scale_figure);
+    tooltip("a 1.8 m person beside the trunk");
+    ImGui::SameLine();
+    ImGui::Checkbox("turntable", &v.turntable);
+    tooltip("the camera circles the tree (T)");
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot (P)")) state.screenshot_requested = true;
+    tooltip("saves the 3D view as a PNG in the working folder");
+    message_line(state.screenshot_message, false);
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
@@ -396,6 +597,11 @@ const char* stage_name(int stage) {
 
 }  // namespace
 
+void request_file_dialog(bool saving) {
+    g_file_dialog.saving = saving;
+    g_file_dialog.open_requested = true;
+}
+
 PanelLayout panel_layout(float width, float height) {
     PanelLayout layout;
     layout.width = width;
@@ -412,10 +618,22 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
     ImGui::Begin("Tree", nullptr, kDocked);
     ImGui::PushItemWidth(-130.0f);
     actions_row(state);
+    estimate_line(state);
     template_section(state);
+    this_tree_section(state);
     parameter_section(state);
+    if (!state.crown_notice.empty()) {
+        ImGui::Spacing();
+        ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(state.crown_notice.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
     ImGui::PopItemWidth();
     ImGui::End();
+    cost_confirmation(state);
+    shortcuts_window(state);
 }
 
 void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout) {
@@ -432,7 +650,7 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
     ImGui::End();
 }
 
-void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps) {
+void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, layout.height - layout.bottom));
     ImGui::SetNextWindowSize(ImVec2(layout.width, layout.bottom));
     ImGui::Begin("status", nullptr,
@@ -440,14 +658,37 @@ void draw_status_bar(const StudioState& state, const PanelLayout& layout, float 
     if (state.job) {
         const JobProgress& p = *state.job->progress;
         const int stage = p.stage.load();
-        char label[32];
-        std::snprintf(label, sizeof label, "%s %.0f%%", stage_name(stage),
-                      100.0f * p.fraction.load());
-        ImGui::ProgressBar(stage == JobProgress::Growing ? 0.0f : p.fraction.load(),
-                           ImVec2(150.0f, 0.0f), label);
+        const float fraction = p.fraction.load();
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - state.job->started)
+                .count();
+        // Time left: from the stage's own fraction once it has one, else from the estimate
+        // made before the job started (growth reports no fraction).
+        double left = std::max(state.job_estimate.seconds - elapsed, 0.0);
+        float shown = static_cast<float>(
+            std::min(elapsed / std::max(state.job_estimate.seconds, 1e-3), 0.95));
+        if (stage != JobProgress::Growing && fraction > 0.02f) {
+            left = elapsed / fraction * (1.0 - fraction);
+            shown = fraction;
+        }
+        char label[64];
+        if (stage == JobProgress::Growing)
+            std::snprintf(label, sizeof label, "growing, ~%.0f s left", std::ceil(left));
+        else
+            std::snprintf(label, sizeof label, "%s %.0f%%, %.0f s left", stage_name(stage),
+                          100.0f * fraction, std::ceil(left));
+        ImGui::ProgressBar(shown, ImVec2(220.0f, 0.0f), label);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("cancel")) cancel_generation(state);
+        tooltip("stop this generation (Esc); the tree on screen stays");
         ImGui::SameLine();
     } else if (generation_running(state)) {
         ImGui::ProgressBar(0.0f, ImVec2(150.0f, 0.0f), "waiting");
+        ImGui::SameLine();
+    }
+    if (!state.crown_notice.empty()) {
+        ImGui::TextColored(kWarningColor, "crown vanished (hover: why)  ");
+        tooltip(state.crown_notice.c_str());
         ImGui::SameLine();
     }
     if (state.tree) {

@@ -16,6 +16,9 @@ struct PanelLayout {
 
 PanelLayout panel_layout(float width, float height);
 
+// Opens the studio's file dialog (Open, or Save as) on the next frame: Ctrl+O.
+void request_file_dialog(bool saving);
+
 // Left: Generate / live / undo / redo, the template picker, open / save, and the parameters.
 void draw_tree_panel(StudioState& state, const PanelLayout& layout);
 
@@ -25,6 +28,6 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
 // Along the bottom: progress, triangles per part (the game mesh against its budget in the
 // low-poly view), time per stage, and the frame rate while the
 // window draws continuously (`fps` < 0: idle, not shown).
-void draw_status_bar(const StudioState& state, const PanelLayout& layout, float fps);
+void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps);
 
 }  // namespace sylva::studio

@@ -15,11 +15,15 @@
 namespace sylva::studio {
 
 void save_back_buffer_png(const std::string& path, int width, int height) {
+    save_back_buffer_png(path, 0, 0, width, height);
+}
+
+void save_back_buffer_png(const std::string& path, int x, int y0, int width, int height) {
     const auto row_bytes = static_cast<std::size_t>(width) * 3;
     std::vector<unsigned char> pixels(row_bytes * static_cast<std::size_t>(height));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows of RGB bytes are not 4-aligned in general
     glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+    glReadPixels(x, y0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
 
     // GL's first row is the bottom one; PNG's is the top one.
     for (int y = 0; y < height / 2; ++y) {

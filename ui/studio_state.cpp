@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 #include "core/atomic_file.h"
@@ -91,7 +94,8 @@ void apply_edit(StudioState& state, const TreeTemplate& edit) {
     state.tree_template = edit;
     state.committed = edit;
     state.frame_next_tree |= other_tree;
-    start_generation(state);
+    // A colour's undo needs no new tree (poll_jobs hands the colours to the tree on screen).
+    if (!state.tree || edit_pending(state)) start_generation(state);
 }
 
 std::string files_text(const std::vector<std::filesystem::path>& files) {
@@ -144,12 +148,45 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
 
 // Template files are TOML (app/template_file.h); a .lsys or .txt name saves the grammar
 // alone, which `-t` and Open read back as a bare grammar with default parameters.
-void write_template(const std::filesystem::path& path, const TreeTemplate& tree) {
+void write_template(const std::filesystem::path& path, const TreeTemplate& tree,
+                    std::string_view original_text) {
     const std::string ext = path.extension().string();
     if (ext == ".lsys" || ext == ".txt")
         write_file_atomically(path, [&](std::ostream& out) { out << tree.grammar; });
     else
-        save_template_file(path, tree);
+        save_template_file(path, tree, original_text);
+}
+
+void save_recent_files(const StudioState& state) {
+    if (state.recent_store.empty()) return;
+    try {
+        std::filesystem::create_directories(
+            std::filesystem::path(state.recent_store).parent_path());
+        write_file_atomically(state.recent_store, [&](std::ostream& out) {
+            for (const std::string& file : state.recent_files) out << file << "\n";
+        });
+    } catch (const std::exception&) {
+        // A list of recent files is a convenience: failing to keep it is not worth a message.
+    }
+}
+
+// The crown a tree should have but did not get: tips, a sphere diameter and crown meshing
+// on, and no crown triangles. The usual reason is a tree scaled up until the crown's grid
+// cells are larger than its spheres.
+std::string crown_notice_for(const Tree& tree, const TreeParams& p) {
+    if (!tree.crown.triangles.empty() || p.crown_mesh == 0 || p.sphere_diameter <= 0.0 ||
+        tree.skeleton.segments.empty())
+        return {};
+    const Box box = skeleton_bounds(tree.skeleton);
+    const glm::vec3 size = box.max - box.min;
+    const double longest = std::max({size.x, size.y, size.z}) + p.sphere_diameter;
+    const double cell = longest / std::max(p.crown_resolution, 1);
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "The crown vanished: the tree is %.1f m across, so a crown grid cell is %.2f m, "
+                  "too coarse for spheres of %.2f m. Raise sphere_diameter or crown_resolution.",
+                  longest, cell, p.sphere_diameter);
+    return text;
 }
 
 }  // namespace
@@ -208,9 +245,16 @@ std::size_t preview_budget(const StudioState& state) {
                : 0;
 }
 
-void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
+void load_template_into(StudioState& state, const TreeTemplate& tree_template,
+                        std::string_view text) {
     commit_edit(state);
     state.tree_template = tree_template;
+    state.original = tree_template;
+    state.original.source.clear();
+    state.original.grammar_line = 1;
+    state.saved = state.original;
+    state.original_text =
+        text.empty() ? std::string(builtin_template_text(tree_template.name)) : std::string(text);
     // The editor shows the grammar alone: errors count its lines, not the file's.
     state.tree_template.source.clear();
     state.tree_template.grammar_line = 1;
@@ -219,10 +263,49 @@ void load_template_into(StudioState& state, const TreeTemplate& tree_template) {
     start_generation(state);
 }
 
+void reset_to_template(StudioState& state) {
+    commit_edit(state);
+    state.tree_template = state.original;
+    commit_edit(state);
+}
+
+bool unsaved_changes(const StudioState& state) {
+    return !same_template(state.tree_template, state.saved);
+}
+
+void set_colors(StudioState& state, const PartColors& colors) {
+    state.tree_template.colors = colors;
+    state.shown_template.colors = colors;
+    if (state.job) state.job->tree_template.colors = colors;
+}
+
+void remember_file(StudioState& state, const std::string& path) {
+    std::error_code ec;
+    std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
+    if (ec) absolute = path;
+    std::erase(state.recent_files, absolute);
+    state.recent_files.insert(state.recent_files.begin(), absolute);
+    if (state.recent_files.size() > kMaxRecentFiles) state.recent_files.resize(kMaxRecentFiles);
+    save_recent_files(state);
+}
+
+void load_recent_files(StudioState& state) {
+    state.recent_files.clear();
+    if (state.recent_store.empty()) return;
+    std::ifstream in(state.recent_store);
+    std::string line;
+    while (std::getline(in, line) && state.recent_files.size() < kMaxRecentFiles)
+        if (!line.empty()) state.recent_files.push_back(line);
+}
+
 void set_growth_method(StudioState& state, std::string_view method) {
     commit_edit(state);
     state.tree_template.growth = std::string(method);
     commit_edit(state);
+}
+
+bool asks_first(const StudioState& state, const Cost& cost) {
+    return !within(cost, state.ask_limits) || cost.segments > state.ask_segments;
 }
 
 void start_generation(StudioState& state) {
@@ -245,9 +328,15 @@ void start_generation(StudioState& state) {
     // A job the estimate puts over the limits (resolution 1500 took 68 s) waits for "run
     // anyway"; the tree on screen stays.
     const Cost cost = estimate_cost(state.tree_template, budget);
-    if (!within(cost, CostLimits{}) && !state.run_costly) {
-        state.cost_warning = "Not started: estimated " + cost_text(cost) +
-                             ", over the 2 GB / 10 s a job may take unasked.";
+    state.estimate = cost;
+    if (asks_first(state, cost) && !state.run_costly) {
+        char limits[128];
+        std::snprintf(limits, sizeof limits, "%.0f segments, %.2g GB or %.2g s", state.ask_segments,
+                      state.ask_limits.max_bytes / 1e9, state.ask_limits.max_seconds);
+        state.cost_warning = "Not started: this tree is estimated at " + cost_text(cost) +
+                             " at least, over the " + limits +
+                             " a job may take unasked (the real time is often several times "
+                             "the estimate).";
         return;
     }
     state.run_costly = false;
@@ -270,6 +359,7 @@ void start_generation(StudioState& state) {
     state.generate_wanted = state.stale.size() >= kMaxStale;
     if (state.generate_wanted) return;
 
+    state.job_estimate = cost;
     GenerationJob job;
     job.started = Clock::now();
     job.tree_template = state.tree_template;
@@ -287,6 +377,14 @@ void start_generation(StudioState& state) {
 
 bool generation_running(const StudioState& state) {
     return state.job.has_value() || state.generate_wanted;
+}
+
+void cancel_generation(StudioState& state) {
+    state.generate_wanted = false;
+    if (!state.job) return;
+    state.job->progress->cancel = true;
+    state.stale.push_back(std::move(*state.job));
+    state.job.reset();
 }
 
 void cancel_generations(StudioState& state) {
@@ -312,6 +410,7 @@ void poll_jobs(StudioState& state) {
             state.tree = std::make_shared<const GeneratedTree>(job.result.get());
             state.shown_template = std::move(job.tree_template);
             state.tree_changed = true;
+            state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
             state.error.clear();
             state.error_line = state.error_column = 0;
             // Let go just as the draft finished: reduce it now (edit_pending does not see it,
@@ -328,6 +427,10 @@ void poll_jobs(StudioState& state) {
             state.error_line = state.error_column = 0;
         }
     }
+    // Colours need no new tree: when the edit is the tree on screen but for its colours
+    // (reset, undo or redo of a colour), the tree on screen takes them.
+    if (state.tree && same_tree_input(state.shown_template, state.tree_template))
+        state.shown_template.colors = state.tree_template.colors;
     if (state.generate_wanted && state.stale.empty()) {
         // The edit may have moved on while the workers wound down (or the drag's job ran):
         // generate the newest.
@@ -395,9 +498,11 @@ void start_export(StudioState& state) {
 
 void save_template_to_file(StudioState& state) {
     try {
-        write_template(state.template_path, state.tree_template);
+        write_template(state.template_path, state.tree_template, state.original_text);
         state.file_message = "saved " + state.template_path;
         state.file_failed = false;
+        state.saved = state.tree_template;
+        remember_file(state, state.template_path);
     } catch (const std::exception& e) {
         state.file_message = e.what();
         state.file_failed = true;
@@ -406,7 +511,16 @@ void save_template_to_file(StudioState& state) {
 
 void open_template_file(StudioState& state) {
     try {
-        load_template_into(state, load_template(state.template_path));
+        const TreeTemplate opened = load_template(state.template_path);
+        std::string text;
+        if (std::filesystem::path(state.template_path).extension() == ".toml") {
+            std::ifstream in(state.template_path, std::ios::binary);
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        load_template_into(state, opened, text);
+        if (text.empty() && std::filesystem::is_regular_file(state.template_path))
+            state.original_text.clear();  // a grammar file: no comments to keep
+        remember_file(state, state.template_path);
         state.file_message = "opened " + state.template_path;
         state.file_failed = false;
     } catch (const std::exception& e) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "export/export_tree.h"
+#include "tree/cost.h"
 #include "tree/pipeline.h"
 #include "ui/orbit_camera.h"
 
@@ -106,6 +107,8 @@ struct ViewToggles {
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
     bool wind = false;         // sway the tree with its exported wind data (ui/wind_view.h)
+    bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
+    bool turntable = false;    // the camera circles the tree
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -140,6 +143,29 @@ struct StudioState {
     // estimate is shown, and "run anyway" sets run_costly and starts it once.
     std::string cost_warning;  // empty: nothing held back
     bool run_costly = false;
+    // Where the studio asks first: over the CLI's limits, or over ask_segments skeleton
+    // segments. The time estimate is a lower bound that misses most of what many segments
+    // cost (the oak at generations 12: 16 000 segments, estimated 0.9 s, took 12 s on a
+    // shared machine), so the segment count asks well before the time limit would; every
+    // built-in template's default stays under both (tests/ui checks).
+    CostLimits ask_limits;
+    double ask_segments = 10000;
+    // The estimate of the edited template (before any job starts) and of the running job,
+    // for the size line and the progress bar's time left.
+    Cost estimate;
+    Cost job_estimate;
+
+    // The template as it was opened or picked (reset, the slider ranges) and the file text it
+    // came from (its comments are written again on save; empty when there is none).
+    TreeTemplate original;
+    std::string original_text;
+    TreeTemplate saved;  // as last saved or opened: the unsaved-changes mark compares with it
+    std::vector<std::string> recent_files;  // newest first, at most kMaxRecentFiles
+    std::string recent_store;               // where they persist ("": not at all)
+
+    // Said when a tree arrives whose crown vanished although it should have one (scaled up
+    // past the crown grid's cells, say); empty otherwise.
+    std::string crown_notice;
 
     // Undo history: whole templates, so picking another template can be undone too.
     std::vector<TreeTemplate> undo, redo;
@@ -159,6 +185,10 @@ struct StudioState {
     bool frame_requested = false;  // frame the tree on screen now ("frame tree", F)
     bool frame_next_tree = true;   // frame the next tree that arrives (a new template)
     bool quit_requested = false;
+    // "screenshot": main saves the 3D view as a PNG after the next frame is drawn.
+    bool screenshot_requested = false;
+    std::string screenshot_message;
+    bool show_shortcuts = false;  // the list of keys (F1, "?")
 };
 
 // True when the next generation should be a draft: the low-poly view is on and a slider is
@@ -169,8 +199,26 @@ bool draft_wanted(const StudioState& state);
 // view on, 0 (the marching-cubes meshes) otherwise.
 std::size_t preview_budget(const StudioState& state);
 
-// Replaces the edited template (an undoable edit) and frames the tree it makes.
-void load_template_into(StudioState& state, const TreeTemplate& tree_template);
+// Replaces the edited template (an undoable edit) and frames the tree it makes. `text` is the
+// file text it was read from (its comments are kept on save); a built-in template's own.
+void load_template_into(StudioState& state, const TreeTemplate& tree_template,
+                        std::string_view text = {});
+
+// Back to the template as it was opened or picked: an undoable edit.
+void reset_to_template(StudioState& state);
+
+// True when the edited template differs from the one last saved or opened.
+bool unsaved_changes(const StudioState& state);
+
+// Sets the part colours of the edited template and of the tree on screen (a colour change
+// needs no new tree).
+void set_colors(StudioState& state, const PartColors& colors);
+
+constexpr std::size_t kMaxRecentFiles = 8;
+// Puts `path` first in the recent files (and their store, when set).
+void remember_file(StudioState& state, const std::string& path);
+// Reads the recent files from state.recent_store (missing: none).
+void load_recent_files(StudioState& state);
 
 // Switches the edited template's growth method (a name from tree/growth.h's
 // growth_methods()): an undoable edit, committed at once like picking a template.
@@ -186,6 +234,13 @@ void set_growth_method(StudioState& state, std::string_view method);
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);
+
+// True when a job of this estimated cost waits for "run anyway" (ask_limits, ask_segments).
+bool asks_first(const StudioState& state, const Cost& cost);
+
+// Stops the running generation (a cancel button, Esc); the tree on screen stays, and the
+// edit is not generated again until the next edit or Generate.
+void cancel_generation(StudioState& state);
 
 // Asks every running generation to stop (on exit).
 void cancel_generations(StudioState& state);

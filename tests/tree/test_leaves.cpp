@@ -118,7 +118,7 @@ TEST(Leaves, EveryShapeAndTheCapHold) {
 }
 
 TEST(Leaves, LeavesOnlyModeAndPaskoCrown) {
-    TreeTemplate t = load_template("spruce");
+    TreeTemplate t = load_template("seed_spruce");
     t.params.crown_mesh = 0;
     t.params.leaf_density = 500;
     Tree leaves_only = generate_tree(t);
@@ -135,7 +135,7 @@ TEST(Leaves, LeavesOnlyModeAndPaskoCrown) {
 }
 
 TEST(TrunkJoints, BlendRadiusAddsMaterialAndStaysClosed) {
-    TreeTemplate t = load_template("spruce");
+    TreeTemplate t = load_template("seed_spruce");
     Tree hard = generate_tree(t);
     t.params.joint_blend = 0.05;
     Tree blended = generate_tree(t);

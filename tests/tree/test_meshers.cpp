@@ -124,7 +124,7 @@ namespace {
 // Nothing reaches the grid's outer node layer (where meshes would be capped flat), even
 // with the strongest blends at a fine grid: the boxes grow with what the blends add.
 TEST(Boxes, StrongBlendsAreNeverClippedByTheGrid) {
-    TreeTemplate t = load_template("spruce");
+    TreeTemplate t = load_template("seed_spruce");
     t.params.crown_fusion = 0.1;
     t.params.joint_blend = 0.2;
     t.params.trunk_resolution = t.params.crown_resolution = 200;

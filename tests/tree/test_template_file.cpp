@@ -91,8 +91,9 @@ TEST(TemplateFile, SaveThenLoadKeepsTheGrammarByteForByte) {
 
 TEST(TemplateFile, TheLibraryHasTheSpeciesTheIssueAsksFor) {
     for (const char* name : {"oak", "spruce", "fir", "palm", "honda", "ternary", "bush", "birch",
-                             "willow", "pine", "baobab", "cypress"})
+                             "willow", "pine", "baobab", "cypress", "seed_spruce"})
         EXPECT_NO_THROW(load_template(name)) << name;
+    EXPECT_GE(builtin_templates().size(), 16u);
     EXPECT_EQ(default_template().name, "oak");
     for (const TreeTemplate* t : builtin_templates())
         EXPECT_FALSE(t->description.empty()) << t->name;

@@ -15,7 +15,7 @@ namespace sylva {
 namespace {
 
 TEST(Spruce, VerticalTrunkWithWhorlsOfDroopingBranches) {
-    Skeleton s = grow(load_template("spruce"));
+    Skeleton s = grow(load_template("seed_spruce"));
     int trunk = 0;
     for (const Segment& seg : s.segments) {
         if (seg.depth != 0) continue;
@@ -71,7 +71,7 @@ std::vector<float> fingerprint(const Tree& tree) {
 }
 
 TEST(Sliders, EverySeed001ParameterChangesTheSpruce) {
-    TreeTemplate spruce = load_template("spruce");
+    TreeTemplate spruce = load_template("seed_spruce");
     spruce.params.trunk_resolution = spruce.params.crown_resolution = 24;
     const std::vector<float> base = fingerprint(generate_tree(spruce));
     const char* keys[] = {"trunk_resolution", "crown_resolution", "branch_length",   "branch_width",
