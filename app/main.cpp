@@ -83,9 +83,10 @@ Usage:
                    an .obj (its map_Kd)
   --no-uvs, --no-wind
                    leave out the UVs (bark, leaf cards, crown projection) or the wind data
-  --color-variation V, --crown-occlusion V
+  --tint-variation V, --crown-occlusion V
                    0 to 1 (default 0: flat colours): a seeded tint per branch, crown piece
-                   and leaf; darkening toward the middle of the crown
+                   and leaf (vertex colours; the parameter color_variation instead shifts
+                   the whole tree's colours per seed); darkening toward the crown's middle
   --ply-ascii      write PLY as text instead of binary
   --fidelity       also report the distance of the reduced trunk + crown to the
                    resolution-200 surface, in percent of the tree's height
@@ -210,14 +211,14 @@ Options parse_options(int argc, char** argv) {
             o.export_options.engine.uvs = false;
         } else if (arg == "--no-wind") {
             o.export_options.engine.wind = false;
-        } else if (arg == "--color-variation" || arg == "--crown-occlusion") {
+        } else if (arg == "--tint-variation" || arg == "--crown-occlusion") {
             const std::string text = value();
             double v = -1.0;
             auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
             if (error != std::errc() || end != text.data() + text.size() || !(v >= 0.0 && v <= 1.0))
                 throw UsageError(arg + " expects a number from 0 to 1, not '" + text + "'");
-            (arg == "--color-variation" ? o.export_options.engine.color_variation
-                                        : o.export_options.engine.crown_occlusion) =
+            (arg == "--tint-variation" ? o.export_options.engine.color_variation
+                                       : o.export_options.engine.crown_occlusion) =
                 static_cast<float>(v);
         } else if (arg == "--ply-ascii") {
             o.export_options.ply_binary = false;

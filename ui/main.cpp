@@ -400,7 +400,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     start_generation(state);
 
     int frames_with_tree = 0;
-    bool swaying = false;    // the viewport holds swayed parts
+    bool swaying = false;  // the viewport holds swayed parts
     std::string window_title;
     int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;

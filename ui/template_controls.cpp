@@ -330,6 +330,10 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
                 mark(key, "no obstacle: set obstacle to sphere or box first");
         if (p.roots <= 1)
             mark("root_spread", "one root: the spread of a circle of roots is unused");
+        for (std::string_view key : {"bend", "bend_frequency", "jitter", "width_variation"})
+            mark(key,
+                 "a turtle parameter: space colonization does not read it (tropism_variation "
+                 "varies its growth directions)");
     } else {
         for (const ParamInfo& info : param_infos())
             if (colonization_key(info.key))
@@ -348,6 +352,9 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
             mark("yaw_angle", "every +, -, \\ and / in the rules gives its own angle");
         if (tree.mode == TurtleMode::Lptg && !names_param(tree.grammar, "tropism"))
             mark("tropism", "the lptg turtle (seed 001) does not bend towards gravity");
+        if ((inert.contains("tropism") || p.tropism == 0.0) &&
+            !names_param(tree.grammar, "tropism"))
+            mark("tropism_variation", "no tropism to vary: set tropism first");
         const auto width_reason = [&](WidthModel model) -> std::string {
             switch (model) {
                 case WidthModel::Explicit:
@@ -383,6 +390,7 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
             }
         }
     }
+    if (p.bend == 0.0) mark("bend_frequency", "bend is 0: there is no bending to shape");
     if (p.leaf_density <= 0.0)
         for (std::string_view key : {"leaf_size", "leaf_shape"})
             mark(key, "leaf_density is 0: the crown carries no leaves");

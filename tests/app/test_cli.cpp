@@ -260,7 +260,7 @@ TEST_F(Cli, EngineProfilesNameCollisionAndBadEngineOptionsAreUsageErrors) {
     EXPECT_EQ(bad.code, 2);
     EXPECT_NE(bad.output.find("generic, unity, unreal or godot"), std::string::npos) << bad.output;
     EXPECT_EQ(run("export --collision maybe -o " + path("t.glb")).code, 2);
-    EXPECT_EQ(run("export --color-variation 2 -o " + path("t.glb")).code, 2);
+    EXPECT_EQ(run("export --tint-variation 2 -o " + path("t.glb")).code, 2);
     EXPECT_TRUE(listing().empty()) << "a usage error writes nothing";
 
     Result unreal = run("export -t palm --profile unreal --palette -o " + path("palm.obj"));

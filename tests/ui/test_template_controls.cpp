@@ -162,11 +162,13 @@ bool same_skeleton(const Skeleton& a, const Skeleton& b) {
 }
 
 TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
+    // What shapes the meshes or colours, not the skeleton.
     const std::vector<std::string_view> meshing_only = {
         "trunk_resolution", "crown_resolution", "sphere_diameter", "crown_offset",
         "crown_fusion",     "joint_blend",      "crown_blend",     "crown_mesh",
         "crown_merge",      "drop_hidden",      "leaf_density",    "leaf_size",
-        "leaf_shape",       "triangle_budget",  "obstacle",        "max_no_grow"};
+        "leaf_shape",       "triangle_budget",  "obstacle",        "max_no_grow",
+        "color_variation"};
     for (const TreeTemplate* t : builtin_templates()) {
         const auto inert = inert_params(*t);
         const Skeleton base = grow(*t);
