@@ -353,38 +353,48 @@ double ValueNoise::operator()(double x, double y, double z) const {
 
 // ---- fractal sums ----
 
+namespace {
+
+// The octaves of any noise: each at f times the frequency, shifted by k octave offsets.
+template <class Noise>
+double noise_fbm(const Noise& noise, double x, const FbmSettings& s) {
+    return fractal_sum(s, [&](double f, double k) { return noise(x * f + k * kOctaveShift[0]); });
+}
+
+template <class Noise>
+double noise_fbm(const Noise& noise, double x, double y, const FbmSettings& s) {
+    return fractal_sum(s, [&](double f, double k) {
+        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1]);
+    });
+}
+
+template <class Noise>
+double noise_fbm(const Noise& noise, double x, double y, double z, const FbmSettings& s) {
+    return fractal_sum(s, [&](double f, double k) {
+        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1],
+                     z * f + k * kOctaveShift[2]);
+    });
+}
+
+}  // namespace
+
 double fbm(const GradientNoise& noise, double x, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) { return noise(x * f + k * kOctaveShift[0]); });
+    return noise_fbm(noise, x, s);
 }
-
 double fbm(const GradientNoise& noise, double x, double y, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) {
-        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1]);
-    });
+    return noise_fbm(noise, x, y, s);
 }
-
 double fbm(const GradientNoise& noise, double x, double y, double z, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) {
-        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1],
-                     z * f + k * kOctaveShift[2]);
-    });
+    return noise_fbm(noise, x, y, z, s);
 }
-
 double fbm(const ValueNoise& noise, double x, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) { return noise(x * f + k * kOctaveShift[0]); });
+    return noise_fbm(noise, x, s);
 }
-
 double fbm(const ValueNoise& noise, double x, double y, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) {
-        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1]);
-    });
+    return noise_fbm(noise, x, y, s);
 }
-
 double fbm(const ValueNoise& noise, double x, double y, double z, const FbmSettings& s) {
-    return fractal_sum(s, [&](double f, double k) {
-        return noise(x * f + k * kOctaveShift[0], y * f + k * kOctaveShift[1],
-                     z * f + k * kOctaveShift[2]);
-    });
+    return noise_fbm(noise, x, y, z, s);
 }
 
 }  // namespace sylva

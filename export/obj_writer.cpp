@@ -42,27 +42,30 @@ bool has_triangles(const NamedMesh& part) {
     return part.mesh && !part.mesh->triangles.empty();
 }
 
+// An object of bare geometry (positions and faces, no material); `base` is the first
+// vertex's 1-based index and moves past the part's vertices.
+void write_bare_part(std::ostream& out, const NamedMesh& part, float scale, std::size_t& base) {
+    std::string line;
+    out << "o " << part.name << "\ng " << part.name << "\n";
+    for (const glm::vec3& p : part.mesh->positions) {
+        append_vector(line, "v", scale * p);
+        out << line;
+    }
+    for (const auto& t : part.mesh->triangles) {
+        line.assign("f");
+        for (std::uint32_t i : t) append_index(line, base + i);
+        line.push_back('\n');
+        out << line;
+    }
+    base += part.mesh->positions.size();
+}
+
 }  // namespace
 
 void write_obj(std::ostream& out, const std::vector<NamedMesh>& parts) {
     out << "# Sylva low-poly tree: Y up, meters\n";
     std::size_t base = 1;  // OBJ indices are 1-based and global across groups
-    std::string line;
-    for (const NamedMesh& part : parts) {
-        const Mesh& mesh = *part.mesh;
-        out << "o " << part.name << "\ng " << part.name << "\n";
-        for (const glm::vec3& p : mesh.positions) {
-            append_vector(line, "v", p);
-            out << line;
-        }
-        for (const auto& t : mesh.triangles) {
-            line.assign("f");
-            for (std::uint32_t i : t) append_index(line, base + i);
-            line.push_back('\n');
-            out << line;
-        }
-        base += mesh.positions.size();
-    }
+    for (const NamedMesh& part : parts) write_bare_part(out, part, 1.0f, base);
 }
 
 void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& parts) {
@@ -82,18 +85,7 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
         if (!has_triangles(part)) continue;
         const Mesh& mesh = *part.mesh;
         if (part.collision) {  // bare geometry, no material, never a LOD suffix
-            out << "o " << part.name << "\ng " << part.name << "\n";
-            for (const glm::vec3& p : mesh.positions) {
-                append_vector(line, "v", scale * p);
-                out << line;
-            }
-            for (const auto& t : mesh.triangles) {
-                line.assign("f");
-                for (std::uint32_t i : t) append_index(line, vertex_base + i);
-                line.push_back('\n');
-                out << line;
-            }
-            vertex_base += mesh.positions.size();
+            write_bare_part(out, part, scale, vertex_base);
             continue;
         }
         const PartAttributes* attributes = part.attributes;
