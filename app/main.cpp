@@ -285,6 +285,9 @@ int run_export(const Options& o) {
     mesh.budget = game_budget(finish);
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
+    // The reduction's cost depends on the meshes (their handles): known only now.
+    check_cost(estimate_reduction_cost(tree.trunk, tree.crown, mesh.budget), o.limits,
+               kRaiseLimits);
 
     Stopwatch clock;
     const FinishedTree finished = finish_tree(tree, finish);
