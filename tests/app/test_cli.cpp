@@ -123,6 +123,11 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("--max-memory"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
+    // A reduction's cost shows once the meshes are made: refused before it starts.
+    r = run("export -t ternary --set generations=8 -o " + path("t.glb"));
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("handles to reduce"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("t.glb")));
 }
 
 TEST_F(Cli, BadParameterIsExitCode3NamingTheKey) {
