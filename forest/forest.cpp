@@ -61,7 +61,8 @@ std::vector<std::size_t> pick_species(const std::vector<glm::dvec2>& points,
     std::vector<std::size_t> pick(n, 0);
     if (m == 1 || n == 0) return pick;
     std::vector<double> field(n * m);
-    const FbmSettings fbm_settings{3, 1.0 / s.stand_size, 0.5, 2.0};
+    // Half a period of the first octave is a stand; a weak second octave frays its edges.
+    const FbmSettings fbm_settings{2, 0.5 / s.stand_size, 0.35, 2.0};
     for (std::size_t k = 0; k < m; ++k) {
         const GradientNoise noise(variant_seed(s.seed, kStands + k));
         for (std::size_t i = 0; i < n; ++i)
