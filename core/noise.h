@@ -93,4 +93,15 @@ double fbm(const ValueNoise& noise, double x, double y, double z, const FbmSetti
 // independent noise fields one tree needs (bend, jitter, colour, ...).
 std::uint64_t derive_seed(std::uint64_t base, std::uint64_t stream);
 
+// The streams of one tree's seed, so each use of noise has its own field and adding a use
+// does not change the others.
+namespace noise_stream {
+inline constexpr std::uint64_t expressions = 1;  // noise() and fbm() in rules
+inline constexpr std::uint64_t bend = 2;         // turtle: coherent bending along branches
+inline constexpr std::uint64_t jitter = 3;       // turtle: per-branch angle and length factors
+inline constexpr std::uint64_t width = 4;        // turtle: width along branches
+inline constexpr std::uint64_t tropism = 5;      // tropism vector per branch / per node
+inline constexpr std::uint64_t color = 6;        // part colours per tree
+}  // namespace noise_stream
+
 }  // namespace sylva

@@ -222,6 +222,10 @@ const std::vector<Field>& fields() {
         real("angle_smoothing",
              "colonization: successors drawn towards their mean direction (0 = not, 1 = fully)", 0,
              1, &TreeParams::angle_smoothing),
+        // Variation and age (issue 14).
+        real("age",
+             "tree age: 0 a seedling, 1 the mature tree; grows continuously along the branches", 0,
+             1, &TreeParams::age),
     };
     return table;
 }

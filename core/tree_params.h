@@ -72,6 +72,8 @@ struct TreeParams {
     int weighted_growth = 0;       // 1: step 2D on the trunk down to D at max_depth
     double curve_reduction = 1.0;  // eq. 3.6 dot-product threshold (1 = keep every node)
     double angle_smoothing = 0.0;  // successors drawn together (0 = not at all, 1 = fully)
+    // Variation and age (issue 14; core/noise.h, core/tree_age.h). The defaults change nothing.
+    double age = 1.0;  // 0: a seedling, 1: the mature tree the template describes
     std::uint64_t seed = 1;
 };
 

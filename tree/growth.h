@@ -16,8 +16,12 @@ std::span<const GrowthMethod* const> growth_methods();
 // nullptr for an unknown name.
 const GrowthMethod* find_growth_method(std::string_view name);
 
-// The template's skeleton, grown by the method it names. Throws InputError for an unknown
-// method (naming the known ones) and whatever the method throws.
-Skeleton grow(const TreeTemplate& tree, const GrowthContext& context = {});
+// The template's skeleton, grown by the method it names, at the template's `age`
+// (core/tree_age.h: the method grows the mature tree, with `age` 1 for its expressions, and
+// the front takes it back). When `mature` is given and the age is below 1, it receives the
+// mature skeleton. Throws InputError for an unknown method (naming the known ones) and
+// whatever the method throws.
+Skeleton grow(const TreeTemplate& tree, const GrowthContext& context = {},
+              Skeleton* mature = nullptr);
 
 }  // namespace sylva

@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "core/stopwatch.h"
+#include "core/tree_age.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "tree/crown_merge.h"
@@ -227,11 +228,54 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p) {
     return fields;
 }
 
+namespace {
+
+float longest_side(const Box& box) {
+    const glm::vec3 extent = box.max - box.min;
+    return std::max({extent.x, extent.y, extent.z});
+}
+
+Box crown_bounds(const Skeleton& skeleton, const TreeParams& p) {
+    Box box{glm::vec3(std::numeric_limits<float>::max()),
+            glm::vec3(std::numeric_limits<float>::lowest())};
+    for (const Ball& ball : crown_spheres(skeleton, p)) {
+        box.min = glm::min(box.min, ball.center - glm::vec3(ball.radius));
+        box.max = glm::max(box.max, ball.center + glm::vec3(ball.radius));
+    }
+    return box;
+}
+
+// A younger tree (core/tree_age.h) is meshed with the mature tree's cells, not with as many
+// cells as the mature one over its smaller box: the sapling then shows the detail per meter
+// the grown tree does, and its triangles rise with its size instead of staying flat. Its
+// crown spheres shrink with age.
+void apply_age(TreeParams& p, const Skeleton& young, const Skeleton& mature) {
+    const TreeParams mature_params = p;
+    const double crown_scale = crown_scale_at_age(p.age);
+    p.sphere_diameter *= crown_scale;
+    p.crown_offset *= crown_scale;
+    auto scaled = [](int resolution, const Box& now, const Box& grown) {
+        const float full = longest_side(grown);
+        if (!(full > 0.0f)) return resolution;
+        const double share = std::min(1.0, static_cast<double>(longest_side(now) / full));
+        return std::max(4, static_cast<int>(std::ceil(resolution * share)));
+    };
+    p.trunk_resolution =
+        scaled(p.trunk_resolution, skeleton_bounds(young), skeleton_bounds(mature));
+    if (!young.segments.empty() && p.sphere_diameter > 0.0)
+        p.crown_resolution =
+            scaled(p.crown_resolution, crown_bounds(young, p), crown_bounds(mature, mature_params));
+}
+
+}  // namespace
+
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
-    out.skeleton = grow(tree, {options.cancel, &out.times});
+    Skeleton mature;
+    out.skeleton = grow(tree, {options.cancel, &out.times}, &mature);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
+    if (p.age < 1.0) apply_age(p, out.skeleton, mature);
 
     check_extent(out.skeleton);
     Stopwatch clock;

@@ -15,7 +15,10 @@ namespace {
 class Deriver {
   public:
     Deriver(const LSystem& system, const DeriveSettings& settings)
-        : system_(system), settings_(settings), random_(settings.seed) {
+        : system_(system),
+          settings_(settings),
+          random_(settings.seed),
+          noise_(expression_noise(settings.seed)) {
         for (size_t r = 0; r < system.rules.size(); ++r) {
             const Rule& rule = system.rules[r];
             by_symbol_[static_cast<unsigned char>(rule.predecessor.symbol)].push_back(r);
@@ -24,7 +27,7 @@ class Deriver {
     }
 
     Word run() {
-        Word word = axiom_word(system_, random_);
+        Word word = axiom_word(system_, random_, &noise_);
         Word next;
         for (int step = 1; step <= settings_.steps; ++step) {
             throw_if_cancelled(settings_.cancel);
@@ -90,7 +93,7 @@ class Deriver {
 
     double evaluate(const Expression& e, const Rule& rule) {
         try {
-            return e.evaluate(bindings_, random_);
+            return e.evaluate(bindings_, random_, &noise_);
         } catch (const GrammarError& error) {
             throw GrammarError(error.reason() + " in rule '" + rule.text + "'", rule.line);
         }
@@ -186,6 +189,7 @@ class Deriver {
     const LSystem& system_;
     const DeriveSettings& settings_;
     Random random_;
+    GradientNoise noise_;
     std::array<std::vector<size_t>, 256> by_symbol_;
     bool has_context_ = false;
     std::vector<size_t> bracket_match_;
@@ -204,14 +208,18 @@ std::string format_count(double n) {
 
 }  // namespace
 
-Word axiom_word(const LSystem& system, Random& random) {
+GradientNoise expression_noise(std::uint64_t seed) {
+    return GradientNoise(derive_seed(seed, noise_stream::expressions));
+}
+
+Word axiom_word(const LSystem& system, Random& random, const GradientNoise* noise) {
     Word word;
     std::vector<double> args;
     for (const ModuleProduction& m : system.axiom) {
         args.clear();
         for (const Expression& e : m.args) {
             try {
-                args.push_back(e.evaluate({}, random));
+                args.push_back(e.evaluate({}, random, noise));
             } catch (const GrammarError& error) {
                 throw GrammarError(error.reason() + " in the axiom", system.axiom_line, 0,
                                    system.axiom_text);

@@ -33,8 +33,12 @@ struct WordGrowth {
 };
 WordGrowth word_growth(const LSystem& system, int steps, double module_limit = 1e300);
 
-// The axiom as a word (its expressions evaluated; rand() draws from `random`).
-Word axiom_word(const LSystem& system, Random& random);
+// The axiom as a word (its expressions evaluated; rand() draws from `random`, noise() and
+// fbm() read `noise`, an error when null).
+Word axiom_word(const LSystem& system, Random& random, const GradientNoise* noise = nullptr);
+
+// The noise field noise() and fbm() read for a derivation with this seed.
+GradientNoise expression_noise(std::uint64_t seed);
 
 // Throws GrammarError on evaluation errors (naming the rule's line) or when the word
 // exceeds max_modules (naming the step and the size); a word that word_growth() proves will

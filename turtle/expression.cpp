@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <numbers>
 
@@ -38,10 +39,26 @@ class ExpressionParser {
             bool pushes = in.op == Op::Constant || in.op == Op::Variable;
             bool binary = in.op >= Op::Add && in.op <= Op::Or;
             bool binary_call = in.op == Op::Min || in.op == Op::Max || in.op == Op::Rand;
-            depth += pushes ? 1 : (binary || binary_call) ? -1 : 0;
+            depth += pushes ? 1 : (binary || binary_call) ? -1 : -pops_beyond_one(in.op);
             deepest = std::max(deepest, depth);
         }
         return deepest;
+    }
+
+    // Operands beyond the first that a variable-arity function consumes.
+    static int pops_beyond_one(Op op) {
+        switch (op) {
+            case Op::Noise2:
+            case Op::Fbm1:
+                return 1;
+            case Op::Noise3:
+            case Op::Fbm2:
+                return 2;
+            case Op::Fbm3:
+                return 3;
+            default:
+                return 0;
+        }
     }
 
     [[noreturn]] void fail(const std::string& message) const {
@@ -180,18 +197,23 @@ class ExpressionParser {
     void parse_call(std::string_view name, size_t start) {
         struct Function {
             std::string_view name;
-            Op op;
-            int arity;
+            Op op;  // for min_arity; the next ops take one argument more each
+            int min_arity;
+            int max_arity;
+            std::string_view arguments;  // for the arity error
         };
-        static constexpr std::array<Function, 9> functions{{{"sin", Op::Sin, 1},
-                                                            {"cos", Op::Cos, 1},
-                                                            {"tan", Op::Tan, 1},
-                                                            {"sqrt", Op::Sqrt, 1},
-                                                            {"abs", Op::Abs, 1},
-                                                            {"floor", Op::Floor, 1},
-                                                            {"min", Op::Min, 2},
-                                                            {"max", Op::Max, 2},
-                                                            {"rand", Op::Rand, 2}}};
+        static constexpr std::array<Function, 11> functions{
+            {{"sin", Op::Sin, 1, 1, ""},
+             {"cos", Op::Cos, 1, 1, ""},
+             {"tan", Op::Tan, 1, 1, ""},
+             {"sqrt", Op::Sqrt, 1, 1, ""},
+             {"abs", Op::Abs, 1, 1, ""},
+             {"floor", Op::Floor, 1, 1, ""},
+             {"min", Op::Min, 2, 2, ""},
+             {"max", Op::Max, 2, 2, ""},
+             {"rand", Op::Rand, 2, 2, ""},
+             {"noise", Op::Noise1, 1, 3, "x[, y[, z]]"},
+             {"fbm", Op::Fbm1, 2, 4, "octaves, x[, y[, z]]"}}};
         const Function* function = nullptr;
         for (const Function& f : functions)
             if (f.name == name) function = &f;
@@ -203,19 +225,48 @@ class ExpressionParser {
         int count = 0;
         if (!accept(")")) {
             do {
+                skip_space();
+                const size_t argument_start = pos_;
+                const size_t code_start = out_.code_.size();
                 parse_or();
                 ++count;
+                if (function->op == Op::Fbm1 && count == 1)
+                    check_octaves(code_start, argument_start);
             } while (accept(","));
             if (!accept(")")) fail("missing ')' after the arguments of " + std::string(name));
         }
-        if (count != function->arity) {
+        if (count < function->min_arity || count > function->max_arity) {
             pos_ = start;
-            fail(std::string(name) + " takes " + std::to_string(function->arity) + " argument" +
-                 (function->arity == 1 ? "" : "s") + ", not " + std::to_string(count));
+            if (function->min_arity == function->max_arity)
+                fail(std::string(name) + " takes " + std::to_string(function->min_arity) +
+                     " argument" + (function->min_arity == 1 ? "" : "s") + ", not " +
+                     std::to_string(count));
+            fail(std::string(name) + " takes " + std::to_string(function->min_arity) + " to " +
+                 std::to_string(function->max_arity) + " arguments (" +
+                 std::string(function->arguments) + "), not " + std::to_string(count));
         }
-        emit(function->op);
+        emit(static_cast<Op>(static_cast<int>(function->op) + count - function->min_arity));
     }
 
+    // fbm's octave count written as a number is checked here, with its column; one computed
+    // at derivation time is checked by evaluate().
+    void check_octaves(size_t code_start, size_t argument_start) {
+        if (out_.code_.size() != code_start + 1 || out_.code_.back().op != Op::Constant) return;
+        const double octaves = out_.code_.back().value;
+        if (octaves >= 1 && octaves <= kMaxFbmOctaves && octaves == std::floor(octaves)) return;
+        pos_ = argument_start;
+        fail(octaves_message(octaves));
+    }
+
+  public:
+    static std::string octaves_message(double octaves) {
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%g", octaves);
+        return "fbm's first argument is the number of octaves, a whole number from 1 to " +
+               std::to_string(kMaxFbmOctaves) + ", not " + shown;
+    }
+
+  private:
     std::string_view text_;
     const Expression::NameLookup& lookup_;
     int offset_;
@@ -236,11 +287,33 @@ Expression Expression::constant(double value) {
 
 bool Expression::is_constant() const {
     for (const Instruction& i : code_)
-        if (i.op == Op::Variable || i.op == Op::Rand) return false;
+        if (i.op == Op::Variable || i.op == Op::Rand || i.op >= Op::Noise1) return false;
     return true;
 }
 
-double Expression::evaluate(std::span<const double> variables, Random& random) const {
+namespace {
+
+const GradientNoise& need_noise(const GradientNoise* noise) {
+    if (!noise)
+        throw GrammarError(
+            "noise() and fbm() depend on the tree's seed and are not available here (in #define "
+            "values and rule weights); use them in rules and the axiom");
+    return *noise;
+}
+
+// fbm with the expression language's fixed persistence and lacunarity.
+FbmSettings fbm_settings(double octaves) {
+    if (!(octaves >= 1 && octaves <= kMaxFbmOctaves && octaves == std::floor(octaves)))
+        throw GrammarError(ExpressionParser::octaves_message(octaves));
+    FbmSettings s;
+    s.octaves = static_cast<int>(octaves);
+    return s;
+}
+
+}  // namespace
+
+double Expression::evaluate(std::span<const double> variables, Random& random,
+                            const GradientNoise* noise) const {
     constexpr double kDegree = std::numbers::pi / 180.0;
     double stack[64];  // compile() rejects programs deeper than this
     int top = -1;
@@ -276,6 +349,31 @@ double Expression::evaluate(std::span<const double> variables, Random& random) c
                 continue;
             case Op::Floor:
                 stack[top] = std::floor(stack[top]);
+                continue;
+            case Op::Noise1:
+                stack[top] = need_noise(noise)(stack[top]);
+                continue;
+            case Op::Noise2:
+                --top;
+                stack[top] = need_noise(noise)(stack[top], stack[top + 1]);
+                continue;
+            case Op::Noise3:
+                top -= 2;
+                stack[top] = need_noise(noise)(stack[top], stack[top + 1], stack[top + 2]);
+                continue;
+            case Op::Fbm1:
+                --top;
+                stack[top] = fbm(need_noise(noise), stack[top + 1], fbm_settings(stack[top]));
+                continue;
+            case Op::Fbm2:
+                top -= 2;
+                stack[top] = fbm(need_noise(noise), stack[top + 1], stack[top + 2],
+                                 fbm_settings(stack[top]));
+                continue;
+            case Op::Fbm3:
+                top -= 3;
+                stack[top] = fbm(need_noise(noise), stack[top + 1], stack[top + 2], stack[top + 3],
+                                 fbm_settings(stack[top]));
                 continue;
             default:
                 break;

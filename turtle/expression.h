@@ -3,7 +3,9 @@
 //
 // Syntax: numbers, names, + - * / ^ (power), unary - and !, parentheses, comparisons
 // < <= > >= == !=, && ||, and the functions sin cos tan (degrees), sqrt abs min max floor
-// rand(a,b). Booleans are 1 and 0.
+// rand(a,b), noise(x), noise(x,y), noise(x,y,z) (improved gradient noise in [-1, 1], seeded
+// by the tree's seed) and fbm(octaves,x), fbm(octaves,x,y), fbm(octaves,x,y,z) (that many
+// octaves, 1 to 16, persistence 1/2, lacunarity 2; in [-1, 1]). Booleans are 1 and 0.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/noise.h"
 #include "core/random.h"
 
 namespace sylva {
@@ -35,10 +38,13 @@ class Expression {
 
     static Expression constant(double value);
 
-    // Throws GrammarError (no line) on division by zero or a non-finite result.
-    double evaluate(std::span<const double> variables, Random& random) const;
+    // Throws GrammarError (no line) on division by zero or a non-finite result, and when the
+    // expression calls noise() or fbm() but `noise` is null (constants and weights are
+    // evaluated before a tree's seed is known).
+    double evaluate(std::span<const double> variables, Random& random,
+                    const GradientNoise* noise = nullptr) const;
 
-    // True when the value does not depend on variables or rand, so it can be folded.
+    // True when the value does not depend on variables, rand or noise, so it can be folded.
     bool is_constant() const;
 
   private:
@@ -69,6 +75,13 @@ class Expression {
         Min,
         Max,
         Rand,
+        Noise1,  // noise(x), noise(x, y), noise(x, y, z)
+        Noise2,
+        Noise3,
+        Fbm1,  // fbm(octaves, x), ... (octaves first, so the count of arguments gives the
+               // dimension)
+        Fbm2,
+        Fbm3,
     };
     struct Instruction {
         Op op;
