@@ -36,7 +36,7 @@ Many trees:
       A shard is written all or nothing.
   sylva forest [--area WxD | --ground FILE.json] [--species NAME[:WEIGHT],...]
                [--variants K] [--spacing M] [--density D | --trees N] [--seed S]
-               [--stand-size M] [--jitter J] [--min-age A] [--scale-jitter S]
+               [--stand-size M] [--jitter J (default 0.2)] [--min-age A] [--scale-jitter S]
                [--instancing nodes|gpu] [--budget N] [--lod] -o FOREST.glb
       Plants a ground: a W x D meter rectangle (default 100x100) or the "forest" polygons
       of a JSON file {"polygons": [{"points": [[x, y], ...], "class": "forest"}]} (other
@@ -214,6 +214,7 @@ int run_batch_command(int argc, char** argv) {
 
 int run_forest_command(int argc, char** argv) {
     TreeFlags flags;
+    flags.jitter = 0.2;  // trees side by side: more variety than a batch's default
     forest::ForestSettings settings;
     std::vector<std::pair<std::string, double>> species{{"oak", 1.0}};
     std::string instancing = "nodes";

@@ -153,6 +153,13 @@ TEST(ForestPlan, TreesStandInsideTheAreaApartAndInStands) {
     }
     EXPECT_GT(static_cast<double>(same_species) / n, 0.7);
     EXPECT_LT(static_cast<double>(same_variant), 0.1 * static_cast<double>(same_species));
+    // Variants age from min_age to 1 (the templates have `age`), and a tree's age is its
+    // variant's.
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_NEAR(plan.variants[k].age, s.min_age + (1.0 - s.min_age) * k / 3.0, 1e-12);
+        EXPECT_EQ(*get_param(plan.variants[k].params, "age"), plan.variants[k].age);
+    }
+    for (const Placement& p : plan.placements) EXPECT_EQ(p.age, plan.variants[p.variant].age);
     // The same settings plan the same forest.
     const ForestPlan again = plan_forest(s);
     EXPECT_EQ(map_points(again), points);
