@@ -70,8 +70,11 @@ std::vector<std::size_t> pick_species(const std::vector<glm::dvec2>& points,
     }
     double total_weight = 0.0;
     for (const Species& sp : s.species) total_weight += sp.weight;
+    // The fields' spread over a small area may be tiny, so the step shrinks geometrically
+    // (from 0.5 to about 1e-4) rather than oscillating around the shares.
     std::vector<double> bias(m, 0.0);
-    for (int round = 0; round < 60; ++round) {
+    double step = 0.5;
+    for (int round = 0; round < 120; ++round, step *= 0.93) {
         std::vector<std::size_t> count(m, 0);
         for (std::size_t i = 0; i < n; ++i) {
             std::size_t best = 0;
@@ -81,7 +84,7 @@ std::vector<std::size_t> pick_species(const std::vector<glm::dvec2>& points,
             ++count[best];
         }
         for (std::size_t k = 0; k < m; ++k)
-            bias[k] += 0.5 * (s.species[k].weight / total_weight -
+            bias[k] += step * (s.species[k].weight / total_weight -
                               static_cast<double>(count[k]) / static_cast<double>(n));
     }
     return pick;
