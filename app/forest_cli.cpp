@@ -14,6 +14,7 @@
 #include "export/export.h"
 #include "forest/batch.h"
 #include "forest/forest.h"
+#include "forest/species_file.h"
 #include "tree/cost.h"
 #include "tree/template_library.h"
 
@@ -34,18 +35,20 @@ Many trees:
       items whose index modulo N is I-1, and manifest_<I>of<N>.json: run 1/N..N/N on any
       machines (GNU parallel, a Slurm array) and their files together are the whole batch.
       A shard is written all or nothing.
-  sylva forest [--area WxD | --ground FILE.json] [--species NAME[:WEIGHT],...]
+  sylva forest [--area WxD | --ground FILE.json]
+               [--species NAME[:WEIGHT],... | --species-file FILE.json]
                [--variants K] [--spacing M] [--density D | --trees N] [--seed S]
                [--stand-size M] [--jitter J (default 0.2)] [--min-age A] [--scale-jitter S]
                [--instancing nodes|gpu] [--budget N] [--lod] -o FOREST.glb
       Plants a ground: a W x D meter rectangle (default 100x100) or the "forest" polygons
       of a JSON file {"polygons": [{"points": [[x, y], ...], "class": "forest"}]} (other
       classes are holes). Trees stand at least --spacing apart (default 4 m, Poisson disk),
-      thinned to --density trees per hectare or --trees N; species (default oak) grow in
+      thinned to --density trees per hectare or --trees N; species (default oak; a file:
+      {"species": [{"template": "oak", "weight": 2, "set": {"age": 0.8}}]}) grow in
       stands about --stand-size meters across (default 40) by 2D noise, in proportion to
       their weights. Each species has K (default 8) unique variants, reused turned, scaled
-      by 1 +- S (default 0.15) and, where the template has `age`, aged from A (default 0.6)
-      to 1. Writes FOREST.glb (meshes stored once: nodes sharing meshes, or with
+      by 1 +- S (default 0.15) and aged from A (default 0.6) to 1 times the template's
+      age. Writes FOREST.glb (meshes stored once: nodes sharing meshes, or with
       --instancing gpu EXT_mesh_gpu_instancing), FOREST.placements.csv and .json.
 )";
 
@@ -217,6 +220,7 @@ int run_forest_command(int argc, char** argv) {
     flags.jitter = 0.2;  // trees side by side: more variety than a batch's default
     forest::ForestSettings settings;
     std::vector<std::pair<std::string, double>> species{{"oak", 1.0}};
+    std::string species_file;
     std::string instancing = "nodes";
     auto parse = [&](const std::string& arg, const std::function<std::string()>& value) {
         if (flags.parse(arg, value)) return true;
@@ -248,6 +252,8 @@ int run_forest_command(int argc, char** argv) {
                 species.emplace_back(item, weight);
                 start = comma + 1;
             }
+        } else if (arg == "--species-file") {
+            species_file = value();
         } else if (arg == "--variants") {
             settings.variants = parse_number<std::size_t>(arg, value());
         } else if (arg == "--spacing") {
@@ -275,11 +281,17 @@ int run_forest_command(int argc, char** argv) {
         if (flags.output.empty()) throw UsageError("forest needs -o FOREST.glb");
         if (flags.format && flags.format->name != "glb")
             throw UsageError("forest writes a .glb scene; --format must be glb");
-        for (const auto& [name, weight] : species) {
-            forest::Species sp{flags.configured(name), weight};
+        if (!species_file.empty()) {
+            settings.species = forest::load_species(species_file);
+            for (forest::Species& sp : settings.species)
+                for (const auto& [key, text] : flags.sets) set_param(sp.tree.params, key, text);
+        } else {
+            for (const auto& [name, weight] : species)
+                settings.species.push_back({flags.configured(name), weight});
+        }
+        for (const forest::Species& sp : settings.species) {
             settings.finish = flags.finish(sp.tree);
             flags.check(sp.tree, settings.finish);
-            settings.species.push_back(std::move(sp));
         }
         settings.seed = flags.seed;
         settings.jitter = flags.jitter;

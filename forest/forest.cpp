@@ -85,7 +85,7 @@ std::vector<std::size_t> pick_species(const std::vector<glm::dvec2>& points,
         }
         for (std::size_t k = 0; k < m; ++k)
             bias[k] += step * (s.species[k].weight / total_weight -
-                              static_cast<double>(count[k]) / static_cast<double>(n));
+                               static_cast<double>(count[k]) / static_cast<double>(n));
     }
     return pick;
 }
@@ -118,7 +118,8 @@ ForestPlan plan_forest(const ForestSettings& s) {
     for (std::size_t sp = 0; sp < s.species.size(); ++sp) {
         const TreeTemplate& tree = s.species[sp].tree;
         const std::uint64_t base = variant_seed(s.seed, kSpecies + sp);
-        const bool ages = get_param(tree.params, "age").has_value();
+        // The template's own age (--set age=0.5: a young forest) is the oldest variant's.
+        const std::optional<double> template_age = get_param(tree.params, "age");
         for (std::size_t k = 0; k < k_count; ++k) {
             Variant v;
             v.species = sp;
@@ -126,10 +127,10 @@ ForestPlan plan_forest(const ForestSettings& s) {
             v.name = tree.name + "_v" + std::to_string(k);
             v.seed = variant_seed(base, k);
             v.params = varied_params(tree.params, v.seed, s.jitter);
-            if (ages) {
-                v.age = k_count == 1 ? 1.0
-                                     : s.min_age + (1.0 - s.min_age) * static_cast<double>(k) /
-                                                       static_cast<double>(k_count - 1);
+            if (template_age) {
+                const double t =
+                    k_count == 1 ? 1.0 : static_cast<double>(k) / static_cast<double>(k_count - 1);
+                v.age = *template_age * (s.min_age + (1.0 - s.min_age) * t);
                 set_param(v.params, "age", v.age);
             }
             plan.variants.push_back(std::move(v));

@@ -8,7 +8,7 @@
 //     like in patches about `stand_size` meters across, and the biases are tuned so each
 //     species gets its weight's share of the trees.
 //  3. Which tree: K unique variants per species (variation.h seeds and jitter; ages spread
-//     over [min_age, 1] when the template has an `age` parameter), each tree one of them
+//     over [min_age, 1] times the template's `age` when it has one), each tree one of them
 //     at random, avoiding the variant of its nearest same-species neighbour, turned about
 //     its axis at random and scaled by 1 +- scale_jitter.
 //  4. Output: the variants (generated in parallel with oneTBB) once in one glb scene
@@ -48,9 +48,9 @@ struct ForestSettings {
     std::optional<std::size_t> trees;  // this many trees (fewer if the spacing cannot fit them)
     double stand_size = 40.0;          // meters across a patch of one species
     double jitter = 0.1;               // varied_params() of each variant
-    double min_age = 0.6;        // variants' ages spread over [min_age, 1] (templates with age)
-    double scale_jitter = 0.15;  // tree scale in [1 - s, 1 + s]
-    FinishSettings finish;       // budget and LOD per variant
+    double min_age = 0.6;              // variants' ages: [min_age, 1] x the template's age
+    double scale_jitter = 0.15;        // tree scale in [1 - s, 1 + s]
+    FinishSettings finish;             // budget and LOD per variant
     MeshOptions mesh;
     ExportOptions export_options;
     Instancing instancing = Instancing::Nodes;

@@ -15,6 +15,7 @@
 #include "forest/forest.h"
 #include "forest/ground.h"
 #include "forest/poisson_disk.h"
+#include "forest/species_file.h"
 #include "tree/template_library.h"
 
 namespace {
@@ -99,6 +100,30 @@ TEST(Ground, BadFilesNameThePlace) {
         parse_ground_json(R"({"polygons": [{"points": [[0, 0], [1, "a"], [2, 2]]}]})", "g"),
         InputError);
     EXPECT_THROW(load_ground("/nonexistent/ground.json"), IoError);
+}
+
+TEST(SpeciesFile, TemplatesWeightsAndOverrides) {
+    const auto species = parse_species_json(R"({"species": [
+        {"template": "oak", "weight": 2, "set": {"leaf_density": 40, "leaf_shape": "needle"}},
+        {"template": "birch"}]})",
+                                            "s.json");
+    ASSERT_EQ(species.size(), 2u);
+    EXPECT_EQ(species[0].tree.name, "oak");
+    EXPECT_EQ(species[0].weight, 2.0);
+    EXPECT_EQ(species[0].tree.params.leaf_density, 40.0);
+    EXPECT_EQ(species[0].tree.params.leaf_shape, static_cast<int>(LeafShape::Needle));
+    EXPECT_EQ(species[1].weight, 1.0);
+    try {
+        parse_species_json(R"({"species": [{"template": "oak"}, {"template": "birch",
+            "set": {"age": 3}}]})",
+                           "s.json");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("species[1].set.age"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(parse_species_json(R"({"species": []})", "s.json"), InputError);
+    EXPECT_THROW(parse_species_json(R"({"species": [{"template": "nosuchtree"}]})", "s.json"),
+                 InputError);
 }
 
 ForestSettings small_forest() {
