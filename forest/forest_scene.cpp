@@ -96,13 +96,13 @@ class SceneBuilder {
 
     // Copies the children of variant `v`'s root under `parent`, meshes shared. `extend` may
     // add extensions to each node with a mesh.
-    // Nodes with a mesh are named `mesh_prefix` + their name + `suffix`, others their name +
-    // `suffix`.
+    // Nodes are named `prefix` + their name (groups too when `prefix_groups`), so the
+    // engines' `_LOD<i>` suffixes stay at the end.
     template <class F>
-    void clone_children(std::size_t v, int parent, const std::string& mesh_prefix,
-                        const std::string& suffix, F&& extend) {
+    void clone_children(std::size_t v, int parent, const std::string& prefix, bool prefix_groups,
+                        F&& extend) {
         const Prototype& proto = variants_[v];
-        clone_children_of(proto, 0, parent, mesh_prefix, suffix, extend);
+        clone_children_of(proto, 0, parent, prefix, prefix_groups, extend);
     }
 
     // Float data in its own view (no target: instance attributes are no vertex data).
@@ -143,12 +143,12 @@ class SceneBuilder {
     };
 
     template <class F>
-    void clone_children_of(const Prototype& proto, int from, int parent,
-                           const std::string& mesh_prefix, const std::string& suffix, F& extend) {
+    void clone_children_of(const Prototype& proto, int from, int parent, const std::string& prefix,
+                           bool prefix_groups, F& extend) {
         for (int child : proto.nodes[static_cast<std::size_t>(from)].children) {
             const tinygltf::Node& source = proto.nodes[static_cast<std::size_t>(child)];
             tinygltf::Node node;
-            node.name = (source.mesh >= 0 ? mesh_prefix : "") + source.name + suffix;
+            node.name = (source.mesh >= 0 || prefix_groups ? prefix : "") + source.name;
             node.translation = source.translation;
             node.rotation = source.rotation;
             node.scale = source.scale;
@@ -158,7 +158,7 @@ class SceneBuilder {
                 extend(node);
             }
             const int index = add_node(parent, std::move(node));
-            clone_children_of(proto, child, index, mesh_prefix, suffix, extend);
+            clone_children_of(proto, child, index, prefix, prefix_groups, extend);
         }
     }
 
@@ -199,7 +199,7 @@ void write_forest_glb(std::ostream& out, std::span<const SceneVariant> variants,
             extras["sylva_row"] = tinygltf::Value(static_cast<int>(i));
             node.extras = tinygltf::Value(extras);
             const int index = builder.add_node(0, std::move(node));
-            builder.clone_children(inst.variant, index, "", "_" + std::to_string(i),
+            builder.clone_children(inst.variant, index, inst.name + "_", true,
                                    [](tinygltf::Node&) {});
         }
     } else {
@@ -226,9 +226,10 @@ void write_forest_glb(std::ostream& out, std::span<const SceneVariant> variants,
             attributes["SCALE"] = tinygltf::Value(builder.add_floats(scale, 3, TINYGLTF_TYPE_VEC3));
             tinygltf::Value::Object extension;
             extension["attributes"] = tinygltf::Value(attributes);
-            builder.clone_children(v, index, variants[v].name + "_", "", [&](tinygltf::Node& node) {
-                node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(extension);
-            });
+            builder.clone_children(
+                v, index, variants[v].name + "_", false, [&](tinygltf::Node& node) {
+                    node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(extension);
+                });
         }
     }
     builder.write(out);

@@ -5,7 +5,8 @@
 //
 // Two ways to share:
 // - Nodes (default): a node per tree with its position, yaw and scale, whose children are
-//   the variant's part nodes (and LOD groups) pointing at the shared meshes. Every glTF 2.0
+//   the variant's part nodes (and LOD groups) pointing at the shared meshes, named after the
+//   tree (`tree_00012_trunk_LOD0`: the `_LOD<i>` engines look for stays last). Every glTF 2.0
 //   reader takes it (Blender 3.4 imports linked duplicates); extras on the tree node name
 //   the species, the variant and the placement row.
 // - Gpu: EXT_mesh_gpu_instancing (listed as required): one node per variant part whose
