@@ -16,6 +16,7 @@
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
 #include "ui/studio_state.h"
+#include "ui/variants_strip.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -301,6 +302,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         state.view.replay_iteration = *options.replay_iteration;
     }
     start_generation(state);
+    VariantsStrip strip;  // ui/variants_strip.h
+    if (options.variants > 0) {
+        strip.open = true;
+        strip.count = options.variants;
+        start_variants(strip, state.tree_template);
+    }
 
     int frames_with_tree = 0;
     int uploaded_level = 0;  // the LOD level the viewport holds
@@ -340,6 +347,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
         }
         update_colonization(viewport, state, false);
+        update_variants_strip(strip);
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
             state.frame_requested = false;
@@ -353,6 +361,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_tree_panel(state, layout);
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());
+        draw_variants_strip(strip, state, layout);
         handle_camera_input(state, static_cast<float>(rect.height));
         handle_shortcuts(state);
         ImGui::Render();
@@ -368,7 +377,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         if (options.screenshot_path && state.tree && !generation_running(state) &&
-            ++frames_with_tree == options.screenshot_frames) {
+            !variants_running(strip) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
             break;
         }
@@ -376,6 +385,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
+    release_variants_strip(strip);
     cancel_generations(state);
     return 0;
 }

@@ -47,6 +47,14 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--replay takes a growth step of at least 0, got '" +
                                  std::string(text) + "'");
             options.replay_iteration = step;
+        } else if (arg == "--variants") {
+            std::string_view text = value();
+            int count = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
+            if (error != std::errc() || end != text.data() + text.size() || count < 1 || count > 12)
+                throw UsageError("--variants takes a count from 1 to 12, got '" +
+                                 std::string(text) + "'");
+            options.variants = count;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -70,7 +78,7 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--screenshot PATH [--frames N]]\n"
+           "                    [--replay STEP] [--variants N] [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -82,6 +90,7 @@ std::string studio_usage() {
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
+           "  --variants N       open the Variants strip with N (1-12) seeds of the template\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

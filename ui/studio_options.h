@@ -19,6 +19,8 @@ struct StudioOptions {
     bool envelope = true;
     bool points = false;
     std::optional<int> replay_iteration;
+    // The Variants strip opened with this many seeds of the template (0: closed).
+    int variants = 0;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.
