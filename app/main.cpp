@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/forest_cli.h"
+#include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/signal_cleanup.h"
@@ -197,6 +198,7 @@ TreeTemplate configured_template(const Options& o) {
     for (const auto& [key, value] : o.sets) set_param(tree.params, key, value);
     if (o.seed) tree.params.seed = *o.seed;
     if (o.steps) tree.params.generations = *o.steps;
+    tree.colors = tree_colors(tree);  // colour variation (issue 14): per seed
     return tree;
 }
 

@@ -3,8 +3,8 @@
 // 4-octave fbm, and GLM's unseeded glm::perlin beside them for reference. One thread.
 //   build/bench/sylva-bench-noise [million samples per row, default 20]
 #include <cstdio>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <glm/gtc/noise.hpp>
 
 #include "core/noise.h"
@@ -32,7 +32,8 @@ void row(const char* name, long count, F&& f) {
     g_sink = g_sink + sum;
     // CPU time as well as wall time: on a shared machine the wall figure undercounts a core.
     std::printf("%-34s %7.1f M/s wall %7.1f M/s cpu  (%6.1f ns cpu/sample)\n", name,
-                static_cast<double>(count) / (ms * 1e3), static_cast<double>(count) / (cpu_ms * 1e3),
+                static_cast<double>(count) / (ms * 1e3),
+                static_cast<double>(count) / (cpu_ms * 1e3),
                 cpu_ms * 1e6 / static_cast<double>(count));
 }
 
@@ -58,16 +59,14 @@ int main(int argc, char** argv) {
     row("value cosine 3D", count, [&](double x, double y, double z) { return cosine(x, y, z); });
     row("value cubic 1D", count, [&](double x, double, double) { return cubic(x); });
     row("value cubic 2D", count / 4, [&](double x, double y, double) { return cubic(x, y); });
-    row("value cubic 3D", count / 16,
-        [&](double x, double y, double z) { return cubic(x, y, z); });
+    row("value cubic 3D", count / 16, [&](double x, double y, double z) { return cubic(x, y, z); });
     row("glm::perlin 2D (float, unseeded)", count, [&](double x, double y, double) {
         return static_cast<double>(glm::perlin(glm::vec2(x, y)));
     });
     row("glm::perlin 3D (float, unseeded)", count, [&](double x, double y, double z) {
         return static_cast<double>(glm::perlin(glm::vec3(x, y, z)));
     });
-    row("glm::perlin 3D (double, unseeded)", count, [&](double x, double y, double z) {
-        return glm::perlin(glm::dvec3(x, y, z));
-    });
+    row("glm::perlin 3D (double, unseeded)", count,
+        [&](double x, double y, double z) { return glm::perlin(glm::dvec3(x, y, z)); });
     return 0;
 }

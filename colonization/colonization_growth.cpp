@@ -1,10 +1,12 @@
 #include "colonization/colonization_growth.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 
 #include "colonization/branch_shaping.h"
 #include "core/errors.h"
+#include "core/noise.h"
 #include "core/stopwatch.h"
 
 namespace sylva {
@@ -113,6 +115,19 @@ ColonizationSettings colonization_settings(const TreeParams& p) {
     s.tropism =
         glm::vec3(static_cast<float>(p.tropism_vector_x), static_cast<float>(p.tropism_vector_y),
                   static_cast<float>(p.tropism_vector_z));
+    if (p.tropism_variation > 0.0) {
+        const std::uint64_t seed = derive_seed(p.seed, noise_stream::tropism);
+        s.tropism_field = [noise =
+                               std::array<GradientNoise, 3>{GradientNoise(seed),
+                                                            GradientNoise(derive_seed(seed, 1)),
+                                                            GradientNoise(derive_seed(seed, 2))},
+                           amount = p.tropism_variation,
+                           frequency = p.bend_frequency](const glm::vec3& q) {
+            const glm::dvec3 x = glm::dvec3(q) * frequency;
+            return glm::vec3(amount * glm::dvec3(noise[0](x.x, x.y, x.z), noise[1](x.x, x.y, x.z),
+                                                 noise[2](x.x, x.y, x.z)));
+        };
+    }
     s.max_iterations = p.max_iterations;
     s.trunk_height = static_cast<float>(p.trunk_height);
     s.max_degree = p.max_degree;

@@ -192,7 +192,8 @@ class Colonizer {
                 ++oscillations_;  // the points pull in opposite directions
                 continue;
             }
-            const glm::vec3 direction = sum_[v] / pull + s_.tropism;
+            glm::vec3 direction = sum_[v] / pull + s_.tropism;
+            if (s_.tropism_field) direction += s_.tropism_field(node.position);
             const float length = glm::length(direction);
             if (length < 1e-6f) continue;
             const glm::vec3 p = node.position + direction * (step(node.depth) / length);

@@ -21,6 +21,9 @@ struct ColonizationSettings {
     float kill_distance = 0.4f;     // d_k: a point dies when a node is this close
     float step_size = 0.25f;        // D: distance of a new node from its parent
     glm::vec3 tropism{0.0f};        // T, added to the normalised mean direction (eq. 3.2)
+    // When set, added to T at the growing node's position (tropism variation: a noise
+    // field, so neighbouring growth bends alike).
+    std::function<glm::vec3(const glm::vec3&)> tropism_field = nullptr;
     int max_iterations = 300;
     // The trunk grows straight up from the root, at least this high and until an
     // attraction point is within d_i of its top, before the points take over.

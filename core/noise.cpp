@@ -1,12 +1,12 @@
 #include "core/noise.h"
 
-#include "core/errors.h"
-#include "core/random.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include "core/errors.h"
+#include "core/random.h"
 
 namespace sylva {
 
@@ -41,8 +41,12 @@ inline std::int64_t floor_int(double x) {
     return i - static_cast<std::int64_t>(x < static_cast<double>(i));
 }
 
-inline double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-inline double lerp(double t, double a, double b) { return a + t * (b - a); }
+inline double fade(double t) {
+    return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
+inline double lerp(double t, double a, double b) {
+    return a + t * (b - a);
+}
 
 // 1D: 16 evenly spaced slopes in [-1, 1].
 inline double grad1(std::uint8_t h, double x) {
@@ -52,14 +56,22 @@ inline double grad1(std::uint8_t h, double x) {
 // 2D: the four axis and four diagonal directions.
 inline double grad2(std::uint8_t h, double x, double y) {
     switch (h & 7) {
-    case 0: return x + y;
-    case 1: return -x + y;
-    case 2: return x - y;
-    case 3: return -x - y;
-    case 4: return x;
-    case 5: return -x;
-    case 6: return y;
-    default: return -y;
+        case 0:
+            return x + y;
+        case 1:
+            return -x + y;
+        case 2:
+            return x - y;
+        case 3:
+            return -x - y;
+        case 4:
+            return x;
+        case 5:
+            return -x;
+        case 6:
+            return y;
+        default:
+            return -y;
     }
 }
 
@@ -69,8 +81,8 @@ struct Gradient3 {
     double x, y, z;
 };
 constexpr Gradient3 kGradients3[16] = {
-    {1, 1, 0},  {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
-    {0, 1, 1},  {0, -1, 1}, {0, 1, -1}, {0, -1, -1}, {1, 1, 0},  {0, -1, 1}, {-1, 1, 0}, {0, -1, -1},
+    {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+    {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}, {1, 1, 0}, {0, -1, 1}, {-1, 1, 0}, {0, -1, -1},
 };
 
 inline double grad3(std::uint8_t h, double x, double y, double z) {
@@ -78,7 +90,9 @@ inline double grad3(std::uint8_t h, double x, double y, double z) {
     return g.x * x + g.y * y + g.z * z;
 }
 
-inline double clamp_unit(double v) { return std::clamp(v, -1.0, 1.0); }
+inline double clamp_unit(double v) {
+    return std::clamp(v, -1.0, 1.0);
+}
 
 // splitmix64's finaliser: a good 64-bit mix for lattice hashing.
 inline std::uint64_t mix(std::uint64_t z) {
@@ -91,7 +105,9 @@ inline double unit_from_hash(std::uint64_t h) {
     return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;  // [-1, 1)
 }
 
-inline double cosine_t(double t) { return (1.0 - std::cos(t * std::numbers::pi)) * 0.5; }
+inline double cosine_t(double t) {
+    return (1.0 - std::cos(t * std::numbers::pi)) * 0.5;
+}
 
 // Seed 004's cubic through v1 (t = 0) and v2 (t = 1) using the outer neighbours v0 and v3.
 inline double cubic(double v0, double v1, double v2, double v3, double t) {
@@ -110,8 +126,8 @@ struct OctaveWalk {
 };
 
 inline OctaveWalk clamp_settings(const FbmSettings& s) {
-    return {std::clamp(s.octaves, 1, kMaxFbmOctaves), s.frequency, std::clamp(s.persistence, 0.0, 1.0),
-            std::max(s.lacunarity, 1.0)};
+    return {std::clamp(s.octaves, 1, kMaxFbmOctaves), s.frequency,
+            std::clamp(s.persistence, 0.0, 1.0), std::max(s.lacunarity, 1.0)};
 }
 
 template <class Sample>
@@ -267,10 +283,12 @@ double ValueNoise::operator()(double x) const {
     const std::int64_t i = floor_int(x);
     const double t = x - static_cast<double>(i);
     switch (interpolation_) {
-    case Interpolation::linear: return lerp(t, lattice(i), lattice(i + 1));
-    case Interpolation::cosine: return lerp(cosine_t(t), lattice(i), lattice(i + 1));
-    case Interpolation::cubic:
-        return clamp_unit(cubic(lattice(i - 1), lattice(i), lattice(i + 1), lattice(i + 2), t));
+        case Interpolation::linear:
+            return lerp(t, lattice(i), lattice(i + 1));
+        case Interpolation::cosine:
+            return lerp(cosine_t(t), lattice(i), lattice(i + 1));
+        case Interpolation::cubic:
+            return clamp_unit(cubic(lattice(i - 1), lattice(i), lattice(i + 1), lattice(i + 2), t));
     }
     return 0.0;
 }
@@ -315,8 +333,8 @@ double ValueNoise::operator()(double x, double y, double z) const {
             double rows[4];
             for (int b = 0; b < 4; ++b) {
                 const std::int64_t jj = j - 1 + b;
-                rows[b] = cubic(lattice(i - 1, jj, kk), lattice(i, jj, kk),
-                                lattice(i + 1, jj, kk), lattice(i + 2, jj, kk), tx);
+                rows[b] = cubic(lattice(i - 1, jj, kk), lattice(i, jj, kk), lattice(i + 1, jj, kk),
+                                lattice(i + 2, jj, kk), tx);
             }
             planes[c] = cubic(rows[0], rows[1], rows[2], rows[3], ty);
         }

@@ -41,7 +41,8 @@ Skeleton skeleton_at_age(const Skeleton& mature, double age) {
     // The radius at a point at distance d of a part whose mature radius there is r.
     auto young_radius = [&](float r, double d, double farthest) {
         const double ahead = farthest - d;
-        const double share = ahead > 0.0 ? std::clamp((std::min(front, farthest) - d) / ahead, 0.0, 1.0) : 1.0;
+        const double share =
+            ahead > 0.0 ? std::clamp((std::min(front, farthest) - d) / ahead, 0.0, 1.0) : 1.0;
         return std::max(static_cast<float>(r * share), std::min(r, tip_radius));
     };
 
@@ -79,7 +80,8 @@ Skeleton skeleton_at_age(const Skeleton& mature, double age) {
         if (grown <= 0.0) continue;
         std::vector<glm::vec3> scaled;
         scaled.reserve(polygon.size());
-        for (const glm::vec3& v : polygon) scaled.push_back(centre + static_cast<float>(grown) * (v - centre));
+        for (const glm::vec3& v : polygon)
+            scaled.push_back(centre + static_cast<float>(grown) * (v - centre));
         out.polygons.push_back(std::move(scaled));
     }
     return out;

@@ -226,6 +226,29 @@ const std::vector<Field>& fields() {
         real("age",
              "tree age: 0 a seedling, 1 the mature tree; grows continuously along the branches", 0,
              1, &TreeParams::age),
+        real("bend",
+             "L-system: branches curve coherently, by up to this many degrees per meter (noise "
+             "along each branch; 0 = straight)",
+             0, 360, &TreeParams::bend),
+        real("bend_frequency",
+             "noise cycles per meter along a branch for bend, width_variation and "
+             "tropism_variation (colonization: per meter of space)",
+             0.01, 20, &TreeParams::bend_frequency),
+        real("jitter",
+             "L-system: each branch's angles and lengths times a factor in 1 +- jitter, drawn "
+             "per branch from the seed",
+             0, 0.9, &TreeParams::jitter),
+        real("width_variation",
+             "L-system: widths swell and thin by up to this share along each branch (noise)", 0,
+             0.9, &TreeParams::width_variation),
+        real("tropism_variation",
+             "the tropism vector plus up to this much noise, along each branch (L-system) or "
+             "through space (colonization: branches bend coherently)",
+             0, 2, &TreeParams::tropism_variation),
+        real("color_variation",
+             "trunk, crown and leaf colours shifted per seed in brightness and hue by up to this "
+             "share (0 = the template's colours)",
+             0, 1, &TreeParams::color_variation),
     };
     return table;
 }

@@ -73,7 +73,13 @@ struct TreeParams {
     double curve_reduction = 1.0;  // eq. 3.6 dot-product threshold (1 = keep every node)
     double angle_smoothing = 0.0;  // successors drawn together (0 = not at all, 1 = fully)
     // Variation and age (issue 14; core/noise.h, core/tree_age.h). The defaults change nothing.
-    double age = 1.0;  // 0: a seedling, 1: the mature tree the template describes
+    double age = 1.0;                // 0: a seedling, 1: the mature tree the template describes
+    double bend = 0.0;               // degrees per meter of curvature noise along branches
+    double bend_frequency = 0.5;     // noise cycles per meter along a branch
+    double jitter = 0.0;             // per-branch angles and lengths times 1 +- jitter
+    double width_variation = 0.0;    // widths times 1 + this * noise along the branch
+    double tropism_variation = 0.0;  // tropism vector plus this * a noise vector
+    double color_variation = 0.0;    // part colours shifted per seed by up to this
     std::uint64_t seed = 1;
 };
 

@@ -56,6 +56,12 @@ TurtleSettings turtle_settings(const TreeTemplate& tree) {
     s.elasticity = p.tropism;
     s.pipe_tip_width = p.tip_width;
     s.pipe_exponent = p.pipe_exponent;
+    s.seed = p.seed;
+    s.bend = p.bend;
+    s.bend_frequency = p.bend_frequency;
+    s.jitter = p.jitter;
+    s.width_variation = p.width_variation;
+    s.tropism_variation = p.tropism_variation;
     return s;
 }
 

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/noise.h"
 #include "core/pipe_model.h"
+#include "core/random.h"
 
 namespace sylva {
 namespace {
@@ -35,7 +37,18 @@ struct State {
     int color = 0;
     int parent = -1;
     int depth = 0;
+    // Variation: which branch the turtle is on (0: the trunk; each '[' starts a new one),
+    // how far along it, and the branch's jitter factors.
+    int branch = 0;
+    double arc = 0.0;
+    double length_factor = 1.0;
+    double angle_factor = 1.0;
 };
+
+// A branch's coordinate across the noise: far enough apart that branches bend independently.
+double branch_coordinate(int branch) {
+    return 0.5 + 1.7320508075688772 * branch;
+}
 
 // Rotates the pair (a, b) in their plane: a' = a cos t + b sin t, b' = b cos t - a sin t.
 void rotate_pair(glm::dvec3& a, glm::dvec3& b, double degrees) {
@@ -61,8 +74,18 @@ void orthonormalize(State& s) {
 class Interpreter {
   public:
     Interpreter(const Word& word, const TurtleSettings& settings)
-        : word_(word), settings_(settings) {
+        : word_(word),
+          settings_(settings),
+          bend_pitch_(derive_seed(settings.seed, noise_stream::bend)),
+          bend_turn_(derive_seed(derive_seed(settings.seed, noise_stream::bend), 1)),
+          width_(derive_seed(settings.seed, noise_stream::width)),
+          tropism_{
+              GradientNoise(derive_seed(settings.seed, noise_stream::tropism)),
+              GradientNoise(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 1)),
+              GradientNoise(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 2))},
+          jitter_seed_(derive_seed(settings.seed, noise_stream::jitter)) {
         state_.width = settings.initial_width;
+        start_branch();
     }
 
     Skeleton run() {
@@ -78,22 +101,22 @@ class Interpreter {
                     forward(arg(settings_.step), false);
                     break;
                 case '+':
-                    turn(arg(settings_.turn_angle));
+                    turn(state_.angle_factor * arg(settings_.turn_angle));
                     break;
                 case '-':
-                    turn(-arg(settings_.turn_angle));
+                    turn(-state_.angle_factor * arg(settings_.turn_angle));
                     break;
                 case '&':
-                    pitch(arg(settings_.pitch_angle));
+                    pitch(state_.angle_factor * arg(settings_.pitch_angle));
                     break;
                 case '^':
-                    pitch(-arg(settings_.pitch_angle));
+                    pitch(-state_.angle_factor * arg(settings_.pitch_angle));
                     break;
                 case '\\':
-                    roll(arg(settings_.roll_angle));
+                    roll(state_.angle_factor * arg(settings_.roll_angle));
                     break;
                 case '/':
-                    roll(-arg(settings_.roll_angle));
+                    roll(-state_.angle_factor * arg(settings_.roll_angle));
                     break;
                 case '|':
                     turn_around();
@@ -104,6 +127,8 @@ class Interpreter {
                 case '[':
                     stack_.push_back(state_);
                     ++state_.depth;
+                    state_.branch = ++branches_;
+                    start_branch();
                     break;
                 case ']':
                     if (stack_.empty())
@@ -137,11 +162,66 @@ class Interpreter {
         if (settings_.width_model == WidthModel::Pipe)
             apply_pipe_model(out_, static_cast<float>(settings_.pipe_tip_width * 0.5),
                              static_cast<float>(settings_.pipe_exponent));
+        vary_widths();
         return std::move(out_);
     }
 
   private:
+    // A new branch (or the trunk): its jitter factors, from its own draw of the seed.
+    void start_branch() {
+        state_.arc = 0.0;
+        if (settings_.jitter == 0.0) return;
+        Random random(derive_seed(jitter_seed_, static_cast<std::uint64_t>(state_.branch)));
+        state_.length_factor = 1.0 + settings_.jitter * (2.0 * random.uniform() - 1.0);
+        state_.angle_factor = 1.0 + settings_.jitter * (2.0 * random.uniform() - 1.0);
+    }
+
+    // Width variation after every width model: radii times 1 + v * noise along the branch,
+    // continuous where one segment meets the next on the same branch.
+    void vary_widths() {
+        const double v = settings_.width_variation;
+        if (v == 0.0) return;
+        auto factor = [&](size_t i, double s) {
+            const double n =
+                width_(s * settings_.bend_frequency, branch_coordinate(span_branch_[i]));
+            return static_cast<float>(std::max(0.05, 1.0 + v * n));
+        };
+        for (size_t i = 0; i < out_.segments.size(); ++i) {
+            out_.segments[i].ra *= factor(i, span_start_[i]);
+            out_.segments[i].rb *= factor(i, span_end_[i]);
+        }
+    }
+
+    // The turtle's step with bending: pieces an eighth of a noise cycle long, each turned by
+    // the curvature noise at its middle (bend degrees per meter at noise 1).
     void forward(double length, bool draw) {
+        length *= state_.length_factor;
+        if (settings_.bend == 0.0) return forward_piece(length, draw, 1.0, true);
+        const double piece = 0.125 / settings_.bend_frequency;
+        const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(length) / piece)), 1, 32);
+        const double width0 = state_.width;
+        const double taper = !draw || settings_.width_model != WidthModel::Taper ? 1.0
+                             : state_.depth == 0 ? settings_.trunk_taper
+                                                 : settings_.branch_taper;
+        const double step = length / pieces;
+        for (int k = 0; k < pieces; ++k) {
+            // Widths run linearly from the F's start to its tapered end across the pieces.
+            state_.width = width0 * (1.0 + (taper - 1.0) * k / pieces);
+            const double next = width0 * (1.0 + (taper - 1.0) * (k + 1) / pieces);
+            forward_piece(step, draw, state_.width > 0.0 ? next / state_.width : taper,
+                          k + 1 == pieces);
+            state_.width = next;
+            const double y = branch_coordinate(state_.branch);
+            const double s = (state_.arc - 0.5 * std::abs(step)) * settings_.bend_frequency;
+            const double degrees = settings_.bend * std::abs(step);
+            pitch(degrees * bend_pitch_(s, y));
+            turn(degrees * bend_turn_(s, y));
+        }
+    }
+
+    // One drawn (or moved) piece; `taper` is this piece's width factor, `last` whether the F
+    // ends here (tropism bends once per F).
+    void forward_piece(double length, bool draw, double taper, bool last) {
         glm::dvec3 direction =
             settings_.mode == TurtleMode::Lptg ? lptg_direction() : state_.heading;
         glm::dvec3 start = state_.position;
@@ -151,7 +231,9 @@ class Interpreter {
             s.a = glm::vec3(start);
             s.b = glm::vec3(state_.position);
             s.ra = static_cast<float>(state_.width * 0.5);
-            if (settings_.width_model == WidthModel::Taper)
+            if (settings_.bend != 0.0)
+                state_.width *= taper;
+            else if (settings_.width_model == WidthModel::Taper)
                 state_.width *= state_.depth == 0 ? settings_.trunk_taper : settings_.branch_taper;
             s.rb = static_cast<float>(state_.width * 0.5);
             s.parent = state_.parent;
@@ -159,8 +241,14 @@ class Interpreter {
             s.color = state_.color;
             state_.parent = static_cast<int>(out_.segments.size());
             out_.segments.push_back(s);
+            if (settings_.width_variation != 0.0) {
+                span_branch_.push_back(state_.branch);
+                span_start_.push_back(state_.arc);
+                span_end_.push_back(state_.arc + std::abs(length));
+            }
         }
-        if (settings_.mode == TurtleMode::Abop) apply_tropism();
+        state_.arc += std::abs(length);
+        if (last && settings_.mode == TurtleMode::Abop) apply_tropism();
     }
 
     glm::dvec3 lptg_direction() const {
@@ -168,9 +256,19 @@ class Interpreter {
         return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
     }
 
+    // The tropism vector, varied along each branch by three noise channels.
+    glm::dvec3 tropism() const {
+        const double v = settings_.tropism_variation;
+        if (v == 0.0) return settings_.tropism;
+        const double s = state_.arc * settings_.bend_frequency;
+        const double y = branch_coordinate(state_.branch);
+        return settings_.tropism +
+               v * glm::dvec3(tropism_[0](s, y), tropism_[1](s, y), tropism_[2](s, y));
+    }
+
     void apply_tropism() {
         if (settings_.elasticity == 0.0) return;
-        glm::dvec3 axis = glm::cross(state_.heading, settings_.tropism);
+        glm::dvec3 axis = glm::cross(state_.heading, tropism());
         double strength = glm::length(axis);
         if (strength < 1e-12) return;
         axis /= strength;
@@ -240,6 +338,13 @@ class Interpreter {
 
     const Word& word_;
     const TurtleSettings& settings_;
+    GradientNoise bend_pitch_, bend_turn_, width_;
+    GradientNoise tropism_[3];
+    std::uint64_t jitter_seed_;
+    int branches_ = 0;
+    // Per drawn segment, for width variation: its branch and its span along the branch.
+    std::vector<int> span_branch_;
+    std::vector<double> span_start_, span_end_;
     State state_;
     std::vector<State> stack_;
     std::vector<std::vector<glm::vec3>> polygons_;

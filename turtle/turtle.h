@@ -30,9 +30,20 @@ struct TurtleSettings {
     glm::dvec3 tropism{0.0, -1.0, 0.0};
     double elasticity = 0.0;      // 0 disables tropism
     CancelFlag cancel = nullptr;  // polled every few thousand modules; throws Cancelled
+
+    // Variation (issue 14, seed 004), from noise seeded by `seed`; every amount 0 draws the
+    // word exactly as without them. A branch is the trunk or what a '[' starts; each has its
+    // own noise, sampled along its length s (meters from where it starts).
+    std::uint64_t seed = 1;
+    double bend = 0.0;               // degrees per meter: curvature noise along each branch
+    double bend_frequency = 0.5;     // noise cycles per meter along a branch (bend, width, tropism)
+    double jitter = 0.0;             // per branch: angles and lengths times 1 +- jitter (uniform)
+    double width_variation = 0.0;    // widths times 1 + this * noise(s)
+    double tropism_variation = 0.0;  // the tropism vector plus this * a noise vector per branch
 };
 
-// Throws GrammarError for a ']' with no '[' or a '}' with no '{' in the word.
+// Throws GrammarError for a ']' with no '[' or a '}' with no '{' in the word. With bend > 0
+// an F longer than a tenth of a noise cycle is drawn as several segments, so the curve shows.
 Skeleton interpret(const Word& word, const TurtleSettings& settings);
 
 }  // namespace sylva

@@ -175,6 +175,28 @@ bool parameter_widget(const ParamInfo& info, double& value) {
     return changed;
 }
 
+// One parameter's widget with its help and range as a tooltip.
+void parameter_row(TreeParams& params, const ParamInfo& info) {
+    double value = *get_param(params, info.key);
+    const bool changed = parameter_widget(info, value);
+    if (ImGui::IsItemHovered()) {
+        if (info.choices.empty())
+            ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)",
+                              std::string(info.help).c_str(), info.min, info.max);
+        else
+            ImGui::SetTooltip("%s", std::string(info.help).c_str());
+    }
+    if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+}
+
+// The age slider and the noise controls (issue 14), shown above the other parameters.
+bool is_variation_key(std::string_view key) {
+    for (std::string_view k : {"age", "bend", "bend_frequency", "jitter", "width_variation",
+                               "tropism_variation", "color_variation"})
+        if (key == k) return true;
+    return false;
+}
+
 void parameter_section(StudioState& state) {
     section("Parameters");
     TreeTemplate& t = state.tree_template;
@@ -190,18 +212,12 @@ void parameter_section(StudioState& state) {
     ImGui::SameLine();
     if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
     tooltip("a new random seed");
-    for (const ParamInfo& info : param_infos()) {
-        double value = *get_param(params, info.key);
-        const bool changed = parameter_widget(info, value);
-        if (ImGui::IsItemHovered()) {
-            if (info.choices.empty())
-                ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)",
-                                  std::string(info.help).c_str(), info.min, info.max);
-            else
-                ImGui::SetTooltip("%s", std::string(info.help).c_str());
-        }
-        if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
-    }
+    // Issue 14: the age slider and the noise controls first, the other parameters below.
+    for (const ParamInfo& info : param_infos())
+        if (is_variation_key(info.key)) parameter_row(params, info);
+    ImGui::Separator();
+    for (const ParamInfo& info : param_infos())
+        if (!is_variation_key(info.key)) parameter_row(params, info);
 }
 
 // A generation held back by its estimated cost, and the button that runs it anyway.

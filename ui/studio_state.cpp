@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/atomic_file.h"
+#include "core/color_variation.h"
 #include "core/errors.h"
 #include "export/export_tree.h"
 #include "marching/marching_cubes.h"
@@ -121,13 +122,13 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
         finish.lod = settings.lod;
         finished = finish_tree(tree, finish);
     }
-    const auto files = write_tree(settings.path, tree, finished, tmpl.colors);
+    const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl));
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +
                std::to_string(finished.levels.size() - 1) + ", " +
                std::to_string(finished.budgets.front()) + " to " +
                std::to_string(finished.budgets.back()) + " trunk + crown triangles";
-    const ModelParts parts = finished_parts(tree, finished, tmpl.colors).front();
+    const ModelParts parts = finished_parts(tree, finished, tree_colors(tmpl)).front();
     std::string text = "wrote " + files_text(files) + ":";
     for (const NamedMesh& part : parts)
         text += " " + part.name + " " + std::to_string(part.mesh->triangles.size()) + ",";

@@ -22,8 +22,8 @@ void sample_stats(F&& f, int n, double& lo, double& hi, double& mean) {
     hi = -1e9;
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
-        const double v =
-            f(random.uniform() * 64.0 - 32.0, random.uniform() * 64.0 - 32.0, random.uniform() * 64.0);
+        const double v = f(random.uniform() * 64.0 - 32.0, random.uniform() * 64.0 - 32.0,
+                           random.uniform() * 64.0);
         lo = std::min(lo, v);
         hi = std::max(hi, v);
         sum += v;
@@ -90,7 +90,8 @@ TEST(GradientNoise, IsContinuous) {
     Random random(1);
     const double h = 1e-5;
     for (int i = 0; i < 2000; ++i) {
-        const double x = random.uniform() * 50, y = random.uniform() * 50, z = random.uniform() * 50;
+        const double x = random.uniform() * 50, y = random.uniform() * 50,
+                     z = random.uniform() * 50;
         // Slopes are bounded (a few units per unit), so a tiny step moves the value a little.
         EXPECT_LT(std::abs(n(x + h) - n(x)), 10 * h);
         EXPECT_LT(std::abs(n(x, y + h) - n(x, y)), 10 * h);
@@ -158,10 +159,12 @@ TEST(Fbm, MoreOctavesAddDetailAndStayInRange) {
     const ValueNoise v(4);
     const FbmSettings s{6, 1.0, 0.6, 2.0};
     double lo, hi, mean;
-    sample_stats([&](double x, double y, double z) { return fbm(n, x, y, z, s); }, 20000, lo, hi, mean);
+    sample_stats([&](double x, double y, double z) { return fbm(n, x, y, z, s); }, 20000, lo, hi,
+                 mean);
     EXPECT_GE(lo, -1.0);
     EXPECT_LE(hi, 1.0);
-    sample_stats([&](double x, double y, double z) { return fbm(v, x, y, z, s); }, 20000, lo, hi, mean);
+    sample_stats([&](double x, double y, double z) { return fbm(v, x, y, z, s); }, 20000, lo, hi,
+                 mean);
     EXPECT_GE(lo, -1.0);
     EXPECT_LE(hi, 1.0);
     // Detail: over a short step the 6-octave sum changes more than the first octave alone.

@@ -43,7 +43,8 @@ TEST(TemplateAge, EveryTemplateGrowsMonotonicallyInHeightAndTriangles) {
             tree.params.age = age;
             const Tree t = generate_tree(tree);
             const ReducedTree game = reduce_tree(t, TreeBudget{});
-            const float top = mesh_top(t.crown, mesh_top(t.trunk, std::numeric_limits<float>::lowest()));
+            const float top =
+                mesh_top(t.crown, mesh_top(t.trunk, std::numeric_limits<float>::lowest()));
             sweep.push_back({age, top, t.trunk.triangles.size() + t.crown.triangles.size(),
                              game.triangles + game.leaves.triangles.size()});
         }

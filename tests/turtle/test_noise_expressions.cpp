@@ -62,7 +62,8 @@ TEST(NoiseExpressions, WrongArityNamesLineAndColumn) {
         {"axiom: F\nF -> F(noise(1,2,3,4))\n", 8, "noise takes 1 to 3 arguments"},
         {"axiom: F\nF -> F(1 + fbm(4))\n", 12, "fbm takes 2 to 4 arguments (octaves, x[, y[, z]])"},
         {"axiom: F\nF -> F(fbm(1,2,3,4,5))\n", 8, "not 5"},
-        {"axiom: F\nF -> F(fbm(0, 1))\n", 12, "number of octaves, a whole number from 1 to 16, not 0"},
+        {"axiom: F\nF -> F(fbm(0, 1))\n", 12,
+         "number of octaves, a whole number from 1 to 16, not 0"},
         {"axiom: F\nF -> F(fbm(2.5, 1))\n", 12, "not 2.5"},
         {"axiom: F\nF -> F(fbm(17, 1, 2))\n", 12, "not 17"},
     };
@@ -90,8 +91,8 @@ TEST(NoiseExpressions, ComputedOctaveCountIsCheckedAtDerivation) {
 }
 
 TEST(NoiseExpressions, NotAvailableWithoutASeed) {
-    for (const char* grammar : {"#define k noise(0.5)\naxiom: F(k)\n",
-                                "axiom: F\nF -> FF : noise(0.5) + 1\n"}) {
+    for (const char* grammar :
+         {"#define k noise(0.5)\naxiom: F(k)\n", "axiom: F\nF -> FF : noise(0.5) + 1\n"}) {
         try {
             parse_lsystem(grammar);
             ADD_FAILURE() << "no error for: " << grammar;
