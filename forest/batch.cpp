@@ -7,6 +7,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/signal_cleanup.h"
@@ -132,8 +133,10 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     nlohmann::ordered_json items = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < n; ++k) {
         BatchItem& item = result.items[k];
+        TreeTemplate variant = settings.tree;
+        variant.params = item.params;
         const std::vector<ModelParts> levels =
-            finished_parts(generated[k]->tree, generated[k]->finished, settings.tree.colors);
+            finished_parts(generated[k]->tree, generated[k]->finished, tree_colors(variant));
         item.triangles = triangles_of(levels);
         format->write(files, dir / item.file, levels, settings.export_options);
         nlohmann::ordered_json parameters = nlohmann::ordered_json::object();

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/noise.h"
@@ -253,11 +254,13 @@ ForestResult plant_forest(const ForestSettings& s, const std::filesystem::path& 
 
     std::vector<SceneVariant> scene_variants;
     for (std::size_t v = 0; v < plan.variants.size(); ++v) {
-        const TreeTemplate& tree = s.species[plan.variants[v].species].tree;
+        TreeTemplate tree = s.species[plan.variants[v].species].tree;
+        tree.params = plan.variants[v].params;
         SceneVariant sv;
         sv.name = plan.variants[v].name;
-        sv.material_prefix = tree.name;
-        sv.levels = finished_parts(generated[v]->tree, generated[v]->finished, tree.colors);
+        // One material set per species, or per variant when its colours vary by seed.
+        sv.material_prefix = tree.params.color_variation > 0.0 ? sv.name : tree.name;
+        sv.levels = finished_parts(generated[v]->tree, generated[v]->finished, tree_colors(tree));
         std::size_t triangles = 0;
         for (const NamedMesh& part : sv.levels[0]) triangles += part.mesh->triangles.size();
         result.variant_triangles.push_back(triangles);

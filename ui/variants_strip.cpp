@@ -9,6 +9,7 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "core/cancel.h"
+#include "core/color_variation.h"
 #include "forest/variation.h"
 #include "ui/mesh_renderer.h"
 
@@ -83,9 +84,10 @@ GLuint render_thumbnail(const VariantThumbnail& t, MeshRenderer& trunk, MeshRend
     trunk.upload(t.trunk);
     crown.upload(t.crown);
     leaves.upload(t.leaves);
-    trunk.draw(view, projection, t.tree.colors.trunk);
-    crown.draw(view, projection, t.tree.colors.crown);
-    leaves.draw(view, projection, t.tree.colors.leaves);
+    const PartColors colors = tree_colors(t.tree);
+    trunk.draw(view, projection, colors.trunk);
+    crown.draw(view, projection, colors.crown);
+    leaves.draw(view, projection, colors.leaves);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &framebuffer);
