@@ -18,6 +18,9 @@
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
+#ifdef SYLVA_HAS_LAYOUT
+#include "layout/layout_cli.h"
+#endif
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/cost.h"
@@ -46,6 +49,9 @@ Usage:
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
   sylva forest   [--area WxD | --ground FILE] [--species A,B:2,...] -o FOREST.glb
   sylva templates
+  sylva layout   examples | derive EXAMPLE -o grammar.json |
+                 generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
+                 (2D layouts from one example, seed 002; see docs/layout.md)
   sylva --help
 
   -t NAME|FILE     a built-in template (see `sylva templates`) or a grammar file;
@@ -310,6 +316,12 @@ int run(int argc, char** argv) {
     // The many-tree commands parse their own flags (app/forest_cli.h).
     if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
     if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);
+#ifdef SYLVA_HAS_LAYOUT
+    // `sylva layout ...` (layout/layout_cli.h) parses its own arguments.
+    if (argc >= 2 && std::string(argv[1]) == "layout")
+        return layout::run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
+                                      stderr);
+#endif
     Options o = parse_options(argc, argv);
     if (o.command == "--help" || o.command == "-h" || o.command == "help") {
         print_help(stdout);

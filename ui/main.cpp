@@ -10,6 +10,9 @@
 #include "ui/colonization_view.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#ifdef SYLVA_HAS_LAYOUT
+#include "ui/layout_panel.h"
+#endif
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
@@ -292,6 +295,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     Viewport viewport;
     StudioState state;
     RulesEditorState editor;
+#ifdef SYLVA_HAS_LAYOUT
+    LayoutPanelState layout_panel;
+    if (options.layout_example && !select_layout_example(layout_panel, *options.layout_example)) {
+        std::fprintf(stderr, "sylva-studio: no layout example '%s' (see sylva layout examples)\n",
+                     options.layout_example->c_str());
+        return 2;
+    }
+#endif
     state.view.low_poly = options.low_poly;
     state.tree_template = state.committed = sylva::load_template(options.tree_template);
 
@@ -363,6 +374,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());
         draw_variants_strip(strip, state, layout);
+#ifdef SYLVA_HAS_LAYOUT
+        draw_layout_panel(layout_panel, layout.width, layout.height);
+#endif
         handle_camera_input(state, static_cast<float>(rect.height));
         handle_shortcuts(state);
         ImGui::Render();

@@ -55,6 +55,10 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--variants takes a count from 1 to 12, got '" +
                                  std::string(text) + "'");
             options.variants = count;
+        } else if (arg == "--layout") {
+            const std::string_view name = value();
+            if (name.empty()) throw UsageError("--layout needs an example name");
+            options.layout_example = std::string(name);
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -78,7 +82,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--variants N] [--screenshot PATH [--frames N]]\n"
+           "                    [--replay STEP] [--variants N] [--layout EXAMPLE]\n"
+           "                    [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -91,6 +96,8 @@ std::string studio_usage() {
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
            "  --variants N       open the Variants strip with N (1-12) seeds of the template\n"
+           "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
+           "                     examples lists them)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
            "  -h, --help         show this help\n"

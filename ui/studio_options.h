@@ -21,6 +21,7 @@ struct StudioOptions {
     std::optional<int> replay_iteration;
     // The Variants strip opened with this many seeds of the template (0: closed).
     int variants = 0;
+    std::optional<std::string> layout_example;  // open the layout panel on this example
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

@@ -54,6 +54,15 @@ TEST(StudioOptions, ColonizationOverlays) {
     EXPECT_THROW(parse({"--replay"}), UsageError);
 }
 
+TEST(StudioOptions, LayoutOpensThePanelOnAnExample) {
+    EXPECT_FALSE(parse({}).layout_example);
+    StudioOptions o = parse({"--layout", "village"});
+    ASSERT_TRUE(o.layout_example);
+    EXPECT_EQ(*o.layout_example, "village");
+    EXPECT_THROW(parse({"--layout"}), UsageError);
+    EXPECT_THROW(parse({"--layout", ""}), UsageError);
+}
+
 TEST(StudioOptions, RejectsMistakesWithAUsageError) {
     EXPECT_THROW(parse({"--frames", "3"}), UsageError);  // without --screenshot
     EXPECT_THROW(parse({"--screenshot", "a.png", "--frames", "0"}), UsageError);
