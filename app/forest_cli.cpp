@@ -35,7 +35,7 @@ Many trees:
       items whose index modulo N is I-1, and manifest_<I>of<N>.json: run 1/N..N/N on any
       machines (GNU parallel, a Slurm array) and their files together are the whole batch.
       A shard is written all or nothing.
-  sylva forest [--area WxD | --ground FILE.json]
+  sylva forest [--area WxD | --ground FILE.json | --layout FILE.json]
                [--species NAME[:WEIGHT],... | --species-file FILE.json]
                [--variants K] [--spacing M] [--density D | --trees N] [--seed S]
                [--stand-size M] [--jitter J (default 0.2)] [--min-age A] [--scale-jitter S]
@@ -50,6 +50,15 @@ Many trees:
       by 1 +- S (default 0.15) and aged from A (default 0.6) to 1 times the template's
       age. Writes FOREST.glb (meshes stored once: nodes sharing meshes, or with
       --instancing gpu EXT_mesh_gpu_instancing), FOREST.placements.csv and .json.
+      --layout FILE.json plants a plan from `sylva layout generate` (same form, each
+      polygon's "class"): forest as above; orchard: rows along each polygon's longest
+      edge, --row-spacing M (default 6) apart, --tree-spacing M (default 4) in a row, at
+      least --orchard-margin M (default 2) inside, of --orchard-species NAME[:WEIGHT],...
+      (default maple; one species per polygon); meadow: --meadow-density D solitary
+      trees per hectare (default 0) of the forest species; path: nothing. A layout's
+      coordinates are its example's drawing units, taken as meters times --layout-scale
+      (default 1; the shipped examples are drawn on a 10-unit plot grid, so 4 gives 40 m
+      plots). The placement lists give each tree's class.
 )";
 
 struct UsageError : std::runtime_error {
@@ -220,6 +229,29 @@ int run_forest_command(int argc, char** argv) {
     flags.jitter = 0.2;  // trees side by side: more variety than a batch's default
     forest::ForestSettings settings;
     std::vector<std::pair<std::string, double>> species{{"oak", 1.0}};
+    // A fruit-tree stand-in: maple's short trunk under a dense round crown reads as an apple
+    // or plum tree; the other templates are tall (birch, pine) or forest-shaped (oak).
+    std::vector<std::pair<std::string, double>> orchard_species{{"maple", 1.0}};
+    std::optional<double> layout_scale;
+    forest::LayoutPlanting layout;
+    auto species_list = [](const std::string& flag, const std::string& list) {
+        std::vector<std::pair<std::string, double>> out;
+        std::size_t start = 0;
+        while (start <= list.size()) {
+            const std::size_t comma = std::min(list.find(',', start), list.size());
+            std::string item = list.substr(start, comma - start);
+            double weight = 1.0;
+            const std::size_t colon = item.rfind(':');
+            if (colon != std::string::npos) {
+                weight = parse_number<double>(flag + " weight", item.substr(colon + 1));
+                item.resize(colon);
+            }
+            if (item.empty()) throw UsageError(flag + " expects NAME[:WEIGHT],...");
+            out.emplace_back(item, weight);
+            start = comma + 1;
+        }
+        return out;
+    };
     std::string species_file;
     std::string instancing = "nodes";
     auto parse = [&](const std::string& arg, const std::function<std::string()>& value) {
@@ -235,23 +267,25 @@ int run_forest_command(int argc, char** argv) {
             settings.ground = forest::rectangle_ground(w, d);
         } else if (arg == "--ground") {
             settings.ground = forest::load_ground(value());
+        } else if (arg == "--layout") {
+            settings.ground = forest::load_ground(value());
+            settings.layout = layout;
+        } else if (arg == "--layout-scale") {
+            layout_scale = parse_number<double>(arg, value());
+            if (!(*layout_scale > 0.0 && std::isfinite(*layout_scale)))
+                throw UsageError("--layout-scale must be a positive number of meters per unit");
+        } else if (arg == "--orchard-species") {
+            orchard_species = species_list(arg, value());
+        } else if (arg == "--row-spacing") {
+            layout.orchard.row_spacing = parse_number<double>(arg, value());
+        } else if (arg == "--tree-spacing") {
+            layout.orchard.tree_spacing = parse_number<double>(arg, value());
+        } else if (arg == "--orchard-margin") {
+            layout.orchard.margin = parse_number<double>(arg, value());
+        } else if (arg == "--meadow-density") {
+            layout.meadow_density = parse_number<double>(arg, value());
         } else if (arg == "--species") {
-            species.clear();
-            std::string list = value();
-            std::size_t start = 0;
-            while (start <= list.size()) {
-                const std::size_t comma = std::min(list.find(',', start), list.size());
-                std::string item = list.substr(start, comma - start);
-                double weight = 1.0;
-                const std::size_t colon = item.rfind(':');
-                if (colon != std::string::npos) {
-                    weight = parse_number<double>("--species weight", item.substr(colon + 1));
-                    item.resize(colon);
-                }
-                if (item.empty()) throw UsageError("--species expects NAME[:WEIGHT],...");
-                species.emplace_back(item, weight);
-                start = comma + 1;
-            }
+            species = species_list(arg, value());
         } else if (arg == "--species-file") {
             species_file = value();
         } else if (arg == "--variants") {
@@ -289,6 +323,15 @@ int run_forest_command(int argc, char** argv) {
             for (const auto& [name, weight] : species)
                 settings.species.push_back({flags.configured(name), weight});
         }
+        if (settings.layout) {
+            settings.layout = layout;  // the orchard and meadow flags, wherever they stood
+            if (layout_scale) forest::scale_ground(settings.ground, *layout_scale);
+            for (const auto& [name, weight] : orchard_species)
+                settings.species.push_back(
+                    {flags.configured(name), weight, std::string(forest::kOrchardClass)});
+        } else if (layout_scale) {
+            throw UsageError("--layout-scale only applies with --layout");
+        }
         for (const forest::Species& sp : settings.species) {
             settings.finish = flags.finish(sp.tree);
             flags.check(sp.tree, settings.finish);
@@ -307,7 +350,8 @@ int run_forest_command(int argc, char** argv) {
         for (const forest::Placement& p : result.plan.placements) ++per_species[p.species];
         std::printf("  %zu trees:", result.plan.placements.size());
         for (std::size_t s = 0; s < per_species.size(); ++s)
-            std::printf("%s %s %zu", s ? "," : "", settings.species[s].tree.name.c_str(),
+            std::printf("%s %s%s %zu", s ? "," : "", settings.species[s].tree.name.c_str(),
+                        settings.species[s].cls == forest::kOrchardClass ? " (orchard)" : "",
                         per_species[s]);
         std::printf(
             "\n  %zu unique variants; time: plan %.0f ms, variants %.0f ms, write %.0f ms\n",

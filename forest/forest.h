@@ -28,6 +28,7 @@
 #include "export/export_tree.h"
 #include "forest/forest_scene.h"
 #include "forest/ground.h"
+#include "forest/orchard.h"
 #include "tree/pipeline.h"
 
 namespace sylva::forest {
@@ -35,12 +36,27 @@ namespace sylva::forest {
 struct Species {
     TreeTemplate tree;  // parameters as configured; its seed is ignored
     double weight = 1.0;
+    // Which polygons it plants: "forest" (and a layout's meadows) or "orchard".
+    std::string cls{kForestClass};
+};
+
+inline constexpr std::string_view kOrchardClass = "orchard";
+inline constexpr std::string_view kMeadowClass = "meadow";
+
+// What planting a layout plan (`sylva forest --layout`) adds to a ground: "orchard" polygons
+// get rows of the orchard species (orchard.h), one species per polygon drawn by weight;
+// "meadow" polygons get solitary trees of the forest species at `meadow_density` trees per
+// hectare (0: none), at least 3 x spacing apart; "path" and other classes stay empty.
+struct LayoutPlanting {
+    OrchardSettings orchard;
+    double meadow_density = 0.0;
 };
 
 struct ForestSettings {
     Ground ground = rectangle_ground(100.0, 100.0);
     std::vector<Species> species;
-    std::size_t variants = 8;  // K unique variants per species
+    std::optional<LayoutPlanting> layout;  // none: only "forest" polygons are planted
+    std::size_t variants = 8;              // K unique variants per species
     std::uint64_t seed = 1;
     double spacing = 4.0;  // minimum distance between trunks, meters
     // At most one of these; neither: as dense as the spacing allows.
@@ -77,16 +93,21 @@ struct Placement {
     double yaw_degrees = 0.0;
     double scale = 1.0;
     double age = 1.0;
+    std::string cls{kForestClass};  // the class of the polygon it stands in
 };
 
 struct ForestPlan {
-    std::vector<Variant> variants;  // species by species, K each
+    // Species by species, K each; none for a species with nothing to plant (an orchard
+    // species without orchard polygons, forest species on a plan without forest or meadows).
+    std::vector<Variant> variants;
     std::vector<Placement> placements;
 };
 
-// Everything but the trees' geometry: fast and deterministic for the settings. Throws
-// InputError for no species, a weight that is not positive, bad spacing, density, tree
-// count or K, and an age the template cannot take.
+// Everything but the trees' geometry: fast and deterministic for the settings. Trees come
+// in this order: forest, orchard rows (polygon by polygon), meadow. --density and --trees
+// apply to the forest polygons only. Throws InputError for no species, a weight that is
+// not positive, bad spacing, density, tree count or K, an age the template cannot take, and
+// a ground with nothing to plant.
 ForestPlan plan_forest(const ForestSettings& settings);
 
 struct ForestTimes {
@@ -105,10 +126,11 @@ std::filesystem::path placements_csv_path(const std::filesystem::path& glb);
 std::filesystem::path placements_json_path(const std::filesystem::path& glb);
 
 // Plans, generates the variants and writes the scene `glb` and the placement lists, all or
-// nothing (core/file_set.h). CSV columns: index,species,variant,x,y,z,yaw_degrees,scale,age
-// (species: the template name, variant: its name). JSON: {"species": [{"name", "weight"}],
+// nothing (core/file_set.h). CSV columns:
+// index,species,variant,x,y,z,yaw_degrees,scale,age,class (species: the template name,
+// variant: its name, class: the polygon's). JSON: {"species": [{"name", "weight", "class"}],
 // "variants": [{"name", "species", "seed", "age", "triangles"}], "placements": [{"species",
-// "variant", "position": [x, y, z], "yaw_degrees", "scale", "age"}]}.
+// "variant", "position": [x, y, z], "yaw_degrees", "scale", "age", "class"}]}.
 // Throws InputError, IoError, Cancelled.
 ForestResult plant_forest(const ForestSettings& settings, const std::filesystem::path& glb);
 

@@ -10,9 +10,8 @@
 #include "core/errors.h"
 
 namespace sylva::forest {
-namespace {
 
-bool inside(const GroundPolygon& polygon, glm::dvec2 p) {
+bool contains(const GroundPolygon& polygon, glm::dvec2 p) {
     bool in = false;
     const auto& pts = polygon.points;
     for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
@@ -22,6 +21,8 @@ bool inside(const GroundPolygon& polygon, glm::dvec2 p) {
     }
     return in;
 }
+
+namespace {
 
 // Line and column of a byte offset, for JSON syntax errors.
 SourceLocation location_of(const std::string& text, std::size_t offset, const std::string& source) {
@@ -53,18 +54,18 @@ Ground rectangle_ground(double width, double depth) {
 bool plantable(const Ground& ground, glm::dvec2 p) {
     bool in_forest = false;
     for (const GroundPolygon& polygon : ground.polygons) {
-        if (polygon.points.size() < 3 || !inside(polygon, p)) continue;
+        if (polygon.points.size() < 3 || !contains(polygon, p)) continue;
         if (polygon.cls != kForestClass) return false;
         in_forest = true;
     }
     return in_forest;
 }
 
-GroundBounds forest_bounds(const Ground& ground) {
+GroundBounds forest_bounds(const Ground& ground, std::string_view cls) {
     glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     bool any = false;
     for (const GroundPolygon& polygon : ground.polygons) {
-        if (polygon.cls != kForestClass) continue;
+        if (polygon.cls != cls) continue;
         for (glm::dvec2 p : polygon.points) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
@@ -73,6 +74,11 @@ GroundBounds forest_bounds(const Ground& ground) {
     }
     if (!any) return {};
     return {lo, hi};
+}
+
+void scale_ground(Ground& ground, double scale) {
+    for (GroundPolygon& polygon : ground.polygons)
+        for (glm::dvec2& p : polygon.points) p *= scale;
 }
 
 Ground parse_ground_json(const std::string& text, const std::string& source) {

@@ -30,15 +30,22 @@ struct Ground {
 // A width x depth rectangle of forest centred on the origin.
 Ground rectangle_ground(double width, double depth);
 
+// Whether `p` lies inside the polygon (even-odd rule).
+bool contains(const GroundPolygon& polygon, glm::dvec2 p);
+
 // Whether a tree may stand at `p` (see above).
 bool plantable(const Ground& ground, glm::dvec2 p);
 
-// The box around every forest polygon: lo, hi. Both zero without forest polygons.
+// The box around every forest polygon (or every polygon of class `cls`): lo, hi. Both zero
+// without such polygons.
 struct GroundBounds {
     glm::dvec2 lo{0.0};
     glm::dvec2 hi{0.0};
 };
-GroundBounds forest_bounds(const Ground& ground);
+GroundBounds forest_bounds(const Ground& ground, std::string_view cls = kForestClass);
+
+// Every point multiplied by `scale` (a layout drawn in other units than meters).
+void scale_ground(Ground& ground, double scale);
 
 // `{"polygons": [{"points": [[x, y], ...], "class": "forest"}, ...]}`; "class" defaults to
 // "forest". Throws InputError naming `source`, the line and column of a JSON syntax error,

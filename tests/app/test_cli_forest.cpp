@@ -82,7 +82,7 @@ TEST_F(CliForest, ForestWritesSceneAndPlacements) {
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_TRUE(fs::exists(path("f.glb")));
     const std::string csv = slurp(path("f.placements.csv"));
-    EXPECT_EQ(csv.rfind("index,species,variant,x,y,z,yaw_degrees,scale,age\n", 0), 0u);
+    EXPECT_EQ(csv.rfind("index,species,variant,x,y,z,yaw_degrees,scale,age,class\n", 0), 0u);
     EXPECT_NE(csv.find(",pine,pine_v0,"), std::string::npos);
     EXPECT_TRUE(fs::exists(path("f.placements.json")));
     EXPECT_EQ(run("forest --area 30 -o " + path("g.glb")).code, 2);
@@ -91,6 +91,25 @@ TEST_F(CliForest, ForestWritesSceneAndPlacements) {
     const Result bad = run("forest --ground " + path("ground.json") + " -o " + path("g.glb"));
     EXPECT_EQ(bad.code, 3);
     EXPECT_NE(bad.output.find("polygons[0]"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(path("g.glb")));
+}
+
+TEST_F(CliForest, ForestPlantsALayoutPlan) {
+    const std::string plan = std::string(SYLVA_SOURCE_DIR) + "/tests/forest/data/farm_plan.json";
+    const Result r = run("forest --layout " + plan +
+                         " --layout-scale 3 --species spruce --orchard-species birch "
+                         "--variants 1 --budget 150 --row-spacing 5 -o " +
+                         path("farm.glb"));
+    ASSERT_EQ(r.code, 0) << r.output;
+    const std::string csv = slurp(path("farm.placements.csv"));
+    EXPECT_NE(csv.find(",spruce,spruce_v0,"), std::string::npos);
+    EXPECT_NE(csv.find(",birch,birch_orchard_v0,"), std::string::npos);
+    EXPECT_NE(csv.find(",orchard\n"), std::string::npos);
+    EXPECT_EQ(csv.find(",path\n"), std::string::npos);
+    EXPECT_EQ(csv.find(",meadow\n"), std::string::npos);
+    EXPECT_EQ(run("forest --layout-scale 3 -o " + path("g.glb")).code, 2);  // without --layout
+    EXPECT_EQ(run("forest --layout " + plan + " --layout-scale 0 -o " + path("g.glb")).code, 2);
+    EXPECT_EQ(run("forest --layout " + plan + " --tree-spacing -1 -o " + path("g.glb")).code, 3);
     EXPECT_FALSE(fs::exists(path("g.glb")));
 }
 

@@ -229,7 +229,7 @@ std::vector<std::vector<std::string>> csv_rows(const fs::path& path) {
     std::istringstream in(read(path));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "index,species,variant,x,y,z,yaw_degrees,scale,age");
+    EXPECT_EQ(line, "index,species,variant,x,y,z,yaw_degrees,scale,age,class");
     while (std::getline(in, line)) {
         std::vector<std::string> cells;
         std::istringstream cell_in(line);
