@@ -54,7 +54,7 @@ Many trees:
       polygon's "class"): forest as above; orchard: rows along each polygon's longest
       edge, --row-spacing M (default 6) apart, --tree-spacing M (default 4) in a row, at
       least --orchard-margin M (default 2) inside, of --orchard-species NAME[:WEIGHT],...
-      (default maple; one species per polygon); meadow: --meadow-density D solitary
+      (default oak; one species per polygon); meadow: --meadow-density D solitary
       trees per hectare (default 0) of the forest species; path: nothing. A layout's
       coordinates are its example's drawing units, taken as meters times --layout-scale
       (default 1; the shipped examples are drawn on a 10-unit plot grid, so 4 gives 40 m
@@ -229,9 +229,10 @@ int run_forest_command(int argc, char** argv) {
     flags.jitter = 0.2;  // trees side by side: more variety than a batch's default
     forest::ForestSettings settings;
     std::vector<std::pair<std::string, double>> species{{"oak", 1.0}};
-    // A fruit-tree stand-in: maple's short trunk under a dense round crown reads as an apple
-    // or plum tree; the other templates are tall (birch, pine) or forest-shaped (oak).
-    std::vector<std::pair<std::string, double>> orchard_species{{"maple", 1.0}};
+    // A fruit-tree stand-in: oak is about 5 m tall with a round crown 4-5 m across on a short
+    // stout trunk, an apple tree's size and shape, and fits 6 m x 4 m rows; maple is 8 m
+    // across and autumn-coloured, birch a slender 2 m column.
+    std::vector<std::pair<std::string, double>> orchard_species{{"oak", 1.0}};
     std::optional<double> layout_scale;
     forest::LayoutPlanting layout;
     auto species_list = [](const std::string& flag, const std::string& list) {

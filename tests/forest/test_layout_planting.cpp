@@ -67,7 +67,9 @@ double edge_distance(const GroundPolygon& polygon, glm::dvec2 p) {
 }
 
 // Distance of x / step from the nearest whole number, in units of step.
-double off_lattice(double x, double step) { return std::abs(x / step - std::round(x / step)); }
+double off_lattice(double x, double step) {
+    return std::abs(x / step - std::round(x / step));
+}
 
 TEST(LayoutPlanting, TheFarmPlanHasEveryClass) {
     std::map<std::string, int> classes;
@@ -110,7 +112,8 @@ TEST(LayoutPlanting, ForestAndOrchardTreesOnlyAndOrchardsInRows) {
         const GroundPolygon& polygon = s.ground.polygons[index];
         glm::dvec2 longest(0.0);
         for (std::size_t i = 0; i < polygon.points.size(); ++i) {
-            const glm::dvec2 e = polygon.points[(i + 1) % polygon.points.size()] - polygon.points[i];
+            const glm::dvec2 e =
+                polygon.points[(i + 1) % polygon.points.size()] - polygon.points[i];
             if (glm::length(e) > glm::length(longest) + 1e-9) longest = e;
         }
         const glm::dvec2 u = glm::normalize(longest), v(-u.y, u.x);
