@@ -47,7 +47,7 @@ Usage:
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
-  sylva forest   [--area WxD | --ground FILE] [--species A,B:2,...] -o FOREST.glb
+  sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
   sylva templates
   sylva layout   examples | derive EXAMPLE -o grammar.json |
                  generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/

@@ -2,7 +2,8 @@
 // generate a limited number of plants and spread them so nobody notices they repeat.
 //
 //  1. Where: Poisson disk points (poisson_disk.h) at least `spacing` apart over the forest
-//     polygons, thinned at random to a density or a tree count.
+//     polygons, thinned at random to a density or a tree count. A layout plan
+//     (LayoutPlanting) adds orchard rows (orchard.h) and solitary trees on meadows.
 //  2. Which species: one 2D fbm noise field per species (core/noise.h) plus a bias from its
 //     weight; each tree takes the species whose field is highest there, so like stands with
 //     like in patches about `stand_size` meters across, and the biases are tuned so each
