@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/forest_cli.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
@@ -45,6 +46,8 @@ Usage:
                  [--budget-leaves N] [--lod] [--mesher KIND] -o OUT.{obj,glb,ply}
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
+  sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
+  sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
   sylva templates
   sylva layout   examples | derive EXAMPLE -o grammar.json |
                  generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
@@ -252,6 +255,7 @@ void print_help(std::FILE* to) {
     for (const ParamInfo& p : param_infos())
         std::fprintf(to, "  %-17s %s (%g to %g)\n", std::string(p.key).c_str(),
                      std::string(p.help).c_str(), p.min, p.max);
+    print_forest_help(to);
 }
 
 void print_parts(const std::vector<NamedMesh>& parts, const char* indent) {
@@ -354,6 +358,9 @@ int run_skeleton(const Options& o) {
 }
 
 int run(int argc, char** argv) {
+    // The many-tree commands parse their own flags (app/forest_cli.h).
+    if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
+    if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);
 #ifdef SYLVA_HAS_LAYOUT
     // `sylva layout ...` (layout/layout_cli.h) parses its own arguments.
     if (argc >= 2 && std::string(argv[1]) == "layout")

@@ -21,6 +21,7 @@
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
 #include "ui/studio_state.h"
+#include "ui/variants_strip.h"
 #include "ui/wind_view.h"
 
 #define GLFW_INCLUDE_NONE
@@ -398,6 +399,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
     state.view.wind = options.wind_seconds.has_value();
     start_generation(state);
+    VariantsStrip strip;  // ui/variants_strip.h
+    if (options.variants > 0) {
+        strip.open = true;
+        strip.count = options.variants;
+        start_variants(strip, state.tree_template);
+    }
 
     int frames_with_tree = 0;
     bool swaying = false;  // the viewport holds swayed parts
@@ -460,6 +467,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             swaying = false;
         }
         update_colonization(viewport, state, false);
+        update_variants_strip(strip);
         if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
             state.frame_requested = false;
@@ -473,6 +481,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_tree_panel(state, layout);
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());
+        draw_variants_strip(strip, state, layout);
 #ifdef SYLVA_HAS_LAYOUT
         draw_layout_panel(layout_panel, layout.width, layout.height);
 #endif
@@ -511,7 +520,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
 
         if (options.screenshot_path && state.tree && !generation_running(state) &&
-            ++frames_with_tree == options.screenshot_frames) {
+            !variants_running(strip) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
             break;
         }
@@ -519,6 +528,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
+    release_variants_strip(strip);
     cancel_generations(state);
     return 0;
 }

@@ -47,6 +47,14 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--replay takes a growth step of at least 0, got '" +
                                  std::string(text) + "'");
             options.replay_iteration = step;
+        } else if (arg == "--variants") {
+            std::string_view text = value();
+            int count = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
+            if (error != std::errc() || end != text.data() + text.size() || count < 1 || count > 12)
+                throw UsageError("--variants takes a count from 1 to 12, got '" +
+                                 std::string(text) + "'");
+            options.variants = count;
         } else if (arg == "--layout") {
             const std::string_view name = value();
             if (name.empty()) throw UsageError("--layout needs an example name");
@@ -82,7 +90,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 std::string studio_usage() {
     return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
            "[--points]\n"
-           "                    [--replay STEP] [--layout EXAMPLE] [--wind SECONDS]\n"
+           "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
+           "SECONDS]\n"
            "                    [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
@@ -95,6 +104,7 @@ std::string studio_usage() {
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
+           "  --variants N       open the Variants strip with N (1-12) seeds of the template\n"
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
            "                     examples lists them)\n"
            "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"

@@ -19,6 +19,8 @@ struct StudioOptions {
     bool envelope = true;
     bool points = false;
     std::optional<int> replay_iteration;
+    // The Variants strip opened with this many seeds of the template (0: closed).
+    int variants = 0;
     std::optional<std::string> layout_example;  // open the layout panel on this example
     // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
     std::optional<float> wind_seconds;

@@ -72,5 +72,12 @@ TEST(StudioOptions, RejectsMistakesWithAUsageError) {
     EXPECT_THROW(parse({"--bogus"}), UsageError);
 }
 
+TEST(StudioOptions, VariantsStripCount) {
+    EXPECT_EQ(parse({}).variants, 0);
+    EXPECT_EQ(parse({"--variants", "6"}).variants, 6);
+    for (const char* bad : {"0", "13", "x", "-1"})
+        EXPECT_THROW(parse({"--variants", bad}), UsageError) << bad;
+}
+
 }  // namespace
 }  // namespace sylva::studio

@@ -1,0 +1,368 @@
+#include "app/forest_cli.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "export/export.h"
+#include "forest/batch.h"
+#include "forest/forest.h"
+#include "forest/species_file.h"
+#include "tree/cost.h"
+#include "tree/template_library.h"
+
+namespace sylva {
+namespace {
+
+constexpr int kOk = 0, kUsage = 2;
+
+constexpr const char* kForestHelp = R"(
+Many trees:
+  sylva batch  -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N]
+               [--set KEY=VALUE]... [--budget N] [--lod] [--format glb|obj|ply] -o DIR/
+      N variants of one template: variant i is seeded with the i-th splitmix64 number of
+      S (default 1) and, with --jitter J (0 to 1, default 0.1), has branch_length,
+      branch_width, angles, tapers, crown, leaf and envelope sizes scaled by up to
+      +-J (within their ranges). Writes DIR/<template>_<i>.<ext> and DIR/manifest.json
+      (file, seed, jittered parameters, triangles per item). --shard I/N writes only the
+      items whose index modulo N is I-1, and manifest_<I>of<N>.json: run 1/N..N/N on any
+      machines (GNU parallel, a Slurm array) and their files together are the whole batch.
+      A shard is written all or nothing.
+  sylva forest [--area WxD | --ground FILE.json | --layout FILE.json]
+               [--species NAME[:WEIGHT],... | --species-file FILE.json]
+               [--variants K] [--spacing M] [--density D | --trees N] [--seed S]
+               [--stand-size M] [--jitter J (default 0.2)] [--min-age A] [--scale-jitter S]
+               [--instancing nodes|gpu] [--budget N] [--lod] -o FOREST.glb
+      Plants a ground: a W x D meter rectangle (default 100x100) or the "forest" polygons
+      of a JSON file {"polygons": [{"points": [[x, y], ...], "class": "forest"}]} (other
+      classes are holes). Trees stand at least --spacing apart (default 4 m, Poisson disk),
+      thinned to --density trees per hectare or --trees N; species (default oak; a file:
+      {"species": [{"template": "oak", "weight": 2, "set": {"age": 0.8}}]}) grow in
+      stands about --stand-size meters across (default 40) by 2D noise, in proportion to
+      their weights. Each species has K (default 8) unique variants, reused turned, scaled
+      by 1 +- S (default 0.15) and aged from A (default 0.6) to 1 times the template's
+      age. Writes FOREST.glb (meshes stored once: nodes sharing meshes, or with
+      --instancing gpu EXT_mesh_gpu_instancing), FOREST.placements.csv and .json.
+      --layout FILE.json plants a plan from `sylva layout generate` (same form, each
+      polygon's "class"): forest as above; orchard: rows along each polygon's longest
+      edge, --row-spacing M (default 6) apart, --tree-spacing M (default 4) in a row, at
+      least --orchard-margin M (default 2) inside, of --orchard-species NAME[:WEIGHT],...
+      (default oak; one species per polygon); meadow: --meadow-density D solitary
+      trees per hectare (default 0) of the forest species; path: nothing. A layout's
+      coordinates are its example's drawing units, taken as meters times --layout-scale
+      (default 1; the shipped examples are drawn on a 10-unit plot grid, so 4 gives 40 m
+      plots). The placement lists give each tree's class.
+)";
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+template <class T>
+T parse_number(const std::string& flag, const std::string& text) {
+    T value{};
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || text.empty())
+        throw UsageError(flag + " expects a number, not '" + text + "'");
+    if constexpr (std::is_floating_point_v<T>)
+        if (!std::isfinite(value)) throw UsageError(flag + " expects a finite number");
+    return value;
+}
+
+// The flags every many-tree command shares with `export`.
+struct TreeFlags {
+    std::vector<std::pair<std::string, std::string>> sets;
+    std::optional<std::size_t> budget, budget_leaves;
+    bool lod = false;
+    const ExportFormat* format = nullptr;
+    ExportOptions export_options;
+    CostLimits limits;
+    std::string output;
+    std::uint64_t seed = 1;
+    double jitter = 0.1;
+
+    // True when `arg` was one of them.
+    bool parse(const std::string& arg, const std::function<std::string()>& value) {
+        if (arg == "--set") {
+            const std::string kv = value();
+            const std::size_t eq = kv.find('=');
+            if (eq == std::string::npos)
+                throw UsageError("--set expects KEY=VALUE, not '" + kv + "'");
+            sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+        } else if (arg == "--seed") {
+            seed = parse_number<std::uint64_t>(arg, value());
+        } else if (arg == "--jitter") {
+            jitter = parse_number<double>(arg, value());
+            if (!(jitter >= 0.0 && jitter <= 1.0)) throw UsageError("--jitter must be 0 to 1");
+        } else if (arg == "--budget") {
+            budget = parse_number<std::size_t>(arg, value());
+        } else if (arg == "--budget-leaves") {
+            budget_leaves = parse_number<std::size_t>(arg, value());
+        } else if (arg == "--lod") {
+            lod = true;
+        } else if (arg == "--format") {
+            const std::string name = value();
+            format = format_from_name(name);
+            if (!format) throw UsageError("--format expects obj, glb or ply, not '" + name + "'");
+        } else if (arg == "--shading") {
+            const std::string name = value();
+            if (name != "flat" && name != "smooth")
+                throw UsageError("--shading expects flat or smooth, not '" + name + "'");
+            export_options.shading = name == "flat" ? Shading::Flat : Shading::Smooth;
+        } else if (arg == "--max-memory") {
+            limits.max_bytes = 1e6 * static_cast<double>(parse_number<std::uint64_t>(arg, value()));
+        } else if (arg == "--max-seconds") {
+            limits.max_seconds = static_cast<double>(parse_number<std::uint64_t>(arg, value()));
+        } else if (arg == "-o" || arg == "--output") {
+            output = value();
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    TreeTemplate configured(const std::string& name) const {
+        TreeTemplate tree = load_template(name);
+        for (const auto& [key, text] : sets) set_param(tree.params, key, text);
+        return tree;
+    }
+
+    FinishSettings finish(const TreeTemplate& tree) const {
+        FinishSettings f;
+        f.budget.total = budget ? *budget : static_cast<std::size_t>(tree.params.triangle_budget);
+        f.budget.leaves = budget_leaves;
+        f.lod = lod;
+        return f;
+    }
+
+    void check(const TreeTemplate& tree, const FinishSettings& f) const {
+        check_cost(estimate_cost(tree, game_budget(f)), limits,
+                   "raise the limits with --max-memory MB / --max-seconds S");
+    }
+};
+
+// Runs `parse` over argv[2..], turning usage errors into exit code 2.
+int with_flags(
+    int argc, char** argv,
+    const std::function<bool(const std::string&, const std::function<std::string()>&)>& parse,
+    const std::function<int()>& run) {
+    try {
+        for (int i = 2; i < argc; ++i) {
+            const std::string arg = argv[i];
+            auto value = [&]() -> std::string {
+                if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+                return argv[++i];
+            };
+            if (!parse(arg, value)) throw UsageError("unknown option '" + arg + "'");
+        }
+        return run();
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "sylva: %s\n(see sylva --help)\n", e.what());
+        return kUsage;
+    }
+}
+
+}  // namespace
+
+void print_forest_help(std::FILE* to) {
+    std::fputs(kForestHelp, to);
+}
+
+int run_batch_command(int argc, char** argv) {
+    TreeFlags flags;
+    std::string tree_name = "default";
+    std::optional<std::size_t> count;
+    Shard shard;
+    auto parse = [&](const std::string& arg, const std::function<std::string()>& value) {
+        if (flags.parse(arg, value)) return true;
+        if (arg == "-t" || arg == "--template") {
+            tree_name = value();
+        } else if (arg == "--count") {
+            count = parse_number<std::size_t>(arg, value());
+            if (*count == 0) throw UsageError("--count must be at least 1");
+        } else if (arg == "--shard") {
+            const std::string text = value();
+            try {
+                shard = parse_shard(text);
+            } catch (const InputError& e) {
+                throw UsageError(e.what());
+            }
+        } else {
+            return false;
+        }
+        return true;
+    };
+    return with_flags(argc, argv, parse, [&] {
+        if (!count) throw UsageError("batch needs --count N");
+        if (flags.output.empty()) throw UsageError("batch needs -o DIR/");
+        BatchSettings settings;
+        settings.tree = flags.configured(tree_name);
+        settings.count = *count;
+        settings.seed = flags.seed;
+        settings.jitter = flags.jitter;
+        settings.finish = flags.finish(settings.tree);
+        flags.check(settings.tree, settings.finish);
+        settings.format = flags.format;
+        settings.export_options = flags.export_options;
+        settings.shard = shard;
+        settings.progress = [](std::size_t done, std::size_t total, const std::string& file) {
+            std::fprintf(stderr, "batch: %zu/%zu %s\n", done, total, file.c_str());
+        };
+        const BatchResult result = run_batch(settings, flags.output);
+        std::size_t triangles = 0;
+        for (const BatchItem& item : result.items) triangles += item.triangles;
+        std::printf("wrote %zu trees (%zu triangles) and %s to %s\n", result.items.size(),
+                    triangles, manifest_file_name(shard).c_str(), flags.output.c_str());
+        return kOk;
+    });
+}
+
+int run_forest_command(int argc, char** argv) {
+    TreeFlags flags;
+    flags.jitter = 0.2;  // trees side by side: more variety than a batch's default
+    forest::ForestSettings settings;
+    std::vector<std::pair<std::string, double>> species{{"oak", 1.0}};
+    // A fruit-tree stand-in: oak is about 5 m tall with a round crown 4-5 m across on a short
+    // stout trunk, an apple tree's size and shape, and fits 6 m x 4 m rows; maple is 8 m
+    // across and autumn-coloured, birch a slender 2 m column.
+    std::vector<std::pair<std::string, double>> orchard_species{{"oak", 1.0}};
+    std::optional<double> layout_scale;
+    forest::LayoutPlanting layout;
+    auto species_list = [](const std::string& flag, const std::string& list) {
+        std::vector<std::pair<std::string, double>> out;
+        std::size_t start = 0;
+        while (start <= list.size()) {
+            const std::size_t comma = std::min(list.find(',', start), list.size());
+            std::string item = list.substr(start, comma - start);
+            double weight = 1.0;
+            const std::size_t colon = item.rfind(':');
+            if (colon != std::string::npos) {
+                weight = parse_number<double>(flag + " weight", item.substr(colon + 1));
+                item.resize(colon);
+            }
+            if (item.empty()) throw UsageError(flag + " expects NAME[:WEIGHT],...");
+            out.emplace_back(item, weight);
+            start = comma + 1;
+        }
+        return out;
+    };
+    std::string species_file;
+    std::string instancing = "nodes";
+    auto parse = [&](const std::string& arg, const std::function<std::string()>& value) {
+        if (flags.parse(arg, value)) return true;
+        if (arg == "--area") {
+            const std::string text = value();
+            const std::size_t x = text.find('x');
+            if (x == std::string::npos)
+                throw UsageError("--area expects WxD in meters, not '" + text + "'");
+            const double w = parse_number<double>(arg, text.substr(0, x));
+            const double d = parse_number<double>(arg, text.substr(x + 1));
+            if (!(w > 0 && d > 0)) throw UsageError("--area expects positive sizes");
+            settings.ground = forest::rectangle_ground(w, d);
+        } else if (arg == "--ground") {
+            settings.ground = forest::load_ground(value());
+        } else if (arg == "--layout") {
+            settings.ground = forest::load_ground(value());
+            settings.layout = layout;
+        } else if (arg == "--layout-scale") {
+            layout_scale = parse_number<double>(arg, value());
+            if (!(*layout_scale > 0.0 && std::isfinite(*layout_scale)))
+                throw UsageError("--layout-scale must be a positive number of meters per unit");
+        } else if (arg == "--orchard-species") {
+            orchard_species = species_list(arg, value());
+        } else if (arg == "--row-spacing") {
+            layout.orchard.row_spacing = parse_number<double>(arg, value());
+        } else if (arg == "--tree-spacing") {
+            layout.orchard.tree_spacing = parse_number<double>(arg, value());
+        } else if (arg == "--orchard-margin") {
+            layout.orchard.margin = parse_number<double>(arg, value());
+        } else if (arg == "--meadow-density") {
+            layout.meadow_density = parse_number<double>(arg, value());
+        } else if (arg == "--species") {
+            species = species_list(arg, value());
+        } else if (arg == "--species-file") {
+            species_file = value();
+        } else if (arg == "--variants") {
+            settings.variants = parse_number<std::size_t>(arg, value());
+        } else if (arg == "--spacing") {
+            settings.spacing = parse_number<double>(arg, value());
+        } else if (arg == "--density") {
+            settings.density = parse_number<double>(arg, value());
+        } else if (arg == "--trees") {
+            settings.trees = parse_number<std::size_t>(arg, value());
+        } else if (arg == "--stand-size") {
+            settings.stand_size = parse_number<double>(arg, value());
+        } else if (arg == "--min-age") {
+            settings.min_age = parse_number<double>(arg, value());
+        } else if (arg == "--scale-jitter") {
+            settings.scale_jitter = parse_number<double>(arg, value());
+        } else if (arg == "--instancing") {
+            instancing = value();
+            if (instancing != "nodes" && instancing != "gpu")
+                throw UsageError("--instancing expects nodes or gpu, not '" + instancing + "'");
+        } else {
+            return false;
+        }
+        return true;
+    };
+    return with_flags(argc, argv, parse, [&] {
+        if (flags.output.empty()) throw UsageError("forest needs -o FOREST.glb");
+        if (flags.format && flags.format->name != "glb")
+            throw UsageError("forest writes a .glb scene; --format must be glb");
+        if (!species_file.empty()) {
+            settings.species = forest::load_species(species_file);
+            for (forest::Species& sp : settings.species)
+                for (const auto& [key, text] : flags.sets) set_param(sp.tree.params, key, text);
+        } else {
+            for (const auto& [name, weight] : species)
+                settings.species.push_back({flags.configured(name), weight});
+        }
+        if (settings.layout) {
+            settings.layout = layout;  // the orchard and meadow flags, wherever they stood
+            if (layout_scale) forest::scale_ground(settings.ground, *layout_scale);
+            for (const auto& [name, weight] : orchard_species)
+                settings.species.push_back(
+                    {flags.configured(name), weight, std::string(forest::kOrchardClass)});
+        } else if (layout_scale) {
+            throw UsageError("--layout-scale only applies with --layout");
+        }
+        for (const forest::Species& sp : settings.species) {
+            settings.finish = flags.finish(sp.tree);
+            flags.check(sp.tree, settings.finish);
+        }
+        settings.seed = flags.seed;
+        settings.jitter = flags.jitter;
+        settings.export_options = flags.export_options;
+        settings.instancing =
+            instancing == "gpu" ? forest::Instancing::Gpu : forest::Instancing::Nodes;
+        settings.progress = [](std::size_t done, std::size_t total) {
+            std::fprintf(stderr, "forest: variant %zu/%zu\n", done, total);
+        };
+        const forest::ForestResult result = forest::plant_forest(settings, flags.output);
+        for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
+        std::vector<std::size_t> per_species(settings.species.size(), 0);
+        for (const forest::Placement& p : result.plan.placements) ++per_species[p.species];
+        std::printf("  %zu trees:", result.plan.placements.size());
+        for (std::size_t s = 0; s < per_species.size(); ++s)
+            std::printf("%s %s%s %zu", s ? "," : "", settings.species[s].tree.name.c_str(),
+                        settings.species[s].cls == forest::kOrchardClass ? " (orchard)" : "",
+                        per_species[s]);
+        std::printf(
+            "\n  %zu unique variants; time: plan %.0f ms, variants %.0f ms, write %.0f ms\n",
+            result.plan.variants.size(), result.times.plan_ms, result.times.variants_ms,
+            result.times.write_ms);
+        if (settings.trees && result.plan.placements.size() < *settings.trees)
+            std::printf("  note: a spacing of %g m fits only %zu of the %zu trees asked for\n",
+                        settings.spacing, result.plan.placements.size(), *settings.trees);
+        return kOk;
+    });
+}
+
+}  // namespace sylva

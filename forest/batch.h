@@ -1,0 +1,81 @@
+// `sylva batch`: N variants of one template (variation.h), written as N files plus a JSON
+// manifest. A batch can be cut into shards (`--shard I/N`) that machines run apart: shard I
+// writes the items whose index modulo N is I - 1, byte for byte as the whole batch writes
+// them, and a manifest of its own items (manifest_file_name()).
+//
+// All or nothing per shard: the trees are generated first (in parallel, oneTBB) and kept in
+// memory, then every file of the shard is staged and moved into place in one FileSet under
+// a SignalDeferral, so SIGINT/SIGTERM (core/signal_cleanup.h) leave either no new file or
+// the whole shard.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/cancel.h"
+#include "core/tree_template.h"
+#include "export/export_tree.h"
+#include "tree/pipeline.h"
+
+namespace sylva {
+
+// Shard `index` (0-based) of `count`.
+struct Shard {
+    std::size_t index = 0;
+    std::size_t count = 1;
+};
+
+// "I/N" with 1 <= I <= N, as --shard takes it. Throws InputError naming the text.
+Shard parse_shard(const std::string& text);
+
+struct BatchSettings {
+    TreeTemplate tree;  // parameters as configured (--set); its seed is ignored
+    std::size_t count = 1;
+    std::uint64_t seed = 1;                // the batch's base seed (variation.h)
+    double jitter = 0.1;                   // varied_params(); 0: only the seed differs
+    FinishSettings finish;                 // budget, LOD
+    MeshOptions mesh;                      // its budget is set from `finish`
+    const ExportFormat* format = nullptr;  // null: glb
+    ExportOptions export_options;
+    Shard shard;
+    // Called after each tree is generated (from the calling thread): items done, items in
+    // this shard, and the file name.
+    std::function<void(std::size_t, std::size_t, const std::string&)> progress;
+    CancelFlag cancel = nullptr;
+};
+
+// One variant: its index in the whole batch, file name (in the output folder), seed and
+// parameters, and the triangles written (every part of the finest level).
+struct BatchItem {
+    std::size_t index = 0;
+    std::string file;
+    std::uint64_t seed = 0;
+    TreeParams params;
+    std::size_t triangles = 0;
+};
+
+// The items of the settings' shard, in index order, triangles still 0. File names are
+// `<template>_<index>` with the index zero-padded to the width of count - 1 (at least 4).
+// Throws InputError for a count of 0 or a bad jitter.
+std::vector<BatchItem> plan_batch(const BatchSettings& settings);
+
+// `manifest.json`, or `manifest_<I>of<N>.json` for a shard of more than one.
+std::string manifest_file_name(const Shard& shard);
+
+struct BatchResult {
+    std::vector<BatchItem> items;
+    std::vector<std::filesystem::path> files;  // every file written, the manifest last
+};
+
+// Generates the shard's trees and writes them and the manifest into `dir` (created when
+// missing). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N], "format",
+// "jittered": [keys], "items": [{"index", "file", "seed", "parameters": {key: value},
+// "triangles"}]}, where "parameters" are the jittered keys' values (with the template and
+// `--set` they reproduce the tree: `sylva export -t T --seed SEED --set KEY=VALUE...`).
+// Throws InputError, IoError, Cancelled; on any of them no file is left.
+BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path& dir);
+
+}  // namespace sylva

@@ -1,0 +1,71 @@
+#include "forest/species_file.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/errors.h"
+#include "tree/template_library.h"
+
+namespace sylva::forest {
+
+std::vector<Species> parse_species_json(const std::string& text, const std::string& source) {
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        SourceLocation where{source, 1, 1};
+        for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+            if (text[i] == '\n') {
+                ++where.line;
+                where.column = 1;
+            } else {
+                ++where.column;
+            }
+        }
+        throw InputError(std::string("invalid JSON: ") + e.what(), where);
+    }
+    if (!doc.is_object() || !doc.contains("species") || !doc["species"].is_array() ||
+        doc["species"].empty())
+        throw InputError(source + ": expected an object with a non-empty \"species\" array");
+    std::vector<Species> species;
+    for (std::size_t i = 0; i < doc["species"].size(); ++i) {
+        const auto& entry = doc["species"][i];
+        const std::string at = source + ": species[" + std::to_string(i) + "]";
+        if (!entry.is_object() || !entry.contains("template") || !entry["template"].is_string())
+            throw InputError(at + " needs a \"template\" (a name or a file)");
+        Species sp{load_template(entry["template"].get<std::string>()), 1.0};
+        if (entry.contains("weight")) {
+            if (!entry["weight"].is_number()) throw InputError(at + ".weight must be a number");
+            sp.weight = entry["weight"].get<double>();
+        }
+        if (entry.contains("set")) {
+            if (!entry["set"].is_object())
+                throw InputError(at + ".set must be an object of parameter values");
+            for (const auto& [key, value] : entry["set"].items()) {
+                try {
+                    if (value.is_number())
+                        set_param(sp.tree.params, key, value.get<double>());
+                    else if (value.is_string())
+                        set_param(sp.tree.params, key, value.get<std::string>());
+                    else
+                        throw InputError("must be a number or a choice's name");
+                } catch (const InputError& e) {
+                    throw InputError(at + ".set." + key + ": " + e.what());
+                }
+            }
+        }
+        species.push_back(std::move(sp));
+    }
+    return species;
+}
+
+std::vector<Species> load_species(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError("cannot read '" + path.string() + "'", path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_species_json(text.str(), path.string());
+}
+
+}  // namespace sylva::forest

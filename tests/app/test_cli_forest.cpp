@@ -1,0 +1,139 @@
+// `sylva batch` and `sylva forest` as scripts see them: exit codes, files, shards, and an
+// interrupted batch leaving nothing.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int code = -1;
+    std::string output;
+};
+
+Result run(const std::string& args) {
+    const std::string command = std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
+    Result r;
+    FILE* pipe = popen(command.c_str(), "r");
+    char buffer[4096];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
+    const int status = pclose(pipe);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class CliForest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("sylva_cli_forest_" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+TEST_F(CliForest, BatchUsageErrors) {
+    EXPECT_EQ(run("batch -t spruce -o " + path("b")).code, 2);  // no --count
+    EXPECT_EQ(run("batch -t spruce --count 2").code, 2);        // no -o
+    EXPECT_EQ(run("batch -t spruce --count 2 --shard 5/4 -o " + path("b")).code, 2);
+    EXPECT_EQ(run("batch -t spruce --count 2 --jitter 2 -o " + path("b")).code, 2);
+    EXPECT_EQ(run("batch -t spruce --count 2 --bogus -o " + path("b")).code, 2);
+    EXPECT_EQ(run("batch -t nosuchtree --count 2 -o " + path("b")).code, 3);
+    EXPECT_FALSE(fs::exists(path("b")));
+}
+
+TEST_F(CliForest, BatchShardWritesItsShare) {
+    const Result r =
+        run("batch -t spruce --count 5 --budget 150 --shard 2/2 --format obj -o " + path("b"));
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("batch: 2/2 spruce_0003.obj"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(path("b/spruce_0001.obj")));
+    EXPECT_TRUE(fs::exists(path("b/spruce_0001.mtl")));
+    EXPECT_TRUE(fs::exists(path("b/spruce_0003.obj")));
+    EXPECT_FALSE(fs::exists(path("b/spruce_0000.obj")));
+    EXPECT_NE(slurp(path("b/manifest_2of2.json")).find("\"spruce_0003.obj\""), std::string::npos);
+}
+
+TEST_F(CliForest, ForestWritesSceneAndPlacements) {
+    const Result r =
+        run("forest --area 30x20 --species spruce,pine:2 --variants 1 --budget 150 "
+            "--spacing 4 -o " +
+            path("f.glb"));
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(path("f.glb")));
+    const std::string csv = slurp(path("f.placements.csv"));
+    EXPECT_EQ(csv.rfind("index,species,variant,x,y,z,yaw_degrees,scale,age,class\n", 0), 0u);
+    EXPECT_NE(csv.find(",pine,pine_v0,"), std::string::npos);
+    EXPECT_TRUE(fs::exists(path("f.placements.json")));
+    EXPECT_EQ(run("forest --area 30 -o " + path("g.glb")).code, 2);
+    EXPECT_EQ(run("forest --species spruce:0 -o " + path("g.glb")).code, 3);
+    { std::ofstream(path("ground.json")) << "{\"polygons\": [\n  {\"points\": 3}\n]}"; }
+    const Result bad = run("forest --ground " + path("ground.json") + " -o " + path("g.glb"));
+    EXPECT_EQ(bad.code, 3);
+    EXPECT_NE(bad.output.find("polygons[0]"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(path("g.glb")));
+}
+
+TEST_F(CliForest, ForestPlantsALayoutPlan) {
+    const std::string plan = std::string(SYLVA_SOURCE_DIR) + "/tests/forest/data/farm_plan.json";
+    const Result r = run("forest --layout " + plan +
+                         " --layout-scale 3 --species spruce --orchard-species birch "
+                         "--variants 1 --budget 150 --row-spacing 5 -o " +
+                         path("farm.glb"));
+    ASSERT_EQ(r.code, 0) << r.output;
+    const std::string csv = slurp(path("farm.placements.csv"));
+    EXPECT_NE(csv.find(",spruce,spruce_v0,"), std::string::npos);
+    EXPECT_NE(csv.find(",birch,birch_orchard_v0,"), std::string::npos);
+    EXPECT_NE(csv.find(",orchard\n"), std::string::npos);
+    EXPECT_EQ(csv.find(",path\n"), std::string::npos);
+    EXPECT_EQ(csv.find(",meadow\n"), std::string::npos);
+    EXPECT_EQ(run("forest --layout-scale 3 -o " + path("g.glb")).code, 2);  // without --layout
+    EXPECT_EQ(run("forest --layout " + plan + " --layout-scale 0 -o " + path("g.glb")).code, 2);
+    EXPECT_EQ(run("forest --layout " + plan + " --tree-spacing -1 -o " + path("g.glb")).code, 3);
+    EXPECT_FALSE(fs::exists(path("g.glb")));
+}
+
+// The trees are generated before any file is staged: a SIGINT then leaves no file at all,
+// and the process still dies by the signal.
+TEST_F(CliForest, AnInterruptedBatchLeavesNothing) {
+    const std::string binary = std::string(SYLVA_BINARY_DIR) + "/app/sylva";
+    const std::string out = path("b");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        std::freopen("/dev/null", "w", stdout);
+        ::execl(binary.c_str(), binary.c_str(), "batch", "-t", "oak", "--count", "40", "-o",
+                out.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    ::kill(child, SIGINT);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
+    EXPECT_EQ(WTERMSIG(status), SIGINT);
+    EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
+}  // namespace

@@ -1,0 +1,148 @@
+// sylva batch: variants that differ, a manifest that describes them, shards that add up to
+// the whole batch byte for byte, and the same bytes for the same seed.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/errors.h"
+#include "core/random.h"
+#include "forest/batch.h"
+#include "forest/variation.h"
+#include "tree/template_library.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace sylva;
+
+std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::map<std::string, std::string> files_in(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::directory_iterator(dir))
+        files[entry.path().filename().string()] = read(entry.path());
+    return files;
+}
+
+// A small, fast batch: the spruce at a low budget.
+BatchSettings small_batch(std::size_t count) {
+    BatchSettings s;
+    s.tree = load_template("spruce");
+    s.count = count;
+    s.seed = 7;
+    s.jitter = 0.2;
+    s.finish.budget.total = 200;
+    return s;
+}
+
+class Batch : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("sylva_batch_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST(Variation, SeedsAreSplitmixOutputsAndDistinct) {
+    Random r(42);
+    for (std::uint64_t i = 0; i < 5; ++i) EXPECT_EQ(variant_seed(42, i), r.next());
+    EXPECT_NE(variant_seed(42, 0), variant_seed(43, 0));
+}
+
+TEST(Variation, JitterStaysInRangeAndVaries) {
+    const TreeParams base = load_template("oak").params;
+    const TreeParams a = varied_params(base, 1, 0.3), b = varied_params(base, 2, 0.3);
+    bool differs = false;
+    for (const ParamInfo& info : param_infos()) {
+        const double value = *get_param(a, info.key);
+        EXPECT_GE(value, info.min) << info.key;
+        EXPECT_LE(value, info.max) << info.key;
+        differs |= value != *get_param(b, info.key);
+    }
+    EXPECT_TRUE(differs);
+    EXPECT_EQ(varied_params(base, 1, 0.3).branch_length, a.branch_length);  // deterministic
+    EXPECT_EQ(varied_params(base, 5, 0.0).branch_length, base.branch_length);
+    EXPECT_THROW(varied_params(base, 1, 1.5), InputError);
+}
+
+TEST(Variation, ParseShard) {
+    EXPECT_EQ(parse_shard("2/4").index, 1u);
+    EXPECT_EQ(parse_shard("2/4").count, 4u);
+    for (const char* bad : {"0/4", "5/4", "1", "a/b", "1/0", "/3", "2/"})
+        EXPECT_THROW(parse_shard(bad), InputError) << bad;
+}
+
+TEST_F(Batch, WritesDistinctVariantsAndAManifest) {
+    const BatchResult result = run_batch(small_batch(3), dir_);
+    ASSERT_EQ(result.items.size(), 3u);
+    const auto files = files_in(dir_);
+    ASSERT_EQ(files.size(), 4u);  // 3 trees + manifest
+    EXPECT_NE(files.at("spruce_0000.glb"), files.at("spruce_0001.glb"));
+    EXPECT_NE(files.at("spruce_0001.glb"), files.at("spruce_0002.glb"));
+    const nlohmann::json manifest = nlohmann::json::parse(files.at("manifest.json"));
+    ASSERT_EQ(manifest["items"].size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto& item = manifest["items"][i];
+        EXPECT_EQ(item["index"], i);
+        EXPECT_EQ(item["seed"].get<std::uint64_t>(), variant_seed(7, i));
+        EXPECT_TRUE(files.count(item["file"].get<std::string>()));
+        EXPECT_GT(item["triangles"].get<std::size_t>(), 100u);
+        EXPECT_EQ(item["parameters"]["branch_length"].get<double>(),
+                  result.items[i].params.branch_length);
+    }
+}
+
+TEST_F(Batch, SameSeedSameBytes) {
+    run_batch(small_batch(2), dir_ / "a");
+    run_batch(small_batch(2), dir_ / "b");
+    EXPECT_EQ(files_in(dir_ / "a"), files_in(dir_ / "b"));
+}
+
+// The union of shards 1/4..4/4 is the unsharded batch: same tree files, byte for byte, and
+// the shard manifests' items are the whole manifest's items.
+TEST_F(Batch, FourShardsMakeTheWholeBatch) {
+    const std::size_t count = 6;
+    run_batch(small_batch(count), dir_ / "whole");
+    std::map<std::string, std::string> shards;
+    nlohmann::json items = nlohmann::json::array();
+    for (std::size_t i = 0; i < 4; ++i) {
+        BatchSettings s = small_batch(count);
+        s.shard = {i, 4};
+        run_batch(s, dir_ / "shards");
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        const nlohmann::json m =
+            nlohmann::json::parse(read(dir_ / "shards" / manifest_file_name({i, 4})));
+        for (const auto& item : m["items"]) items.push_back(item);
+        fs::remove(dir_ / "shards" / manifest_file_name({i, 4}));
+    }
+    auto whole = files_in(dir_ / "whole");
+    const nlohmann::json manifest = nlohmann::json::parse(whole.at("manifest.json"));
+    whole.erase("manifest.json");
+    EXPECT_EQ(files_in(dir_ / "shards"), whole);
+    std::sort(items.begin(), items.end(),
+              [](const auto& a, const auto& b) { return a["index"] < b["index"]; });
+    EXPECT_EQ(items, manifest["items"]);
+}
+
+TEST_F(Batch, AFailedBatchLeavesNoFile) {
+    fs::create_directories(dir_);
+    fs::create_directories(dir_ / "spruce_0001.glb");  // a directory where a tree goes
+    EXPECT_THROW(run_batch(small_batch(3), dir_), IoError);
+    EXPECT_FALSE(fs::exists(dir_ / "spruce_0000.glb"));
+    EXPECT_FALSE(fs::exists(dir_ / "manifest.json"));
+}
+
+}  // namespace

@@ -1,0 +1,184 @@
+#include "ui/variants_strip.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <glm/common.hpp>
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+
+#include "core/cancel.h"
+#include "core/color_variation.h"
+#include "forest/variation.h"
+#include "ui/mesh_renderer.h"
+
+namespace sylva::studio {
+namespace {
+
+constexpr std::size_t kThumbnailBudget = 300;
+
+std::vector<VariantThumbnail> make_variants(TreeTemplate tree, int count, double jitter,
+                                            std::uint64_t base, std::atomic<bool>* cancel) {
+    std::vector<VariantThumbnail> out;
+    FinishSettings finish;
+    finish.budget.total = kThumbnailBudget;
+    finish.decimate.cancel = cancel;
+    MeshOptions mesh;
+    mesh.budget = kThumbnailBudget;
+    mesh.cancel = cancel;
+    for (int i = 0; i < count; ++i) {
+        VariantThumbnail t;
+        t.tree = tree;
+        t.tree.params =
+            varied_params(tree.params, variant_seed(base, static_cast<std::uint64_t>(i)), jitter);
+        const Tree generated = generate_tree(t.tree, mesh);
+        const FinishedTree finished = finish_tree(generated, finish);
+        t.trunk = finished.levels[0].trunk;
+        t.crown = finished.levels[0].crown;
+        t.leaves = finished.levels[0].leaves;
+        out.push_back(std::move(t));
+    }
+    return out;
+}
+
+void free_textures(std::vector<VariantThumbnail>& thumbnails) {
+    for (VariantThumbnail& t : thumbnails)
+        if (t.texture) glDeleteTextures(1, &t.texture);
+    thumbnails.clear();
+}
+
+// Draws the tree into a new texture, framed from the front and a little above.
+GLuint render_thumbnail(const VariantThumbnail& t, MeshRenderer& trunk, MeshRenderer& crown,
+                        MeshRenderer& leaves) {
+    GLuint texture = 0, depth = 0, framebuffer = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kThumbnailSize, kThumbnailSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kThumbnailSize, kThumbnailSize);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const Mesh* m : {&t.trunk, &t.crown, &t.leaves})
+        for (const glm::vec3& p : m->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 0.1f);
+    const float distance = radius / std::sin(glm::radians(17.0f));
+    const glm::vec3 eye = centre + distance * glm::normalize(glm::vec3(0.35f, 0.25f, 1.0f));
+    const glm::mat4 view = glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::mat4 projection =
+        glm::perspective(glm::radians(36.0f), 1.0f, 0.05f * distance, 4.0f * distance);
+
+    glViewport(0, 0, kThumbnailSize, kThumbnailSize);
+    glClearColor(0.20f, 0.22f, 0.25f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    trunk.upload(t.trunk);
+    crown.upload(t.crown);
+    leaves.upload(t.leaves);
+    const PartColors colors = tree_colors(t.tree);
+    trunk.draw(view, projection, colors.trunk);
+    crown.draw(view, projection, colors.crown);
+    leaves.draw(view, projection, colors.leaves);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteRenderbuffers(1, &depth);
+    return texture;
+}
+
+}  // namespace
+
+void start_variants(VariantsStrip& strip, const TreeTemplate& tree) {
+    if (strip.cancel) strip.cancel->store(true);
+    if (strip.job.valid()) strip.job.wait();  // a cancelled batch stops at its next check
+    strip.cancel = std::make_shared<std::atomic<bool>>(false);
+    strip.error.clear();
+    strip.job = std::async(std::launch::async, make_variants, tree, strip.count,
+                           static_cast<double>(strip.jitter),
+                           static_cast<std::uint64_t>(strip.base_seed), strip.cancel.get());
+}
+
+bool variants_running(const VariantsStrip& strip) {
+    return strip.job.valid() || strip.render_pending;
+}
+
+void update_variants_strip(VariantsStrip& strip) {
+    if (strip.job.valid() &&
+        strip.job.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+        try {
+            std::vector<VariantThumbnail> made = strip.job.get();
+            free_textures(strip.thumbnails);
+            strip.thumbnails = std::move(made);
+            strip.render_pending = true;
+        } catch (const Cancelled&) {
+        } catch (const std::exception& e) {
+            strip.error = e.what();
+        }
+    }
+    if (!strip.render_pending) return;
+    MeshRenderer trunk, crown, leaves;
+    for (VariantThumbnail& t : strip.thumbnails)
+        if (!t.texture) t.texture = render_thumbnail(t, trunk, crown, leaves);
+    strip.render_pending = false;
+}
+
+void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLayout& layout) {
+    const float height = kThumbnailSize + 104.0f;  // controls, labels, scrollbar
+    ImGui::SetNextWindowPos(ImVec2(layout.left, layout.height - layout.bottom - height),
+                            ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(layout.width - layout.left - layout.right, height),
+                             ImGuiCond_Always);
+    ImGui::SetNextWindowCollapsed(!strip.open, ImGuiCond_Once);
+    if (!ImGui::Begin("Variants", nullptr,
+                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                          ImGuiWindowFlags_HorizontalScrollbar)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::SetNextItemWidth(100);
+    ImGui::SliderInt("count", &strip.count, 1, 12);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(100);
+    ImGui::SliderFloat("jitter", &strip.jitter, 0.0f, 1.0f, "%.2f");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(100);
+    ImGui::InputInt("seed", &strip.base_seed);
+    ImGui::SameLine();
+    if (ImGui::Button(strip.job.valid() ? "making..." : "Make variants"))
+        start_variants(strip, state.tree_template);
+    if (!strip.error.empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", strip.error.c_str());
+    for (std::size_t i = 0; i < strip.thumbnails.size(); ++i) {
+        const VariantThumbnail& t = strip.thumbnails[i];
+        if (!t.texture) continue;
+        if (i > 0) ImGui::SameLine();
+        ImGui::BeginGroup();
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t.texture)),
+                     ImVec2(kThumbnailSize, kThumbnailSize), ImVec2(0, 1), ImVec2(1, 0));
+        const bool clicked = ImGui::IsItemClicked();
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("seed %llu: click to edit this variant",
+                              static_cast<unsigned long long>(t.tree.params.seed));
+        ImGui::Text("seed ...%04llu", static_cast<unsigned long long>(t.tree.params.seed % 10000));
+        ImGui::EndGroup();
+        if (clicked) load_template_into(state, t.tree);
+    }
+    ImGui::End();
+}
+
+void release_variants_strip(VariantsStrip& strip) {
+    if (strip.cancel) strip.cancel->store(true);
+    if (strip.job.valid()) strip.job.wait();
+    free_textures(strip.thumbnails);
+}
+
+}  // namespace sylva::studio
