@@ -13,6 +13,7 @@
 #ifdef SYLVA_HAS_LAYOUT
 #include "ui/layout_panel.h"
 #endif
+#include "ui/forest_preview.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
@@ -222,6 +223,17 @@ void frame_tree(Viewport& viewport, StudioState& state, float aspect) {
     viewport.grid.layout(0.5f * (low + high), radius, grid_cell_for(2.0f * radius));
 }
 
+// Fits the camera to the planted square and lays the ground grid over it.
+void frame_forest(Viewport& viewport, StudioState& state, const std::vector<glm::vec3>& points,
+                  float aspect) {
+    // From a little higher than a tree is seen: the square reads as an area, not a row.
+    state.camera.pitch_deg = std::max(state.camera.pitch_deg, 28.0f);
+    frame_points(state.camera, points, aspect);
+    const glm::vec3 low = points.front(), high = points.back();  // the box's opposite corners
+    const float radius = 0.6f * std::max(high.x - low.x, high.z - low.z);
+    viewport.grid.layout(0.5f * (low + high), radius, grid_cell_for(2.0f * radius));
+}
+
 // The person stands on the ground beside the tree, off the crown's edge so it is not hidden.
 void place_scale_figure(Viewport& viewport, const GeneratedTree& generated) {
     const sylva::Tree& tree = generated.tree;
@@ -318,7 +330,7 @@ ViewRect view_rect(const PanelLayout& layout) {
 }
 
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
-                     const ViewRect& rect) {
+                     const ViewRect& rect, const ForestPreview& forest) {
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -330,20 +342,22 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
     const sylva::PartColors colors = sylva::tree_colors(state.shown_template);  // per seed
     const ViewToggles& show = state.view;
     const bool replay = replaying(state);
+    const bool planted = forest_preview_shown(forest, state);  // the forest replaces the tree
     struct Part {
         bool on;
         const MeshRenderer& renderer;
         glm::vec3 color;
     };
-    for (const Part& part : {Part{show.trunk, viewport.trunk, colors.trunk},
-                             Part{show.crown, viewport.crown, colors.crown},
-                             Part{show.leaves, viewport.leaves, colors.leaves}}) {
+    for (const Part& part :
+         {Part{show.trunk, planted ? *forest.trunk : viewport.trunk, colors.trunk},
+          Part{show.crown, planted ? *forest.crown : viewport.crown, colors.crown},
+          Part{show.leaves, planted ? *forest.leaves : viewport.leaves, colors.leaves}}) {
         if (!part.on || replay) continue;
         part.renderer.draw(view, projection, part.color);
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
     viewport.grid.draw(view, projection);
-    if (show.scale_figure) viewport.figure.draw(view, projection, kFigureColor);
+    if (show.scale_figure && !planted) viewport.figure.draw(view, projection, kFigureColor);
     if (replay)
         viewport.replay.draw(view, projection, kSkeletonColor);
     else if (show.skeleton)
@@ -398,8 +412,10 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         state.view.replay_iteration = *options.replay_iteration;
     }
     state.view.wind = options.wind_seconds.has_value();
+    state.view.forest = options.forest_preview;
     start_generation(state);
-    VariantsStrip strip;  // ui/variants_strip.h
+    ForestPreview forest;  // ui/forest_preview.h
+    VariantsStrip strip;   // ui/variants_strip.h
     if (options.variants > 0) {
         strip.open = true;
         strip.count = options.variants;
@@ -416,7 +432,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // while anything runs or is being edited it draws every frame.
         const bool busy = options.screenshot_path || state.view.wind || generation_running(state) ||
                           !state.stale.empty() || state.export_job.valid() ||
-                          ImGui::IsAnyItemActive() || state.view.turntable;
+                          ImGui::IsAnyItemActive() || state.view.turntable ||
+                          forest_preview_running(forest);
         if (busy)
             glfwPollEvents();
         else
@@ -468,12 +485,17 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         update_colonization(viewport, state, false);
         update_variants_strip(strip);
-        if (state.frame_requested && state.tree) {
+        if (update_forest_preview(forest, state) ||
+            (state.frame_requested && forest_preview_shown(forest, state))) {
+            frame_forest(viewport, state, forest_preview_frame_points(forest), aspect);
+            state.frame_requested = false;
+        } else if (state.frame_requested && state.tree) {
             frame_tree(viewport, state, aspect);
             state.frame_requested = false;
         }
-        if (options.screenshot_path && !state.error.empty()) {
-            std::fprintf(stderr, "sylva-studio: %s\n", state.error.c_str());
+        if (options.screenshot_path && (!state.error.empty() || !forest.error.empty())) {
+            std::fprintf(stderr, "sylva-studio: %s\n",
+                         (state.error.empty() ? forest.error : state.error).c_str());
             ImGui::EndFrame();
             return 1;
         }
@@ -496,7 +518,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
-        render_viewport(viewport, state, width, height, rect);
+        render_viewport(viewport, state, width, height, rect, forest);
         if (state.screenshot_requested) {
             // The 3D view alone, before the panels are drawn over the frame.
             state.screenshot_requested = false;
@@ -520,7 +542,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
 
         if (options.screenshot_path && state.tree && !generation_running(state) &&
-            !variants_running(strip) && ++frames_with_tree == options.screenshot_frames) {
+            !variants_running(strip) &&
+            (!state.view.forest || forest_preview_shown(forest, state)) &&
+            !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
             break;
         }
@@ -529,6 +553,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
     release_variants_strip(strip);
+    release_forest_preview(forest);
     cancel_generations(state);
     return 0;
 }

@@ -16,6 +16,7 @@
 #include "tree/template_library.h"
 #include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
+#include "ui/forest_preview.h"
 #include "ui/template_controls.h"
 
 namespace sylva::studio {
@@ -526,6 +527,7 @@ void view_section(StudioState& state) {
     if (ImGui::Button("screenshot (P)")) state.screenshot_requested = true;
     tooltip("saves the 3D view as a PNG in the working folder");
     message_line(state.screenshot_message, false);
+    forest_preview_row(state);  // ui/forest_preview.h
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");

@@ -55,6 +55,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--variants takes a count from 1 to 12, got '" +
                                  std::string(text) + "'");
             options.variants = count;
+        } else if (arg == "--forest-preview") {
+            options.forest_preview = true;
         } else if (arg == "--layout") {
             const std::string_view name = value();
             if (name.empty()) throw UsageError("--layout needs an example name");
@@ -92,7 +94,7 @@ std::string studio_usage() {
            "[--points]\n"
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
-           "                    [--screenshot PATH [--frames N]]\n"
+           "                    [--forest-preview] [--screenshot PATH [--frames N]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -105,6 +107,8 @@ std::string studio_usage() {
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
            "                     STEP (0: the trunk), without the meshes\n"
            "  --variants N       open the Variants strip with N (1-12) seeds of the template\n"
+           "  --forest-preview   start with the forest view on: a 40 x 40 m square planted with\n"
+           "                     the template (sylva forest's spacing, 4 variants)\n"
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
            "                     examples lists them)\n"
            "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"

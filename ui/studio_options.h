@@ -21,6 +21,7 @@ struct StudioOptions {
     std::optional<int> replay_iteration;
     // The Variants strip opened with this many seeds of the template (0: closed).
     int variants = 0;
+    bool forest_preview = false;  // start with the forest view on (ui/forest_preview.h)
     std::optional<std::string> layout_example;  // open the layout panel on this example
     // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
     std::optional<float> wind_seconds;

@@ -15,6 +15,7 @@
 #include "export/export_tree.h"
 #include "tree/cost.h"
 #include "tree/pipeline.h"
+#include "ui/forest_preview_plan.h"
 #include "ui/orbit_camera.h"
 
 namespace sylva::studio {
@@ -109,6 +110,9 @@ struct ViewToggles {
     bool wind = false;         // sway the tree with its exported wind data (ui/wind_view.h)
     bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
     bool turntable = false;    // the camera circles the tree
+    // A small square of forest planted with the shown template (ui/forest_preview.h).
+    bool forest = false;
+    ForestPreviewOptions forest_options;
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -189,6 +193,7 @@ struct StudioState {
     bool screenshot_requested = false;
     std::string screenshot_message;
     bool show_shortcuts = false;  // the list of keys (F1, "?")
+    std::string forest_status;    // the forest preview's progress or error, for the View row
 };
 
 // True when the next generation should be a draft: the low-poly view is on and a slider is
