@@ -38,14 +38,13 @@ void start_job(ForestPreview& p, const TreeTemplate& tree, const ForestPreviewOp
     p.job_options = options;
     p.has_job = true;
     p.error.clear();
-    p.job = std::async(std::launch::async,
-                       [tree, options, cancel = p.cancel, done = p.done, total = p.total] {
-                           return make_forest_preview(tree, options, cancel.get(),
-                                                      [&](int d, int t) {
-                                                          total->store(t);
-                                                          done->store(d);
-                                                      });
-                       });
+    p.job = std::async(
+        std::launch::async, [tree, options, cancel = p.cancel, done = p.done, total = p.total] {
+            return make_forest_preview(tree, options, cancel.get(), [&](int d, int t) {
+                total->store(t);
+                done->store(d);
+            });
+        });
 }
 
 void upload(ForestPreview& p, const ForestPreviewMeshes& m) {
@@ -89,7 +88,8 @@ void forest_preview_row(StudioState& state) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("unique variants of the template the trees are drawn from");
     ImGui::EndDisabled();
-    if (v.forest && !state.forest_status.empty()) ImGui::TextUnformatted(state.forest_status.c_str());
+    if (v.forest && !state.forest_status.empty())
+        ImGui::TextUnformatted(state.forest_status.c_str());
 }
 
 bool update_forest_preview(ForestPreview& p, StudioState& state) {
@@ -97,8 +97,10 @@ bool update_forest_preview(ForestPreview& p, StudioState& state) {
     bool frame = false;
     if (finished(p.job)) {
         try {
+            // A first forest or another size of square: the camera follows the area.
+            const bool new_area = !p.ready || p.shown_options.size != p.job_options.size;
             upload(p, p.job.get());
-            frame = p.frame_pending;
+            frame = p.frame_pending || new_area;
             p.frame_pending = false;
         } catch (const Cancelled&) {
         } catch (const std::exception& e) {
@@ -121,7 +123,8 @@ bool update_forest_preview(ForestPreview& p, StudioState& state) {
     // Sliders held: wait for the release rather than plant every step of the drag.
     if (state.tree && !state.dragging) {
         const ForestPreviewOptions& wanted = state.view.forest_options;
-        const bool shown_current = p.ready && same_template(p.shown_template, state.shown_template) &&
+        const bool shown_current = p.ready &&
+                                   same_template(p.shown_template, state.shown_template) &&
                                    same_options(p.shown_options, wanted);
         const bool job_current = p.has_job && same_template(p.job_template, state.shown_template) &&
                                  same_options(p.job_options, wanted);
