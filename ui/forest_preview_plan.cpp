@@ -12,13 +12,14 @@ namespace sylva::studio {
 
 forest::ForestSettings forest_preview_settings(const TreeTemplate& tree,
                                                const ForestPreviewOptions& options) {
-    const double size = std::clamp(static_cast<double>(options.size),
-                                   static_cast<double>(kForestPreviewMinSize),
-                                   static_cast<double>(kForestPreviewMaxSize));
+    const double size =
+        std::clamp(static_cast<double>(options.size), static_cast<double>(kForestPreviewMinSize),
+                   static_cast<double>(kForestPreviewMaxSize));
     forest::ForestSettings s;  // spacing, density and jitters: `sylva forest`'s defaults
     s.ground = forest::rectangle_ground(size, size);
     s.species.push_back({tree, 1.0, std::string(forest::kForestClass)});
-    s.variants = static_cast<std::size_t>(std::clamp(options.variants, 1, kForestPreviewMaxVariants));
+    s.variants =
+        static_cast<std::size_t>(std::clamp(options.variants, 1, kForestPreviewMaxVariants));
     s.seed = tree.params.seed;
     s.finish.budget.total = kForestPreviewBudget;
     return s;
@@ -31,7 +32,8 @@ forest::ForestPlan plan_forest_preview(const TreeTemplate& tree,
 
 void append_transformed(Mesh& into, const Mesh& part, const glm::mat4& model) {
     const auto base = static_cast<std::uint32_t>(into.positions.size());
-    for (const glm::vec3& p : part.positions) into.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
+    for (const glm::vec3& p : part.positions)
+        into.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
     for (const std::array<std::uint32_t, 3>& t : part.triangles)
         into.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
@@ -58,8 +60,8 @@ ForestPreviewMeshes make_forest_preview(const TreeTemplate& tree,
         t.params = v.params;
         const Tree generated = generate_tree(t, mesh);
         const FinishedTree finished = finish_tree(generated, finish);
-        variants.push_back({finished.levels[0].trunk, finished.levels[0].crown,
-                            finished.levels[0].leaves});
+        variants.push_back(
+            {finished.levels[0].trunk, finished.levels[0].crown, finished.levels[0].leaves});
         if (progress) progress(static_cast<int>(variants.size()), total);
     }
     throw_if_cancelled(cancel);

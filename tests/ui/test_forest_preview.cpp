@@ -74,10 +74,10 @@ TEST(ForestPreview, AppendTransformedPlacesAndReindexes) {
     triangle.triangles = {{0, 1, 2}};
     Mesh into;
     append_transformed(into, triangle, glm::mat4(1.0f));
-    const glm::mat4 model = glm::scale(
-        glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, -5)), glm::radians(90.0f),
-                    glm::vec3(0, 1, 0)),
-        glm::vec3(2.0f));
+    const glm::mat4 model =
+        glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, -5)),
+                               glm::radians(90.0f), glm::vec3(0, 1, 0)),
+                   glm::vec3(2.0f));
     append_transformed(into, triangle, model);
     ASSERT_EQ(into.positions.size(), 6u);
     ASSERT_EQ(into.triangles.size(), 2u);
