@@ -133,14 +133,17 @@ void update_variants_strip(VariantsStrip& strip) {
 
 void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLayout& layout) {
     const float height = kThumbnailSize + 104.0f;  // controls, labels, scrollbar
-    ImGui::SetNextWindowPos(ImVec2(layout.left, layout.height - layout.bottom - height),
+    // Collapsed, only the title bar shows: it sits on the status bar, not over the tree.
+    const float shown = strip.open ? height : ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(layout.left, layout.height - layout.bottom - shown),
                             ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(layout.width - layout.left - layout.right, height),
                              ImGuiCond_Always);
     ImGui::SetNextWindowCollapsed(!strip.open, ImGuiCond_Once);
-    if (!ImGui::Begin("Variants", nullptr,
-                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                          ImGuiWindowFlags_HorizontalScrollbar)) {
+    strip.open = ImGui::Begin(
+        "Variants", nullptr,
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_HorizontalScrollbar);
+    if (!strip.open) {
         ImGui::End();
         return;
     }
