@@ -43,6 +43,8 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
         throw;
     }
     settings.cancel = context.cancel;
+    // Colonizing is the growth's long part; points and shaping take little.
+    if (context.progress) settings.progress = [&](float f) { context.progress(0.95f * f); };
     Region region;
     try {
         region = point_region(p, context);
@@ -60,6 +62,7 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     Skeleton skeleton = to_skeleton(graph, static_cast<float>(0.5 * p.tip_width),
                                     static_cast<float>(p.pipe_exponent));
     if (context.times) context.times->push_back({"branches", clock.lap_ms()});
+    if (context.progress) context.progress(1.0f);
     return skeleton;
 }
 

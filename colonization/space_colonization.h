@@ -40,6 +40,9 @@ struct ColonizationSettings {
     // growth into it is refused). Empty: nothing is blocked. Place no points there either.
     std::function<bool(const glm::vec3&)> blocked = nullptr;
     CancelFlag cancel = nullptr;  // polled every iteration; throws Cancelled
+    // Called once per iteration with the finished fraction (rising, ends with 1): the larger
+    // of the iterations used and the attraction points removed, each as a share of all.
+    std::function<void(float)> progress = nullptr;
 };
 
 struct ColonizationNode {

@@ -288,7 +288,9 @@ FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
     Skeleton mature;
-    out.skeleton = grow(tree, {options.cancel, &out.times}, &mature);
+    GrowthContext growth{options.cancel, &out.times};
+    growth.progress = options.growth_progress;
+    out.skeleton = grow(tree, growth, &mature);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};

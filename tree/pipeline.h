@@ -41,6 +41,9 @@ struct MeshOptions {
     int threads = 0;  // 0 = all cores
     // Called with the finished fraction of the whole meshing stage, from any thread.
     std::function<void(float)> progress;
+    // Called with the finished fraction of the growth (GrowthContext::progress), before any
+    // meshing progress.
+    std::function<void(float)> growth_progress;
     // Reaches every stage (growth, meshing, leaves); once it is true, generate_tree throws
     // Cancelled.
     CancelFlag cancel = nullptr;
