@@ -61,8 +61,19 @@ class Colonizer {
         grow_trunk();
         if (s_.search == NearestSearch::BruteForce) refresh_brute_force();
         graph.stop = ColonizationStop::MaxIterations;
+        float reported = 0.0f;
         for (; graph.iterations < s_.max_iterations; ++graph.iterations) {
             throw_if_cancelled(s_.cancel);
+            if (s_.progress) {
+                const float points = points_.empty()
+                                         ? 1.0f
+                                         : 1.0f - static_cast<float>(alive_count_) /
+                                                      static_cast<float>(points_.size());
+                const float iterations = static_cast<float>(graph.iterations) /
+                                         static_cast<float>(std::max(s_.max_iterations, 1));
+                reported = std::max({reported, points, iterations});
+                s_.progress(std::min(reported, 1.0f));
+            }
             if (alive_count_ == 0) {
                 graph.stop = ColonizationStop::NoPointsLeft;
                 break;
@@ -73,6 +84,7 @@ class Colonizer {
                 break;
             }
         }
+        if (s_.progress) s_.progress(1.0f);
         graph.oscillations = oscillations_;
         graph.nodes = std::move(nodes_);
         for (size_t i = 0; i < points_.size(); ++i)
@@ -207,9 +219,14 @@ class Colonizer {
             any = true;
         }
         // max_NG: count the passes without growth; a node reaching it stops attracting,
-        // and its points look for the next nearest node.
+        // and its points look for the next nearest node. While an attracted node that did
+        // not grow still waits for that, the growth is not over: its points may yet move to
+        // a node that can grow (without this, a growth whose last pass grew nothing, as the
+        // hedge's, never let max_no_grow act).
+        bool waiting = false;
         for (size_t v = 0; v < existing; ++v) {
             if (grew_[v]) continue;
+            waiting = waiting || (s_.max_no_grow > 0 && count_[v] > 0);
             const int before = nodes_[v].no_grow++;
             if (s_.max_no_grow > 0 && before + 1 == s_.max_no_grow &&
                 s_.search == NearestSearch::Grid)
@@ -217,7 +234,7 @@ class Colonizer {
         }
         // Step 3 (kill) happened as nodes were added; brute force does it all here.
         if (s_.search == NearestSearch::BruteForce) refresh_brute_force();
-        return any;
+        return any || waiting;
     }
 
     void release_points_of(int node) {
