@@ -2,8 +2,8 @@
 // 100 ms). For each heavy case one full run marks where its stages begin and end (the
 // tree's stage times, then the reduction); then, for every stage longer than 30 ms, the
 // flag is set from another thread at 20%, 50% and 80% into it (the reduction: every 10%) and
-// the time from setting it to Cancelled reaching the caller is the latency. Prints one line per stage: its length
-// and the largest and mean latency of its samples.
+// the time from setting it to Cancelled reaching the caller is the latency. Prints one line per
+// stage: its length and the largest and mean latency of its samples.
 //
 // Cases: oak at generations 12 (no reduction: the studio asks before reducing it), ternary
 // at generations 7 and willow, both reduced to 800 as the studio does (finish_tree with a
@@ -50,8 +50,8 @@ double latency(const std::function<void(CancelFlag)>& work, double after_ms) {
     Clock::time_point set_at{};
     const Clock::time_point start = Clock::now();
     std::thread setter([&] {
-        std::this_thread::sleep_until(start + std::chrono::microseconds(
-                                                  static_cast<long long>(after_ms * 1000.0)));
+        std::this_thread::sleep_until(
+            start + std::chrono::microseconds(static_cast<long long>(after_ms * 1000.0)));
         if (finished) return;
         set_at = Clock::now();
         cancel = true;
@@ -72,8 +72,7 @@ struct Span {
     double begin_ms = 0, ms = 0;
 };
 
-void report(const std::string& name, const Span& span,
-            const std::function<void(CancelFlag)>& work,
+void report(const std::string& name, const Span& span, const std::function<void(CancelFlag)>& work,
             std::initializer_list<double> fractions = {0.2, 0.5, 0.8}) {
     if (span.ms < 30.0) {
         std::printf("%-9s %-20s %9.0f ms   (too short to sample)\n", name.c_str(),
@@ -89,9 +88,8 @@ void report(const std::string& name, const Span& span,
         sum += l;
         ++samples;
     }
-    std::printf("%-9s %-20s %9.0f ms   max %7.1f ms   mean %7.1f ms   (%d samples)\n",
-                name.c_str(), span.stage.c_str(), span.ms, worst, samples ? sum / samples : 0.0,
-                samples);
+    std::printf("%-9s %-20s %9.0f ms   max %7.1f ms   mean %7.1f ms   (%d samples)\n", name.c_str(),
+                span.stage.c_str(), span.ms, worst, samples ? sum / samples : 0.0, samples);
     std::fflush(stdout);
 }
 
