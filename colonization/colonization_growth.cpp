@@ -68,6 +68,26 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
 
 }  // namespace
 
+std::string why_max_no_grow_is_unused(const TreeTemplate& tree, const GrowthContext& context) {
+    TreeTemplate earliest = tree;
+    earliest.params.max_no_grow = 1;  // every idle attracted node releases its points at once
+    const TreeParams& p = earliest.params;
+    ColonizationSettings settings = colonization_settings(p);
+    settings.cancel = context.cancel;
+    const Region region = point_region(p, context);
+    const std::vector<glm::vec3> points = attraction_points(
+        region, p.attraction_points, static_cast<PointDistribution>(p.point_distribution), p.seed);
+    const ColonizationGraph graph = colonize(points, template_roots(p), settings);
+    if (graph.idle_attracted == 0)
+        return "this growth never stalls: every node its points attract grows on every pass "
+               "until the points are used up, so no node waits for max_no_grow";
+    if (graph.moved_growth == 0)
+        return "no growth comes of releasing a stalled node's points here: they find no "
+               "other node within influence_radius, or only nodes that stall too (even at "
+               "max_no_grow 1)";
+    return {};
+}
+
 const GrowthMethod colonization_growth = {
     "colonization",
     "space colonization: branches grow towards attraction points in an envelope (seed 000, "
