@@ -80,8 +80,10 @@ struct FieldCells {
     float trunk = 0.0f;
     float crown = 0.0f;
 };
+// Throws Cancelled once `cancel` is set (building the trunk's field takes a while on a
+// tree of many thousand segments).
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
-                       const FieldCells& cells = {});
+                       const FieldCells& cells = {}, CancelFlag cancel = nullptr);
 
 // The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
 int cells_along(const Box& box, float cell);
