@@ -43,6 +43,8 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
         throw;
     }
     settings.cancel = context.cancel;
+    // Colonizing is the growth's long part; points and shaping take little.
+    if (context.progress) settings.progress = [&](float f) { context.progress(0.95f * f); };
     Region region;
     try {
         region = point_region(p, context);
@@ -60,10 +62,31 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     Skeleton skeleton = to_skeleton(graph, static_cast<float>(0.5 * p.tip_width),
                                     static_cast<float>(p.pipe_exponent));
     if (context.times) context.times->push_back({"branches", clock.lap_ms()});
+    if (context.progress) context.progress(1.0f);
     return skeleton;
 }
 
 }  // namespace
+
+std::string why_max_no_grow_is_unused(const TreeTemplate& tree, const GrowthContext& context) {
+    TreeTemplate earliest = tree;
+    earliest.params.max_no_grow = 1;  // every idle attracted node releases its points at once
+    const TreeParams& p = earliest.params;
+    ColonizationSettings settings = colonization_settings(p);
+    settings.cancel = context.cancel;
+    const Region region = point_region(p, context);
+    const std::vector<glm::vec3> points = attraction_points(
+        region, p.attraction_points, static_cast<PointDistribution>(p.point_distribution), p.seed);
+    const ColonizationGraph graph = colonize(points, template_roots(p), settings);
+    if (graph.idle_attracted == 0)
+        return "this growth never stalls: every node its points attract grows on every pass "
+               "until the points are used up, so no node waits for max_no_grow";
+    if (graph.moved_growth == 0)
+        return "no growth comes of releasing a stalled node's points here: they find no "
+               "other node within influence_radius, or only nodes that stall too (even at "
+               "max_no_grow 1)";
+    return {};
+}
 
 const GrowthMethod colonization_growth = {
     "colonization",

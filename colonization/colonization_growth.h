@@ -3,6 +3,9 @@
 // algorithm's plain settings. Registered in tree/growth.cpp.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "colonization/attraction_points.h"
 #include "colonization/envelope.h"
 #include "colonization/obstacle.h"
@@ -23,5 +26,11 @@ Obstacle template_obstacle(const TreeParams& params);
 // one root stands at the origin.
 std::vector<glm::vec3> template_roots(const TreeParams& params);
 ColonizationSettings colonization_settings(const TreeParams& params);
+
+// Why max_no_grow cannot change this template's colonization, or empty when it can: the
+// growth is run with max_no_grow 1, the earliest release, and either no attracted node ever
+// stalls or no released point finds another node. `context` as for growth (an envelope =
+// "template" needs its template_crown). Throws what the growth throws.
+std::string why_max_no_grow_is_unused(const TreeTemplate& tree, const GrowthContext& context = {});
 
 }  // namespace sylva

@@ -61,8 +61,19 @@ class Colonizer {
         grow_trunk();
         if (s_.search == NearestSearch::BruteForce) refresh_brute_force();
         graph.stop = ColonizationStop::MaxIterations;
+        float reported = 0.0f;
         for (; graph.iterations < s_.max_iterations; ++graph.iterations) {
             throw_if_cancelled(s_.cancel);
+            if (s_.progress) {
+                const float points = points_.empty()
+                                         ? 1.0f
+                                         : 1.0f - static_cast<float>(alive_count_) /
+                                                      static_cast<float>(points_.size());
+                const float iterations = static_cast<float>(graph.iterations) /
+                                         static_cast<float>(std::max(s_.max_iterations, 1));
+                reported = std::max({reported, points, iterations});
+                s_.progress(std::min(reported, 1.0f));
+            }
             if (alive_count_ == 0) {
                 graph.stop = ColonizationStop::NoPointsLeft;
                 break;
@@ -73,7 +84,10 @@ class Colonizer {
                 break;
             }
         }
+        if (s_.progress) s_.progress(1.0f);
         graph.oscillations = oscillations_;
+        graph.idle_attracted = idle_attracted_;
+        graph.moved_growth = moved_growth_;
         graph.nodes = std::move(nodes_);
         for (size_t i = 0; i < points_.size(); ++i)
             if (alive_[i]) graph.remaining.push_back(points_[i]);
@@ -171,11 +185,13 @@ class Colonizer {
         const size_t existing = nodes_.size();
         sum_.assign(existing, glm::vec3(0.0f));
         count_.assign(existing, 0);
+        pulled_by_moved_.assign(existing, 0);
         for (size_t i = 0; i < points_.size(); ++i) {
             if (!alive_[i] || nearest_[i] < 0) continue;
             const auto v = static_cast<size_t>(nearest_[i]);
             sum_[v] += glm::normalize(points_[i] - nodes_[v].position);
             ++count_[v];
+            pulled_by_moved_[v] |= moved_[i];
         }
         // Step 2: every influenced node grows one successor at step D (eq. 3.1, 3.2).
         grew_.assign(existing, 0);
@@ -204,12 +220,19 @@ class Colonizer {
             }
             add_node(p, static_cast<int>(v), depth);
             grew_[v] = 1;
+            moved_growth_ += pulled_by_moved_[v];
             any = true;
         }
         // max_NG: count the passes without growth; a node reaching it stops attracting,
-        // and its points look for the next nearest node.
+        // and its points look for the next nearest node. While an attracted node that did
+        // not grow still waits for that, the growth is not over: its points may yet move to
+        // a node that can grow (without this, a growth whose last pass grew nothing, as the
+        // hedge's, never let max_no_grow act).
+        bool waiting = false;
         for (size_t v = 0; v < existing; ++v) {
             if (grew_[v]) continue;
+            idle_attracted_ += count_[v] > 0;
+            waiting = waiting || (s_.max_no_grow > 0 && count_[v] > 0);
             const int before = nodes_[v].no_grow++;
             if (s_.max_no_grow > 0 && before + 1 == s_.max_no_grow &&
                 s_.search == NearestSearch::Grid)
@@ -217,7 +240,7 @@ class Colonizer {
         }
         // Step 3 (kill) happened as nodes were added; brute force does it all here.
         if (s_.search == NearestSearch::BruteForce) refresh_brute_force();
-        return any;
+        return any || waiting;
     }
 
     void release_points_of(int node) {
@@ -236,6 +259,7 @@ class Colonizer {
                     nearest_d2_[k] = d2;
                 }
             });
+            moved_[k] = nearest_[k] >= 0;
         });
     }
 
@@ -273,8 +297,13 @@ class Colonizer {
     std::vector<int> count_;
     std::vector<char> grew_;
     int oscillations_ = 0;
-    int iteration_ = 0;  // 0 while the trunk grows
-    int roots_ = 0;      // nodes_[0, roots_) are the roots
+    int idle_attracted_ = 0;
+    int moved_growth_ = 0;
+    // Per point: handed on by a release (max_no_grow).
+    std::vector<char> moved_ = std::vector<char>(points_.size(), 0);
+    std::vector<char> pulled_by_moved_;  // per node, this pass: a moved point attracts it
+    int iteration_ = 0;                  // 0 while the trunk grows
+    int roots_ = 0;                      // nodes_[0, roots_) are the roots
 };
 
 }  // namespace

@@ -40,6 +40,9 @@ struct ColonizationSettings {
     // growth into it is refused). Empty: nothing is blocked. Place no points there either.
     std::function<bool(const glm::vec3&)> blocked = nullptr;
     CancelFlag cancel = nullptr;  // polled every iteration; throws Cancelled
+    // Called once per iteration with the finished fraction (rising, ends with 1): the larger
+    // of the iterations used and the attraction points removed, each as a share of all.
+    std::function<void(float)> progress = nullptr;
 };
 
 struct ColonizationNode {
@@ -62,6 +65,11 @@ struct ColonizationGraph {
     // another node) or the pulls cancelled out: seed 000 5.3's back-and-forth growth.
     int oscillations = 0;
     ColonizationStop stop = ColonizationStop::NoPointsLeft;
+    // What max_no_grow had to act on: passes in which a node that points attract grew
+    // nothing (summed over nodes), and new nodes grown towards a point that a release
+    // (max_no_grow reached) had handed on from another node (grid search only).
+    int idle_attracted = 0;
+    int moved_growth = 0;
 };
 
 // Grows a tree from `root` towards `points`. Throws Cancelled when the flag is set.

@@ -31,6 +31,10 @@ struct GrowthContext {
     // tree/ knows templates and the pipeline; a method called without it throws InputError
     // when it needs one. Throws InputError for an unknown name or a template without crown.
     std::function<Region(std::string_view template_name)> template_crown = nullptr;
+    // Called with the finished fraction of the growth (rising, ends with 1), on the growing
+    // thread, often enough to draw a progress bar: the L-system per derivation step and every
+    // few thousand modules, then through the turtle; colonization per iteration.
+    std::function<void(float)> progress = nullptr;
 };
 
 struct GrowthMethod {

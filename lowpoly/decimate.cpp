@@ -187,8 +187,11 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
     }
 
     // Collapses until at most `max_faces` triangles are left or no legal collapse is.
-    void decimate_to_faces(std::size_t max_faces) {
+    // Throws Cancelled once `cancel` is set while the heap is built (the collapses poll it
+    // through the observer).
+    void decimate_to_faces(std::size_t max_faces, CancelFlag cancel) {
         if (!is_initialized() && !initialize()) return;
+        throw_if_cancelled(cancel);
         std::size_t faces = mesh_.n_faces();
         // ModQuadricT keeps its quadrics to itself; the same sums, kept here, place the
         // vertices at the end (relocate()).
@@ -205,6 +208,7 @@ class LazyDecimater : public OpenMesh::Decimater::BaseDecimaterT<OmMesh> {
         heap_ = &heap;
         heap.reserve(mesh_.n_vertices());
         for (VertexHandle v : mesh_.vertices()) {
+            if ((v.idx() & 4095) == 4095) throw_if_cancelled(cancel);
             heap.reset_heap_position(v);
             if (!mesh_.status(v).deleted()) heap_vertex(v);
         }
@@ -571,12 +575,14 @@ std::vector<Mesh> reduce(std::span<const Mesh* const> parts, std::size_t target,
     LazyDecimater decimater(om, Guards(settings.max_normal_turn_degrees, min_twice_area),
                             settings.foot_height);
     decimater.initialize();
+    throw_if_cancelled(settings.cancel);
     const std::size_t expected = om.n_faces() > target ? (om.n_faces() - target) / 2 : 0;
     ProgressObserver observer(std::max<std::size_t>(expected / 100, 64), expected, settings);
     decimater.set_observer(&observer);
-    decimater.decimate_to_faces(target);
+    decimater.decimate_to_faces(target, settings.cancel);
+    throw_if_cancelled(settings.cancel);
     if (settings.relocate_vertices) decimater.relocate();
-    if (settings.cancel && settings.cancel->load()) throw Cancelled();
+    throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
     return extract(om, part_of, parts.size());
 }
@@ -601,6 +607,7 @@ DecimateResult reduce_with_backoff(std::span<const Mesh* const> parts,
     } else {
         for (int attempt = 0;; ++attempt) {
             result.parts = reduce(parts, target, settings, min_twice_area);
+            throw_if_cancelled(settings.cancel);
             std::string broken;
             for (std::size_t k = 0; k < result.parts.size(); ++k) {
                 if (result.parts[k].triangles.empty() != parts[k]->triangles.empty()) {
@@ -658,7 +665,9 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     // Handles and pieces set a floor no collapse goes below. When it is above the budget
     // the direct reduction is wasted work (the slowest part of a crossing-branch tree):
     // go straight to the intermediate one and cut handles there.
+    throw_if_cancelled(settings.cancel);
     const std::size_t floor = triangle_floor(parts);
+    throw_if_cancelled(settings.cancel);
     const bool handles_pin = settings.cut_handles && floor > settings.max_triangles;
     DecimateResult result;
     if (!handles_pin) result = reduce_with_backoff(parts, settings, min_twice_area);
@@ -682,6 +691,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         std::vector<Mesh> cut = std::move(detailed.parts);
         int handles_cut = 0;
         for (int round = 0; round < 8 && !result.within_budget && detailed.backoffs == 0; ++round) {
+            throw_if_cancelled(settings.cancel);
             std::vector<std::size_t> genera;
             std::size_t total_genus = 0;
             for (const Mesh& m : cut)
@@ -693,7 +703,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
             std::size_t done = 0;
             for (std::size_t k = 0; k < cut.size(); ++k) {
                 const std::size_t share = (wanted * genera[k] + total_genus - 1) / total_genus;
-                if (share > 0) done += cut_handles(cut[k], share);
+                if (share > 0) done += cut_handles(cut[k], share, settings.cancel);
             }
             if (done == 0) break;
             handles_cut += static_cast<int>(done);

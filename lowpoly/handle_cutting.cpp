@@ -268,7 +268,7 @@ std::size_t genus(const Mesh& mesh) {
     return static_cast<std::size_t>(std::max(total, 0L));
 }
 
-std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
+std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts, CancelFlag cancel) {
     constexpr std::size_t kRoots = 64;  // loops are sought through this many sample vertices
     std::size_t cuts = 0;
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
@@ -280,6 +280,7 @@ std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
         mesh.positions.empty() ? 0.0 : glm::dot(glm::dvec3(hi - lo), glm::dvec3(hi - lo));
     const double min_twice_area = 2e-12 * diagonal2;  // check_topology's threshold
     while (cuts < max_cuts) {
+        throw_if_cancelled(cancel);
         std::size_t g = genus(mesh);
         if (g == 0) break;
         const Connectivity c(mesh);
@@ -289,9 +290,13 @@ std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
         // sorted in slot order: the same loops in the same order on any thread count.
         std::vector<Loop> loops((n + step - 1) / step);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, loops.size()), [&](const auto& range) {
-            for (std::size_t i = range.begin(); i < range.end(); ++i)
+            for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                // One search walks the whole mesh (tens of ms on a large one): poll each.
+                if (is_cancelled(cancel)) return;
                 loops[i] = shortest_loop_through(mesh, c, static_cast<std::uint32_t>(i * step));
+            }
         });
+        throw_if_cancelled(cancel);
         std::erase_if(loops, [](const Loop& l) { return l.vertices.empty(); });
         std::stable_sort(loops.begin(), loops.end(),
                          [](const Loop& x, const Loop& y) { return x.length < y.length; });
@@ -301,6 +306,7 @@ std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts) {
         std::size_t cut_this_round = 0;
         for (const Loop& loop : loops) {
             if (cuts == max_cuts) break;
+            throw_if_cancelled(cancel);  // each cut copies and checks the whole mesh
             if (std::any_of(loop.vertices.begin(), loop.vertices.end(),
                             [&](std::uint32_t v) { return touched[v]; }))
                 continue;

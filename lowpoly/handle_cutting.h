@@ -10,6 +10,7 @@
 
 #include <cstddef>
 
+#include "core/cancel.h"
 #include "core/mesh.h"
 
 namespace sylva {
@@ -24,7 +25,8 @@ std::size_t genus(const Mesh& mesh);
 // duplicates the loop's vertices and closes both sides with a fan around the loop's
 // centroid; a cut that would not lower the genus by one or would break the manifold
 // (check_topology) is undone and skipped. Returns the number of handles cut.
-// Precondition: a closed 2-manifold. Deterministic.
-std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts);
+// Precondition: a closed 2-manifold. Deterministic. Throws Cancelled once `cancel` is set
+// (polled per loop search and per cut; the mesh is then left with the cuts made so far).
+std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts, CancelFlag cancel = nullptr);
 
 }  // namespace sylva

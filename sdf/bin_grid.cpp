@@ -10,7 +10,7 @@
 namespace sylva {
 
 BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest,
-                 const Overlap& overlaps) {
+                 const Overlap& overlaps, CancelFlag cancel) {
     if (boxes.empty()) return;
     Aabb all = boxes[0];
     for (const Aabb& b : boxes) {
@@ -42,6 +42,7 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     // Two passes (count, then fill) give a compact CSR layout with items in box order.
     bin_start_.assign(static_cast<size_t>(dims_.x) * dims_.y * dims_.z + 1, 0);
     for (size_t i = 0; i < boxes.size(); ++i) {
+        if ((i & 255) == 255) throw_if_cancelled(cancel);
         glm::ivec3 lo, hi;
         range(boxes[i], lo, hi);
         for (int z = lo.z; z <= hi.z; ++z)
@@ -53,6 +54,7 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     bin_items_.resize(bin_start_.back());
     std::vector<std::uint32_t> fill(bin_start_.begin(), bin_start_.end() - 1);
     for (size_t i = 0; i < boxes.size(); ++i) {
+        if ((i & 255) == 255) throw_if_cancelled(cancel);
         glm::ivec3 lo, hi;
         range(boxes[i], lo, hi);
         for (int z = lo.z; z <= hi.z; ++z)

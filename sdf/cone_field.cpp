@@ -55,7 +55,8 @@ std::vector<CappedCone> merge_coincident_cones(std::vector<CappedCone> cones, fl
     return out;
 }
 
-ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_blend)
+ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_blend,
+                     CancelFlag cancel)
     : cones_(std::move(cones)), margin_(margin), joint_blend_(joint_blend) {
     std::vector<Aabb> boxes;
     boxes.reserve(cones_.size());
@@ -68,10 +69,12 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     }
     // A bin lists a cone only if some point of the bin can be within the inflation of it.
     const float inflation = margin_ + joint_blend_;
-    bins_ =
-        BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
+    bins_ = BinGrid(
+        boxes, margin_ / 2.0f, 40,
+        [&](size_t i, const glm::vec3& centre, float radius) {
             return distance(cones_[i], centre) < inflation + radius;
-        });
+        },
+        cancel);
 }
 
 float ConeField::operator()(const glm::vec3& p) const {

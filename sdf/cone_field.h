@@ -32,8 +32,10 @@ std::vector<CappedCone> merge_coincident_cones(std::vector<CappedCone> cones, fl
 
 class ConeField {
   public:
-    // joint_blend > 0 rounds the joints with polynomial_smooth_min of that radius.
-    ConeField(std::vector<CappedCone> cones, float margin, float joint_blend = 0.0f);
+    // joint_blend > 0 rounds the joints with polynomial_smooth_min of that radius. Throws
+    // Cancelled once `cancel` is set while the bins are built.
+    ConeField(std::vector<CappedCone> cones, float margin, float joint_blend = 0.0f,
+              CancelFlag cancel = nullptr);
 
     float operator()(const glm::vec3& p) const;
     // values[i] = (*this)(points[i]) for spans of the same size: one call per batch of

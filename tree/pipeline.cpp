@@ -238,7 +238,8 @@ int cells_along(const Box& box, float cell) {
     return static_cast<int>(std::lround(std::max({extent.x, extent.y, extent.z}) / cell));
 }
 
-TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const FieldCells& cells) {
+TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const FieldCells& cells,
+                       CancelFlag cancel) {
     TreeFields fields;
     // The joint blend swells the union by up to joint_blend / 4 where cones meet.
     float joint_blend = static_cast<float>(p.joint_blend);
@@ -247,9 +248,11 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const Fiel
     fields.trunk_box.max += glm::vec3(joint_blend);
     float trunk_cell = fit_to_cells(fields.trunk_box, cells.trunk, p.trunk_resolution);
     std::vector<CappedCone> cones = resolvable_cones(skeleton, trunk_cell);
+    throw_if_cancelled(cancel);
     if (!cones.empty())
         fields.trunk.emplace(std::move(cones), kFieldMarginInCells * trunk_cell + joint_blend,
-                             joint_blend);
+                             joint_blend, cancel);
+    throw_if_cancelled(cancel);
 
     std::vector<Ball> balls = crown_spheres(skeleton, p);
     if (!balls.empty() && p.sphere_diameter > 0.0)
@@ -288,7 +291,9 @@ FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
     Skeleton mature;
-    out.skeleton = grow(tree, {options.cancel, &out.times}, &mature);
+    GrowthContext growth{options.cancel, &out.times};
+    growth.progress = options.growth_progress;
+    out.skeleton = grow(tree, growth, &mature);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
@@ -296,7 +301,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     check_extent(out.skeleton);
     throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
-    TreeFields fields = tree_fields(out.skeleton, p, cells);
+    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
@@ -321,7 +326,8 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             visible_box.max += glm::vec3(joint_blend);
             const float visible_cell = cell_size(visible_box, p.trunk_resolution);
             visible_trunk.emplace(resolvable_cones(shown, visible_cell),
-                                  kFieldMarginInCells * visible_cell + joint_blend, joint_blend);
+                                  kFieldMarginInCells * visible_cell + joint_blend, joint_blend,
+                                  options.cancel);
         }
     }
     const ConeField& trunk_field = visible_trunk ? *visible_trunk : *fields.trunk;

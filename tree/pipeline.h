@@ -41,6 +41,9 @@ struct MeshOptions {
     int threads = 0;  // 0 = all cores
     // Called with the finished fraction of the whole meshing stage, from any thread.
     std::function<void(float)> progress;
+    // Called with the finished fraction of the growth (GrowthContext::progress), before any
+    // meshing progress.
+    std::function<void(float)> growth_progress;
     // Reaches every stage (growth, meshing, leaves); once it is true, generate_tree throws
     // Cancelled.
     CancelFlag cancel = nullptr;
@@ -77,8 +80,10 @@ struct FieldCells {
     float trunk = 0.0f;
     float crown = 0.0f;
 };
+// Throws Cancelled once `cancel` is set (building the trunk's field takes a while on a
+// tree of many thousand segments).
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
-                       const FieldCells& cells = {});
+                       const FieldCells& cells = {}, CancelFlag cancel = nullptr);
 
 // The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
 int cells_along(const Box& box, float cell);

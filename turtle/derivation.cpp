@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -29,14 +30,21 @@ class Deriver {
     Word run() {
         Word word = axiom_word(system_, random_, &noise_);
         Word next;
+        const std::vector<double> ends = step_ends();
         for (int step = 1; step <= settings_.steps; ++step) {
             throw_if_cancelled(settings_.cancel);
             if (has_context_) match_brackets(word);
             next.clear();
             next.reserve(word.size() * 2, word.param_count() * 2);
+            const double begin = ends[static_cast<size_t>(step - 1)];
+            const double share = ends[static_cast<size_t>(step)] - begin;
             for (size_t i = 0; i < word.size(); ++i) {
                 // A long step answers a cancel too (the studio's cancel within 100 ms).
-                if ((i & 4095) == 4095) throw_if_cancelled(settings_.cancel);
+                if ((i & 4095) == 4095) {
+                    throw_if_cancelled(settings_.cancel);
+                    report(begin +
+                           share * static_cast<double>(i) / static_cast<double>(word.size()));
+                }
                 rewrite(word, i, next);
                 if (next.size() > settings_.max_modules)
                     throw GrammarError("derivation step " + std::to_string(step) +
@@ -45,11 +53,45 @@ class Deriver {
                                        "); lower the number of steps or raise the limit");
             }
             std::swap(word, next);
+            report(ends[static_cast<size_t>(step)]);
         }
+        report(1.0);
         return word;
     }
 
   private:
+    // The fraction of the derivation done after each step (ends[0] = 0, ends[steps] = 1):
+    // step k's share is the word it makes as word_growth() estimates it (the geometric mean
+    // of its bounds), since rewriting costs about one pass over the words.
+    std::vector<double> step_ends() const {
+        const int steps = std::max(settings_.steps, 0);
+        std::vector<double> ends(static_cast<size_t>(steps) + 1, 0.0);
+        if (!settings_.progress || steps == 0) return ends;
+        std::vector<double> work(static_cast<size_t>(steps) + 1, 1.0);
+        for (int k = 1; k <= steps; ++k) {
+            const WordGrowth g = word_growth(system_, k);
+            const double size =
+                std::sqrt(std::max(g.low_modules, 1.0)) * std::sqrt(std::max(g.high_modules, 1.0));
+            work[static_cast<size_t>(k)] = std::isfinite(size) ? std::min(size, 1e200) : 1e200;
+        }
+        double total = 0.0;
+        for (int k = 1; k <= steps; ++k) total += work[static_cast<size_t>(k)];
+        double done = 0.0;
+        for (int k = 1; k <= steps; ++k) {
+            done += work[static_cast<size_t>(k)];
+            ends[static_cast<size_t>(k)] = done / total;
+        }
+        ends[static_cast<size_t>(steps)] = 1.0;
+        return ends;
+    }
+
+    // Reports a fraction, never less than the last one reported.
+    void report(double fraction) {
+        if (!settings_.progress) return;
+        reported_ = std::max(reported_, static_cast<float>(std::clamp(fraction, 0.0, 1.0)));
+        settings_.progress(reported_);
+    }
+
     void rewrite(const Word& word, size_t i, Word& out) {
         const char symbol = word.symbol(i);
         const auto& candidates = by_symbol_[static_cast<unsigned char>(symbol)];
@@ -194,6 +236,7 @@ class Deriver {
     GradientNoise noise_;
     std::array<std::vector<size_t>, 256> by_symbol_;
     bool has_context_ = false;
+    float reported_ = 0.0f;
     std::vector<size_t> bracket_match_;
     std::vector<double> bindings_;
     std::vector<double> args_;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "core/cancel.h"
 #include "turtle/lsystem.h"
@@ -17,7 +18,11 @@ struct DeriveSettings {
     std::uint64_t seed = 1;
     // Derivation fails with a GrammarError naming the step once the word grows past this.
     std::size_t max_modules = 4'000'000;
-    CancelFlag cancel = nullptr;  // checked between steps; throws Cancelled
+    CancelFlag cancel = nullptr;  // checked between steps and every 4096 modules; throws Cancelled
+    // Called with the finished fraction of the whole derivation (rising, ends with 1), per
+    // step and every 4096 modules within one. A step's share is word_growth()'s estimate of
+    // its word, so the late, large steps get most of the bar.
+    std::function<void(float)> progress = nullptr;
 };
 
 // How big the word gets, known before deriving: symbol counts pushed through the rules

@@ -2,6 +2,8 @@
 // 1), the word read by the turtle (section 2). Registered in tree/growth.cpp.
 #pragma once
 
+#include <functional>
+
 #include "core/growth.h"
 #include "turtle/lsystem_parser.h"
 #include "turtle/turtle.h"
@@ -19,6 +21,8 @@ TurtleSettings turtle_settings(const TreeTemplate& tree);
 
 // The first stage alone: the template's grammar derived `generations` steps. Errors name
 // the template's file and line when it was read from one.
-Word derive_word(const TreeTemplate& tree, CancelFlag cancel = nullptr);
+// `progress` as DeriveSettings::progress.
+Word derive_word(const TreeTemplate& tree, CancelFlag cancel = nullptr,
+                 const std::function<void(float)>& progress = nullptr);
 
 }  // namespace sylva

@@ -90,7 +90,11 @@ class Interpreter {
 
     Skeleton run() {
         for (size_t i = 0; i < word_.size(); ++i) {
-            if (i % 4096 == 0) throw_if_cancelled(settings_.cancel);
+            if (i % 4096 == 0) {
+                throw_if_cancelled(settings_.cancel);
+                if (settings_.progress)
+                    settings_.progress(static_cast<float>(i) / static_cast<float>(word_.size()));
+            }
             std::span<const double> a = word_.args(i);
             auto arg = [&](double fallback) { return a.empty() ? fallback : a[0]; };
             switch (word_.symbol(i)) {
@@ -163,6 +167,7 @@ class Interpreter {
             apply_pipe_model(out_, static_cast<float>(settings_.pipe_tip_width * 0.5),
                              static_cast<float>(settings_.pipe_exponent));
         vary_widths();
+        if (settings_.progress) settings_.progress(1.0f);
         return std::move(out_);
     }
 

@@ -5,6 +5,7 @@
 // azimuth a; F moves along (cos e cos a, sin e, cos e sin a).
 #pragma once
 
+#include <functional>
 #include <glm/vec3.hpp>
 
 #include "core/cancel.h"
@@ -30,6 +31,9 @@ struct TurtleSettings {
     glm::dvec3 tropism{0.0, -1.0, 0.0};
     double elasticity = 0.0;      // 0 disables tropism
     CancelFlag cancel = nullptr;  // polled every few thousand modules; throws Cancelled
+    // Called with the fraction of the word read (rising, ends with 1), every few thousand
+    // modules.
+    std::function<void(float)> progress = nullptr;
 
     // Variation (issue 14, seed 004), from noise seeded by `seed`; every amount 0 draws the
     // word exactly as without them. A branch is the trunk or what a '[' starts; each has its

@@ -665,16 +665,16 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - state.job->started)
                 .count();
         // Time left: from the stage's own fraction once it has one, else from the estimate
-        // made before the job started (growth reports no fraction).
+        // made before the job started.
         double left = std::max(state.job_estimate.seconds - elapsed, 0.0);
         float shown = static_cast<float>(
             std::min(elapsed / std::max(state.job_estimate.seconds, 1e-3), 0.95));
-        if (stage != JobProgress::Growing && fraction > 0.02f) {
+        if (fraction > 0.02f) {
             left = elapsed / fraction * (1.0 - fraction);
             shown = fraction;
         }
         char label[64];
-        if (stage == JobProgress::Growing)
+        if (stage == JobProgress::Growing && fraction <= 0.02f)
             std::snprintf(label, sizeof label, "growing, ~%.0f s left", std::ceil(left));
         else
             std::snprintf(label, sizeof label, "%s %.0f%%, %.0f s left", stage_name(stage),

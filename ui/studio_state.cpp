@@ -63,6 +63,7 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
         options.budget =
             static_cast<std::size_t>(std::max(tree_template.params.triangle_budget, 0));
         options.cancel = &progress->cancel;
+        options.growth_progress = [&progress](float f) { progress->fraction = f; };
         options.progress = [&progress](float f) {
             progress->stage = JobProgress::Meshing;
             progress->fraction = f;

@@ -7,8 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <mutex>
 
+#include "colonization/colonization_growth.h"
 #include "core/tree_params.h"
+#include "tree/template_crown.h"
 
 namespace sylva::studio {
 namespace {
@@ -228,6 +232,35 @@ bool colonization_key(std::string_view key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
+// colonization_growth.h's why_max_no_grow_is_unused, which grows the tree: kept per set of
+// parameters, since the panel asks every frame. Empty when it cannot tell (a bad template).
+std::string max_no_grow_unused(const TreeTemplate& tree) {
+    std::string key = tree.growth;
+    for (const ParamInfo& info : param_infos()) {
+        char buffer[40];
+        std::snprintf(buffer, sizeof buffer, "|%.17g", *get_param(tree.params, info.key));
+        key += buffer;
+    }
+    static std::mutex mutex;
+    static std::map<std::string, std::string> known;
+    {
+        const std::lock_guard lock(mutex);
+        if (auto found = known.find(key); found != known.end()) return found->second;
+    }
+    std::string why;
+    try {
+        GrowthContext context;
+        context.template_crown = [](std::string_view name) { return template_crown(name); };
+        why = why_max_no_grow_is_unused(tree, context);
+    } catch (const std::exception&) {
+        // The growth reports the error itself; the slider stays enabled.
+    }
+    const std::lock_guard lock(mutex);
+    if (known.size() > 256) known.clear();
+    known.emplace(std::move(key), why);
+    return why;
+}
+
 }  // namespace
 
 std::string shortest_number(double value) {
@@ -334,6 +367,8 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
             mark(key,
                  "a turtle parameter: space colonization does not read it (tropism_variation "
                  "varies its growth directions)");
+        if (std::string why = max_no_grow_unused(tree); !why.empty())
+            mark("max_no_grow", std::move(why));
     } else {
         for (const ParamInfo& info : param_infos())
             if (colonization_key(info.key))

@@ -97,6 +97,30 @@ TEST(TemplateControls, InertParametersOfSpaceColonization) {
         EXPECT_FALSE(inert.contains(key)) << key;
 }
 
+// max_no_grow is greyed where the growth shows it has nothing to act on, with that reason:
+// the windswept pine never stalls; on the hedge the points a stalled node releases find no
+// node that can grow towards them. Where it acts (elm, maple) it stays enabled.
+TEST(TemplateControls, MaxNoGrowIsGreyedWhereTheGrowthGivesItNothingToDo) {
+    const auto windswept = inert_params(load_template("windswept"));
+    ASSERT_TRUE(windswept.contains("max_no_grow"));
+    EXPECT_NE(windswept.at("max_no_grow").find("never stalls"), std::string::npos);
+    const auto hedge = inert_params(load_template("hedge"));
+    ASSERT_TRUE(hedge.contains("max_no_grow"));
+    EXPECT_NE(hedge.at("max_no_grow").find("no growth comes of releasing"), std::string::npos);
+    for (const char* name : {"elm", "maple"})
+        EXPECT_FALSE(inert_params(load_template(name)).contains("max_no_grow")) << name;
+}
+
+// A node that stalls in the last pass still gets its max_no_grow passes: the growth waits
+// for its release instead of ending (the maple's last stall is 8 passes from the end).
+TEST(TemplateControls, MaxNoGrowActsOnAStallInTheLastPass) {
+    TreeTemplate maple = load_template("maple");
+    maple.params.max_no_grow = 0;
+    const Skeleton never = grow(maple);
+    maple.params.max_no_grow = 8;
+    EXPECT_NE(grow(maple).segments.size(), never.segments.size());
+}
+
 // What inert means: changing the parameter changes no segment of the skeleton. Checked on
 // every built-in L-system template for the parameters that act through the skeleton alone.
 TEST(TemplateControls, InertParametersChangeNoSkeleton) {
@@ -149,9 +173,7 @@ namespace {
 // built-in template, one way or the other (a slider moved down or up or to its low end,
 // another choice),
 // unless it is greyed out. `obstacle` is left out: switched on at its default place it may
-// miss the envelope, and its place sliders (checked here) then move it in. `max_no_grow` is
-// left out too: on the hedge and the windswept pine no value of it changed the skeleton
-// (0, 1, 8, 12, 13 tried), which neither these rules nor the growth explain yet.
+// miss the envelope, and its place sliders (checked here) then move it in.
 bool same_skeleton(const Skeleton& a, const Skeleton& b) {
     if (a.segments.size() != b.segments.size()) return false;
     for (std::size_t i = 0; i < a.segments.size(); ++i)
@@ -167,8 +189,7 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
         "trunk_resolution", "crown_resolution", "sphere_diameter", "crown_offset",
         "crown_fusion",     "joint_blend",      "crown_blend",     "crown_mesh",
         "crown_merge",      "drop_hidden",      "leaf_density",    "leaf_size",
-        "leaf_shape",       "triangle_budget",  "obstacle",        "max_no_grow",
-        "color_variation"};
+        "leaf_shape",       "triangle_budget",  "obstacle",        "color_variation"};
     for (const TreeTemplate* t : builtin_templates()) {
         const auto inert = inert_params(*t);
         const Skeleton base = grow(*t);
