@@ -142,6 +142,18 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
                     fail(source, origins[m],
                          "overlaps polygon " + std::to_string(k) + " (vertex " + std::to_string(v) +
                              " lies inside it)");
+            // An edge of m through k's inside whose ends lie on k's outline (no vertex inside,
+            // no crossing): its midpoint is inside k (fuzz finding: an orchard plot over a path).
+            const std::size_t n = other.vertices.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const glm::dvec2 mid = 0.5 * (mesh.vertices[other.vertices[i]] +
+                                              mesh.vertices[other.vertices[(i + 1) % n]]);
+                if (point_in_polygon(mid, pts, eps) > 0)
+                    fail(source, origins[m],
+                         "overlaps polygon " + std::to_string(k) + " (edge " +
+                             std::to_string(other.vertices[i]) + "-" +
+                             std::to_string(other.vertices[(i + 1) % n]) + " runs inside it)");
+            }
             const glm::dvec2 inside = interior_point(mesh, other);
             if (point_in_polygon(inside, pts, eps) > 0)
                 fail(source, origins[m], "overlaps polygon " + std::to_string(k));
