@@ -7,7 +7,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <optional>
 #include <set>
+#include <span>
 
 #include "core/errors.h"
 #include "core/stopwatch.h"
@@ -32,11 +34,11 @@ constexpr float kMinRadiusInCells = 0.9f;
 // sphere_field.h).
 constexpr float kMergeToleranceInCells = 0.125f;
 
-std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
+std::vector<CappedCone> resolvable_cones(std::span<const Segment> segments, float cell) {
     const float min_radius = kMinRadiusInCells * cell;
     std::vector<CappedCone> cones;
-    cones.reserve(skeleton.segments.size());
-    for (const Segment& s : skeleton.segments)
+    cones.reserve(segments.size());
+    for (const Segment& s : segments)
         if (std::max(s.ra, s.rb) > 0.0f)
             cones.push_back({s.a, s.b, std::max(s.ra, min_radius), std::max(s.rb, min_radius)});
     // Copies of one segment (brackets that redraw it, with or without tiny turns) add
@@ -44,6 +46,11 @@ std::vector<CappedCone> resolvable_cones(const Skeleton& skeleton, float cell) {
     // cell is below what it resolves.
     return merge_coincident_cones(std::move(cones), kMergeToleranceInCells * cell);
 }
+
+// The trunk's field over `segments` meshed with cells of `cell`; empty when no segment has a
+// width.
+std::optional<ConeField> trunk_field(std::span<const Segment> segments, float cell,
+                                     float joint_blend, CancelFlag cancel);
 
 // The culled fields are exact within this many cells of the surface (all marching cubes
 // interpolates) and a lower bound of the distance beyond it, which is all the sparse mesher
@@ -53,6 +60,14 @@ constexpr float kFieldMarginInCells = 3.0f;
 float cell_size(const Box& box, int resolution) {
     glm::vec3 extent = box.max - box.min;
     return std::max({extent.x, extent.y, extent.z}) / static_cast<float>(resolution);
+}
+
+std::optional<ConeField> trunk_field(std::span<const Segment> segments, float cell,
+                                     float joint_blend, CancelFlag cancel) {
+    std::vector<CappedCone> cones = resolvable_cones(segments, cell);
+    if (cones.empty()) return std::nullopt;
+    return std::optional<ConeField>(std::in_place, std::move(cones),
+                                    kFieldMarginInCells * cell + joint_blend, joint_blend, cancel);
 }
 
 // Meshes a field with the chosen mesher; this part reports its progress as the slice
@@ -239,19 +254,17 @@ int cells_along(const Box& box, float cell) {
 }
 
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const FieldCells& cells,
-                       CancelFlag cancel) {
+                       CancelFlag cancel, bool with_trunk_field) {
     TreeFields fields;
     // The joint blend swells the union by up to joint_blend / 4 where cones meet.
     float joint_blend = static_cast<float>(p.joint_blend);
     fields.trunk_box = skeleton_bounds(skeleton);
     fields.trunk_box.min -= glm::vec3(joint_blend);
     fields.trunk_box.max += glm::vec3(joint_blend);
-    float trunk_cell = fit_to_cells(fields.trunk_box, cells.trunk, p.trunk_resolution);
-    std::vector<CappedCone> cones = resolvable_cones(skeleton, trunk_cell);
+    fields.trunk_cell = fit_to_cells(fields.trunk_box, cells.trunk, p.trunk_resolution);
     throw_if_cancelled(cancel);
-    if (!cones.empty())
-        fields.trunk.emplace(std::move(cones), kFieldMarginInCells * trunk_cell + joint_blend,
-                             joint_blend, cancel);
+    if (with_trunk_field)
+        fields.trunk = trunk_field(skeleton.segments, fields.trunk_cell, joint_blend, cancel);
     throw_if_cancelled(cancel);
 
     std::vector<Ball> balls = crown_spheres(skeleton, p);
@@ -301,39 +314,45 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     check_extent(out.skeleton);
     throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
-    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel);
+    const bool crown_wanted = p.crown_mesh != 0;
+    // A game mesh's trunk leaves out the branches the crown hides (drop_hidden): its field is
+    // built once the crown's says which those are, not twice.
+    const bool drop_hidden = crown_wanted && options.budget > 0 && p.drop_hidden != 0;
+    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel, !drop_hidden);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
     throw_if_cancelled(options.cancel);
-    if (!fields.trunk)
-        throw InputError(
-            "the tree has no trunk: the derived word draws no segment with a "
-            "width above zero (it needs F, and a width from branch_width or !)");
-    const bool mesh_crown = fields.crown && p.crown_mesh != 0;
-    // The trunk as meshed: for a game mesh, without the branches the crown hides.
-    std::optional<ConeField> visible_trunk;
-    Box visible_box = fields.trunk_box;
-    if (mesh_crown && options.budget > 0 && p.drop_hidden != 0) {
+    const bool mesh_crown = fields.crown && crown_wanted;
+    const float joint_blend = static_cast<float>(p.joint_blend);
+    Box trunk_box = fields.trunk_box;
+    if (drop_hidden && fields.crown) {
         Skeleton shown;
         const float cell = cell_size(fields.trunk_box, p.trunk_resolution);
         shown.segments = visible_segments(out.skeleton, *fields.crown, kMinRadiusInCells * cell);
         out.hidden_segments = out.skeleton.segments.size() - shown.segments.size();
         if (!shown.segments.empty() && out.hidden_segments > 0) {
-            visible_box = skeleton_bounds(shown);
-            const float joint_blend = static_cast<float>(p.joint_blend);
-            visible_box.min -= glm::vec3(joint_blend);
-            visible_box.max += glm::vec3(joint_blend);
-            const float visible_cell = cell_size(visible_box, p.trunk_resolution);
-            visible_trunk.emplace(resolvable_cones(shown, visible_cell),
-                                  kFieldMarginInCells * visible_cell + joint_blend, joint_blend,
-                                  options.cancel);
+            trunk_box = skeleton_bounds(shown);
+            trunk_box.min -= glm::vec3(joint_blend);
+            trunk_box.max += glm::vec3(joint_blend);
+            fields.trunk = trunk_field(shown.segments, cell_size(trunk_box, p.trunk_resolution),
+                                       joint_blend, options.cancel);
         }
     }
-    const ConeField& trunk_field = visible_trunk ? *visible_trunk : *fields.trunk;
+    if (!fields.trunk && drop_hidden) {  // nothing hidden, or nothing shown
+        out.hidden_segments = 0;
+        trunk_box = fields.trunk_box;
+        fields.trunk =
+            trunk_field(out.skeleton.segments, fields.trunk_cell, joint_blend, options.cancel);
+    }
+    throw_if_cancelled(options.cancel);
+    if (!fields.trunk)
+        throw InputError(
+            "the tree has no trunk: the derived word draws no segment with a "
+            "width above zero (it needs F, and a width from branch_width or !)");
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
     out.trunk =
-        mesh_field(trunk_field, visible_box, p.trunk_resolution, options, 0.0f, trunk_share);
+        mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
     out.times.push_back({"trunk mesh", clock.lap_ms()});
     if (mesh_crown) {
         MeshOptions crown_options = options;

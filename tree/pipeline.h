@@ -68,6 +68,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options = {});
 // see (exposed for benchmarks and tests).
 struct TreeFields {
     Box trunk_box;
+    float trunk_cell = 0.0f;         // the trunk's cell (its box is a whole number of them)
     std::optional<ConeField> trunk;  // empty when no segment has a width
     Box crown_box;
     std::optional<SphereField> crown;  // empty without tips or with sphere_diameter 0
@@ -82,8 +83,11 @@ struct FieldCells {
 };
 // Throws Cancelled once `cancel` is set (building the trunk's field takes a while on a
 // tree of many thousand segments).
+// with_trunk_field false: the trunk's box and cell only (its field is left empty for a
+// caller that builds it from the segments it keeps).
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
-                       const FieldCells& cells = {}, CancelFlag cancel = nullptr);
+                       const FieldCells& cells = {}, CancelFlag cancel = nullptr,
+                       bool with_trunk_field = true);
 
 // The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
 int cells_along(const Box& box, float cell);
