@@ -373,9 +373,8 @@ Mesh sample_and_mesh(const BatchField& field, const Grid& grid, const MeshSettin
     return mesh;
 }
 
-}  // namespace
-
-Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& settings) {
+// vdb_mesh() itself: this file is the module marching/vdb_module.cpp loads.
+Mesh vdb_mesh_here(const BatchField& field, const Box& box, const MeshSettings& settings) {
     const Grid grid = make_grid(box, settings);
     const VdbSettings& vdb = settings.vdb;
     if (!(vdb.adaptivity >= 0.0 && vdb.adaptivity <= 1.0)) {
@@ -397,4 +396,9 @@ Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& setti
     return mesh;
 }
 
+}  // namespace
 }  // namespace sylva
+
+extern "C" __attribute__((visibility("default"))) sylva::VdbMeshFunction sylva_vdb_mesh_entry() {
+    return sylva::vdb_mesh_here;
+}

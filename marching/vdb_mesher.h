@@ -47,6 +47,15 @@ namespace sylva {
 //
 // Throws InputError as marching_cubes() does, and when settings.vdb.adaptivity is outside
 // [0, 1] or settings.vdb.band_voxels below 1; Cancelled when cancelled.
+//
+// Loading: OpenVDB lives in a module of its own (libsylva_vdb.so, marching/vdb_module.cpp),
+// loaded on the first call: linked into every program, its 61,000 relocations cost each
+// process about 37 ms at start, more than a whole game export of a small tree. The module is
+// looked for in $SYLVA_VDB_MODULE, next to the running program, then where the build put
+// it; throws IoError naming the places tried when none loads.
 Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& settings);
+
+// The module's entry point (extern "C" sylva_vdb_mesh_entry) returns this.
+using VdbMeshFunction = Mesh (*)(const BatchField&, const Box&, const MeshSettings&);
 
 }  // namespace sylva
