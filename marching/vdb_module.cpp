@@ -30,17 +30,20 @@ VdbMeshFunction load_module() {
         // RTLD_LOCAL: the module keeps its own copies of the few Sylva functions it uses.
         void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!module) {
-            if (std::filesystem::exists(path)) tried += std::string("\n  ") + dlerror();
-            else tried += "\n  " + path.string() + ": not found";
+            if (std::filesystem::exists(path))
+                tried += std::string("\n  ") + dlerror();
+            else
+                tried += "\n  " + path.string() + ": not found";
             continue;
         }
-        auto* entry = reinterpret_cast<VdbMeshFunction (*)()>(dlsym(module, "sylva_vdb_mesh_entry"));
+        auto* entry =
+            reinterpret_cast<VdbMeshFunction (*)()>(dlsym(module, "sylva_vdb_mesh_entry"));
         if (entry) return entry();
         tried += "\n  " + path.string() + ": no sylva_vdb_mesh_entry";
     }
-    throw IoError("the OpenVDB mesher is not available: its module " + std::string(kModuleName) +
-                  " did not load (set SYLVA_VDB_MODULE to its path, or use --mesher sparse):" +
-                  tried);
+    throw IoError(
+        "the OpenVDB mesher is not available: its module " + std::string(kModuleName) +
+        " did not load (set SYLVA_VDB_MODULE to its path, or use --mesher sparse):" + tried);
 }
 
 }  // namespace
