@@ -1,11 +1,14 @@
 #include "sdf/bin_grid.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 #include <limits>
+#include <utility>
 
 namespace sylva {
 
@@ -39,30 +42,34 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
         glm::vec3 centre = origin_ + (glm::vec3(x, y, z) + 0.5f) * bin_size_;
         return overlaps(i, centre, bin_radius);
     };
-    // Two passes (count, then fill) give a compact CSR layout with items in box order.
+    // Each box's bins, tested once (the overlap test is a primitive's distance per bin; the
+    // boxes are tested in parallel, in chunks kept in box order), then a counting sort into
+    // a compact CSR layout with items in box order.
+    constexpr std::size_t kChunk = 256;
+    const std::size_t chunks = (boxes.size() + kChunk - 1) / kChunk;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> listed(chunks);  // bin, box
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+        if (is_cancelled(cancel)) return;
+        for (std::size_t i = c * kChunk; i < std::min(boxes.size(), (c + 1) * kChunk); ++i) {
+            glm::ivec3 lo, hi;
+            range(boxes[i], lo, hi);
+            for (int z = lo.z; z <= hi.z; ++z)
+                for (int y = lo.y; y <= hi.y; ++y)
+                    for (int x = lo.x; x <= hi.x; ++x)
+                        if (keep(i, x, y, z))
+                            listed[c].emplace_back(static_cast<std::uint32_t>(index(x, y, z)),
+                                                   static_cast<std::uint32_t>(i));
+        }
+    });
+    throw_if_cancelled(cancel);
     bin_start_.assign(static_cast<size_t>(dims_.x) * dims_.y * dims_.z + 1, 0);
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        if ((i & 255) == 255) throw_if_cancelled(cancel);
-        glm::ivec3 lo, hi;
-        range(boxes[i], lo, hi);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    if (keep(i, x, y, z)) ++bin_start_[index(x, y, z) + 1];
-    }
+    for (const auto& chunk : listed)
+        for (const auto& [bin, box] : chunk) ++bin_start_[bin + 1];
     for (size_t b = 1; b < bin_start_.size(); ++b) bin_start_[b] += bin_start_[b - 1];
     bin_items_.resize(bin_start_.back());
     std::vector<std::uint32_t> fill(bin_start_.begin(), bin_start_.end() - 1);
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        if ((i & 255) == 255) throw_if_cancelled(cancel);
-        glm::ivec3 lo, hi;
-        range(boxes[i], lo, hi);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    if (keep(i, x, y, z))
-                        bin_items_[fill[index(x, y, z)]++] = static_cast<std::uint32_t>(i);
-    }
+    for (const auto& chunk : listed)
+        for (const auto& [bin, box] : chunk) bin_items_[fill[bin]++] = box;
 
     // Breadth-first over the 26-neighbourhood from every occupied bin: Chebyshev distances.
     const size_t count = bin_start_.size() - 1;

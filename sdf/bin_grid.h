@@ -27,8 +27,10 @@ class BinGrid {
     // `overlaps(i, centre, radius)`, when given, refines box i's bins: a bin is kept only if
     // it returns true for the ball (centre, radius) around the bin, so long diagonal
     // primitives are not listed in every bin of their bounding box.
-    // Throws Cancelled once `cancel` is set (polled every 256 boxes: a grid over tens of
-    // thousands of cones takes a noticeable time to build).
+    // `overlaps` is called from several threads at once (boxes are binned in parallel); the
+    // result does not depend on the thread count. Throws Cancelled once `cancel` is set
+    // (polled per 256 boxes: a grid over tens of thousands of cones takes a noticeable time
+    // to build).
     using Overlap = std::function<bool(std::size_t, const glm::vec3&, float)>;
     BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest = 64,
             const Overlap& overlaps = {}, CancelFlag cancel = nullptr);
