@@ -8,6 +8,7 @@
 
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
+#include "tree/crown_hulls.h"
 #include "tree/leaf_thinning.h"
 
 namespace sylva {
@@ -142,9 +143,21 @@ std::size_t leaf_budget(const TreeBudget& budget) {
     return budget.total > 0 ? budget.total : std::numeric_limits<std::size_t>::max();
 }
 
+std::size_t crown_hull_count(const TreeBudget& budget) {
+    const std::size_t total = budget.trunk || budget.crown
+                                  ? budget.trunk.value_or(0) + budget.crown.value_or(0)
+                                  : budget.total;
+    const bool hulls = budget.crown_shape == CrownShape::Automatic
+                           ? total > 0 && total < kCrownHullBudget
+                           : budget.crown_shape == CrownShape::Hulls;
+    if (!hulls) return 0;
+    return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / kTrianglesPerHull);
+}
+
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
-    const auto [trunk, crown] = solids_to_reduce(tree);
+    auto [trunk, crown] = solids_to_reduce(tree);
+    if (const std::size_t hulls = crown_hull_count(budget)) crown = crown_hulls(crown, hulls);
     ReducedTree out = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
@@ -177,7 +190,10 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     const auto [finest_trunk, finest_crown] = solids_to_reduce(tree);
     for (const TreeBudget& budget : budgets) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
-        const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
+        const Mesh& finer_crown = levels.empty() ? finest_crown : levels.back().crown;
+        const std::size_t hull_count = crown_hull_count(budget);
+        const Mesh hulls = hull_count > 0 ? crown_hulls(finer_crown, hull_count) : Mesh{};
+        const Mesh& crown = hulls.triangles.empty() ? finer_crown : hulls;
         ReducedTree level = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;

@@ -11,6 +11,7 @@
 
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
+#include "tree/crown_hulls.h"
 #include "tree/pipeline.h"
 
 namespace sylva {
@@ -18,6 +19,13 @@ namespace sylva {
 // A game tree's trunk + crown triangles: the `triangle_budget` default, and where a LOD
 // chain starts when no budget is given.
 constexpr std::size_t kDefaultTriangleBudget = 800;
+
+// How a reduced crown is drawn (tree/crown_hulls.h).
+enum class CrownShape {
+    Automatic,  // hulls below kCrownHullBudget trunk + crown triangles, else blobs
+    Blobs,      // the crown's own surface, reduced
+    Hulls,      // the convex hulls of a few clusters of the crown, reduced
+};
 
 // How many triangles a tree keeps. Trunk + crown (the solids) are decimated to `total`;
 // leaves are not part of `total` but have a share of their own, `leaves`, which by default
@@ -36,7 +44,14 @@ struct TreeBudget {
     // Leaf triangles: at most this many (0: no leaves); unset: `total`, and every leaf
     // when `total` is 0 (no reduction).
     std::optional<std::size_t> leaves = std::nullopt;
+    // Whether the crown is reduced as it is or as the hulls of its pieces.
+    CrownShape crown_shape = CrownShape::Automatic;
 };
+
+// How many hulls `budget` draws the crown as (tree/crown_hulls.h): 0 for blobs; with
+// CrownShape::Hulls, or Automatic and a trunk + crown budget (total, or the parts' sum)
+// above 0 and below kCrownHullBudget, one per kTrianglesPerHull of that budget (8 at 200).
+std::size_t crown_hull_count(const TreeBudget& budget);
 
 // The leaf triangles `budget` allows; SIZE_MAX for every leaf.
 std::size_t leaf_budget(const TreeBudget& budget);
