@@ -149,9 +149,10 @@ int main(int argc, char** argv) {
                     f.mean_percent, f.max_percent, hausdorff, plain.resolution, plain.triangles,
                     ratio, reduced.within_budget ? "" : reduced.note.c_str());
         if (where) {
-            std::printf("    trunk %zu -> %zu, crown %zu -> %zu triangles\n",
+            std::printf("    trunk %zu -> %zu, crown %zu -> %zu triangles; %zu crown bridges\n",
                         tree.trunk.triangles.size(), reduced.trunk.triangles.size(),
-                        tree.crown.triangles.size(), reduced.crown.triangles.size());
+                        tree.crown.triangles.size(), reduced.crown.triangles.size(),
+                        tree.crown_bridges);
             print_farthest("reduced -> reference", merge_meshes(reduced_parts), reference,
                            f.height);
             print_farthest("reference -> reduced", reference, merge_meshes(reduced_parts),

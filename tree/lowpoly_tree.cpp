@@ -8,6 +8,8 @@
 
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
+#include "lowpoly/surface_sampling.h"
+#include "lowpoly/triangle_bvh.h"
 #include "tree/crown_hulls.h"
 #include "tree/leaf_thinning.h"
 
@@ -91,6 +93,51 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
     return out;
 }
 
+// The larger of the two one-sided distances between `a` and `b` (2,000 samples each way): a
+// reduced crown's Hausdorff distance from the crown it was made from.
+float sampled_hausdorff(const Mesh& a, const Mesh& b) {
+    constexpr std::size_t kSamples = 2000;
+    const TriangleBvh near_a(a), near_b(b);
+    float far = 0.0f;
+    for (const glm::vec3& p : sample_surface(a, kSamples)) far = std::max(far, near_b.distance(p));
+    for (const glm::vec3& p : sample_surface(b, kSamples)) far = std::max(far, near_a.distance(p));
+    return far;
+}
+
+// Trunk and crown to the budget, the crown drawn as crown_hull_count() says. With hulls, the
+// shared reduction runs on the hulls (they need fewer triangles than the blobs; the trunk's
+// branches get the rest). In the automatic mode two other crowns are then reduced alone to
+// the triangles the hulls kept, the crown's own surface and half as many hulls again, and
+// the one with the smallest Hausdorff distance from the crown is kept: a near-convex crown
+// (a conifer's cone) reads best as its own surface, an umbrella as few hulls, a long hedge
+// as more. The crown alone is a few thousand triangles and the hulls a few hundred, so
+// these reductions cost little beside the trunk's.
+ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const TreeBudget& budget,
+                          const DecimateSettings& settings) {
+    const std::size_t hull_count = crown_hull_count(budget);
+    const Mesh hulls = hull_count > 0 ? crown_hulls(crown, hull_count) : Mesh{};
+    if (hulls.triangles.empty()) return reduce_solids(trunk, crown, budget, settings);
+    ReducedTree out = reduce_solids(trunk, hulls, budget, settings);
+    if (budget.crown_shape != CrownShape::Automatic || out.crown.triangles.empty()) return out;
+    DecimateSettings alone = settings;
+    alone.progress = nullptr;
+    alone.max_triangles = out.crown.triangles.size();
+    float best = sampled_hausdorff(out.crown, crown);
+    const Mesh more_hulls = crown_hulls(crown, hull_count * 3 / 2);
+    for (const Mesh* candidate : {&crown, &more_hulls}) {
+        if (candidate->triangles.empty()) continue;
+        DecimateResult r = decimate(*candidate, alone);
+        if (!r.within_budget) continue;
+        const float d = sampled_hausdorff(r.parts[0], crown);
+        if (d >= best) continue;
+        best = d;
+        out.crown = std::move(r.parts[0]);
+        out.handles_cut += r.handles_cut;
+        out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
+    }
+    return out;
+}
+
 // The tree's trunk and crown without inner shells: hollows are invisible and only cost
 // triangles (lowpoly/inner_shells.h).
 std::pair<Mesh, Mesh> solids_to_reduce(const Tree& tree) {
@@ -156,9 +203,8 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
 
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
-    auto [trunk, crown] = solids_to_reduce(tree);
-    if (const std::size_t hulls = crown_hull_count(budget)) crown = crown_hulls(crown, hulls);
-    ReducedTree out = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
+    const auto [trunk, crown] = solids_to_reduce(tree);
+    ReducedTree out = reduce_shaped(trunk, crown, budget, with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -178,6 +224,7 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
         TreeBudget b;
         b.total = std::max<std::size_t>(finest.total >> i, 4);
         b.leaves = i < 64 ? leaves >> i : 0;  // SIZE_MAX (every leaf) halves like a number
+        b.crown_shape = finest.crown_shape;
         budgets.push_back(b);
     }
     return budgets;
@@ -190,11 +237,8 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     const auto [finest_trunk, finest_crown] = solids_to_reduce(tree);
     for (const TreeBudget& budget : budgets) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
-        const Mesh& finer_crown = levels.empty() ? finest_crown : levels.back().crown;
-        const std::size_t hull_count = crown_hull_count(budget);
-        const Mesh hulls = hull_count > 0 ? crown_hulls(finer_crown, hull_count) : Mesh{};
-        const Mesh& crown = hulls.triangles.empty() ? finer_crown : hulls;
-        ReducedTree level = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
+        const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
+        ReducedTree level = reduce_shaped(trunk, crown, budget, with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;

@@ -22,7 +22,8 @@ constexpr std::size_t kDefaultTriangleBudget = 800;
 
 // How a reduced crown is drawn (tree/crown_hulls.h).
 enum class CrownShape {
-    Automatic,  // hulls below kCrownHullBudget trunk + crown triangles, else blobs
+    Automatic,  // below kCrownHullBudget trunk + crown triangles the better (by a sampled
+                // Hausdorff distance from the crown) of hulls, more hulls and blobs; else blobs
     Blobs,      // the crown's own surface, reduced
     Hulls,      // the convex hulls of a few clusters of the crown, reduced
 };
@@ -79,7 +80,8 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
 std::vector<std::size_t> lod_budgets(std::size_t finest = kDefaultTriangleBudget,
                                      std::size_t levels = 4);
 // The same for whole budgets: LOD0 gets `finest` (its total, at least 4), each further level
-// half the total and half the leaves of the one before (per-part budgets are not used).
+// half the total and half the leaves of the one before (per-part budgets are not used), all
+// with its crown shape.
 std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels);
 
 // A LOD chain, finest first. Level 0 is reduced from the tree, every further level from the

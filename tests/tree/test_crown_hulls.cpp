@@ -99,7 +99,8 @@ TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
         const ReducedTree reduced = reduce_tree(tree, budget);
         expect_closed_outward(reduced.trunk, "trunk");
         expect_closed_outward(reduced.crown, "crown");
-        EXPECT_LE(component_volumes(reduced.crown).size(), crown_hull_count(budget));
+        // The hulls, or half as many again when those keep closer to the crown.
+        EXPECT_LE(component_volumes(reduced.crown).size(), crown_hull_count(budget) * 3 / 2);
         glm::vec3 lo, hi, trunk_lo, trunk_hi, crown_lo, crown_hi;
         bounds(tree.crown, lo, hi);
         bounds(tree.trunk, trunk_lo, trunk_hi);
