@@ -21,7 +21,7 @@ inline constexpr std::size_t kCrownHullBudget = 400;
 // A game crown's budget buys about one hull per this many trunk + crown triangles: 8 hulls
 // at 200 (fewer hulls fill the crown's hollows, as under a drooping or umbrella crown; more
 // leave each too few triangles after the reduction). Measured with sylva-bench-lowpoly;
-// reduce_tree (tree/lowpoly_tree.h) also tries half as many again and the blobs.
+// reduce_tree (tree/lowpoly_tree.h) also tries half as many again.
 inline constexpr std::size_t kTrianglesPerHull = 25;
 
 // The crown's vertices split into `hulls` clusters (k-means, seeded by farthest points, so

@@ -22,8 +22,8 @@ constexpr std::size_t kDefaultTriangleBudget = 800;
 
 // How a reduced crown is drawn (tree/crown_hulls.h).
 enum class CrownShape {
-    Automatic,  // below kCrownHullBudget trunk + crown triangles the better (by a sampled
-                // Hausdorff distance from the crown) of hulls, more hulls and blobs; else blobs
+    Automatic,  // hulls below kCrownHullBudget trunk + crown triangles when the crown has
+                // handles (blobs touching in rings), else blobs
     Blobs,      // the crown's own surface, reduced
     Hulls,      // the convex hulls of a few clusters of the crown, reduced
 };
@@ -49,9 +49,11 @@ struct TreeBudget {
     CrownShape crown_shape = CrownShape::Automatic;
 };
 
-// How many hulls `budget` draws the crown as (tree/crown_hulls.h): 0 for blobs; with
+// How many hulls `budget` may draw the crown as (tree/crown_hulls.h): 0 for blobs; with
 // CrownShape::Hulls, or Automatic and a trunk + crown budget (total, or the parts' sum)
 // above 0 and below kCrownHullBudget, one per kTrianglesPerHull of that budget (8 at 200).
+// reduce_tree() then takes these or half as many again, whichever keeps closer to the
+// crown, and in the automatic mode only for a crown with handles.
 std::size_t crown_hull_count(const TreeBudget& budget);
 
 // The leaf triangles `budget` allows; SIZE_MAX for every leaf.

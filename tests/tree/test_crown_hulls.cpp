@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <glm/common.hpp>
 #include <string>
+#include <utility>
 
 #include "marching/mesh_checks.h"
 #include "tree/crown_hulls.h"
@@ -84,9 +85,10 @@ TEST(CrownHulls, HullsAreTheDefaultOnlyAtLowBudgetsAndAnOption) {
     EXPECT_EQ(crown_hull_count(b), 0u);
 }
 
-// The many-blob crowns (ternary: hundreds of tip spheres; willow: a hanging curtain) at the
-// budget where issue 11 saw a spray of shards: a few closed outward hulls within the tree's
-// box, and a trunk and a crown that each keep a real share of the budget.
+// The many-blob crowns (ternary: hundreds of tip spheres; willow: a hanging curtain; both
+// with handles where blobs touch in rings) at the budget where issue 11 saw a spray of
+// shards: a few closed outward hulls within the tree's box, and a trunk and a crown that
+// each keep a real share of the budget.
 TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
     for (const std::string name : {"ternary", "willow"}) {
         SCOPED_TRACE(name);
@@ -121,11 +123,26 @@ TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
         // A share: at least a quarter of the budget each (tree/lowpoly_tree.cpp's floor).
         EXPECT_GE(reduced.trunk.triangles.size(), budget.total / 4);
         EXPECT_GE(reduced.crown.triangles.size(), budget.total / 4);
-        // Blobs on request: the crown reduced as meshed, closed and outward as well.
+        // Blobs on request: the crown reduced as meshed, closed and outward as well, and
+        // not what the automatic mode drew (these crowns have handles: hulls).
         budget.crown_shape = CrownShape::Blobs;
         const ReducedTree blobs = reduce_tree(tree, budget);
         expect_closed_outward(blobs.crown, "blob crown");
+        EXPECT_NE(blobs.crown.positions, reduced.crown.positions);
     }
+}
+
+// The automatic choice for a crown of sphere-like pieces (pine: a cone of blobs, no tunnel):
+// its own surface, as CrownShape::Blobs gives it. (Crowns with handles, above, get hulls.)
+TEST(CrownHulls, ACrownWithoutHandlesKeepsItsOwnSurface) {
+    TreeBudget budget;
+    budget.total = 200;
+    MeshOptions options;
+    options.budget = budget.total;
+    const Tree tree = generate_tree(load_template("pine"), options);
+    const ReducedTree automatic = reduce_tree(tree, budget);
+    budget.crown_shape = CrownShape::Blobs;
+    EXPECT_EQ(automatic.crown.positions, reduce_tree(tree, budget).crown.positions);
 }
 
 }  // namespace
