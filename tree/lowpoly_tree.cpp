@@ -136,14 +136,18 @@ bool has_handles(const Mesh& mesh) {
 // hulls again, reduced alone to the same triangles, replace them when they keep closer to
 // the crown (a sampled Hausdorff distance): a long hedge wants more hulls than an
 // umbrella. Hulls are a few hundred triangles, so that costs little.
-ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const TreeBudget& budget,
-                          const DecimateSettings& settings) {
+// `hull_source` is the crown the hulls are made of and measured against: the crown itself,
+// or in a LOD chain the finest level's (a coarser level's crown, already hulls, has as many
+// pieces as the level before kept, more than a smaller budget can draw).
+ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
+                          const TreeBudget& budget, const DecimateSettings& settings) {
     const std::size_t hull_count = crown_hull_count(budget);
-    if (hull_count == 0 || (budget.crown_shape == CrownShape::Automatic && !has_handles(crown)))
+    if (hull_count == 0 ||
+        (budget.crown_shape == CrownShape::Automatic && !has_handles(hull_source)))
         return reduce_solids(trunk, crown, budget, settings);
-    const Mesh hulls = crown_hulls(crown, hull_count);
+    const Mesh hulls = crown_hulls(hull_source, hull_count);
     ReducedTree out = reduce_solids(trunk, hulls, budget, settings);
-    const Mesh more_hulls = crown_hulls(crown, hull_count * 3 / 2);
+    const Mesh more_hulls = crown_hulls(hull_source, hull_count * 3 / 2);
     if (out.crown.triangles.empty() || more_hulls.triangles.size() <= hulls.triangles.size())
         return out;
     DecimateSettings alone = settings;
@@ -151,7 +155,7 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const TreeBudget
     alone.max_triangles = out.crown.triangles.size();
     DecimateResult more = decimate(more_hulls, alone);
     if (more.within_budget &&
-        sampled_hausdorff(more.parts[0], crown) < sampled_hausdorff(out.crown, crown)) {
+        sampled_hausdorff(more.parts[0], hull_source) < sampled_hausdorff(out.crown, hull_source)) {
         out.crown = std::move(more.parts[0]);
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     }
@@ -224,7 +228,7 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
     const auto [trunk, crown] = solids_to_reduce(tree);
-    ReducedTree out = reduce_shaped(trunk, crown, budget, with_foot(settings, tree.trunk));
+    ReducedTree out = reduce_shaped(trunk, crown, crown, budget, with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -258,7 +262,8 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     for (const TreeBudget& budget : budgets) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
-        ReducedTree level = reduce_shaped(trunk, crown, budget, with_foot(settings, tree.trunk));
+        ReducedTree level =
+            reduce_shaped(trunk, crown, finest_crown, budget, with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;

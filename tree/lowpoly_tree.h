@@ -92,7 +92,9 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
 // trunk is pinned to the tree's ground: where a reduction lifted or sank the trunk's lowest
 // point, the bottom of the trunk is stretched back to it (the rest of the level stays put).
 // Leaves are thinned from the tree's for each level, so a coarser level keeps a subset of
-// the leaves of a finer one. Errors as reduce_tree().
+// the leaves of a finer one. A level whose crown is drawn as hulls (crown_hull_count())
+// makes them from the finest crown, as many as its own budget buys. Errors as
+// reduce_tree().
 std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
                                         const DecimateSettings& settings = {});
 

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "marching/mesh_checks.h"
 #include "tree/crown_hulls.h"
@@ -143,6 +144,30 @@ TEST(CrownHulls, ACrownWithoutHandlesKeepsItsOwnSurface) {
     const ReducedTree automatic = reduce_tree(tree, budget);
     budget.crown_shape = CrownShape::Blobs;
     EXPECT_EQ(automatic.crown.positions, reduce_tree(tree, budget).crown.positions);
+}
+
+// A LOD chain through the hull budgets: every level within its budget (a level's hulls are
+// made from the finest crown, as many as its budget buys, not from the level before, whose
+// pieces a smaller budget could not draw), per-part counts never rising, every part sound.
+TEST(CrownHulls, ALowBudgetLodChainMeetsEveryLevelsBudget) {
+    TreeBudget finest;
+    finest.total = 300;
+    finest.leaves = 0;
+    MeshOptions options;
+    options.budget = finest.total;
+    const Tree tree = generate_tree(load_template("honda"), options);
+    const std::vector<TreeBudget> budgets = lod_budgets(finest, 4);
+    const std::vector<ReducedTree> levels = make_lod_chain(tree, budgets);
+    ASSERT_EQ(levels.size(), budgets.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        SCOPED_TRACE("LOD" + std::to_string(i));
+        EXPECT_LE(levels[i].triangles, budgets[i].total);
+        expect_closed_outward(levels[i].trunk, "trunk");
+        expect_closed_outward(levels[i].crown, "crown");
+        if (i == 0) continue;
+        EXPECT_LE(levels[i].trunk.triangles.size(), levels[i - 1].trunk.triangles.size());
+        EXPECT_LE(levels[i].crown.triangles.size(), levels[i - 1].crown.triangles.size());
+    }
 }
 
 }  // namespace
