@@ -13,8 +13,11 @@
 // marching-cubes resolution (trunk and crown) whose mean error is at most the reduced
 // tree's, and its triangles; ratio = MC tris / reduced tris (target >= 5).
 //
-// Usage: sylva-bench-lowpoly [--budget N] [--quick] [TEMPLATE...]
+// Usage: sylva-bench-lowpoly [--budget N] [--quick] [--where] [TEMPLATE...]
 //   --quick  the reference at resolution 120 instead of 200 (a rough look in a minute)
+//   --where  also where each direction's largest distance is, and the triangles each part
+//            kept: to find what a budget loses
+//   --fidelity-only  skip the marching-cubes match and the speed run (MC columns show 0)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -26,6 +29,8 @@
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
+#include "lowpoly/surface_sampling.h"
+#include "lowpoly/triangle_bvh.h"
 #include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
@@ -61,6 +66,23 @@ PlainMatch plain_match(const TreeTemplate& tmpl, const Mesh& reference, double t
     return {};
 }
 
+// The sample of `from` farthest from `to` (the same samples measure_fidelity takes), and
+// its distance in % of `height`.
+void print_farthest(const char* label, const Mesh& from, const Mesh& to, double height) {
+    const TriangleBvh bvh(to);
+    glm::vec3 where(0.0f);
+    float farthest = -1.0f;
+    for (const glm::vec3& p : sample_surface(from, 20000, 1)) {
+        const float d = bvh.distance(p);
+        if (d > farthest) {
+            farthest = d;
+            where = p;
+        }
+    }
+    std::printf("    %s: %.2f%% at (%.2f, %.2f, %.2f)\n", label, 100.0 * farthest / height, where.x,
+                where.y, where.z);
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -71,6 +93,7 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 int main(int argc, char** argv) {
     std::size_t budget = 800;
     int reference_resolution = 200;
+    bool where = false, fidelity_only = false;
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -78,6 +101,10 @@ int main(int argc, char** argv) {
             budget = std::strtoul(argv[++i], nullptr, 10);
         else if (arg == "--quick")
             reference_resolution = 120;
+        else if (arg == "--where")
+            where = true;
+        else if (arg == "--fidelity-only")
+            fidelity_only = true;
         else
             names.push_back(arg);
     }
@@ -107,7 +134,9 @@ int main(int argc, char** argv) {
         const Mesh* reduced_parts[] = {&reduced.trunk, &reduced.crown};
         const Fidelity back = measure_fidelity(reference, merge_meshes(reduced_parts));
         const double hausdorff = std::max(f.max_percent, back.max_percent);
-        const PlainMatch plain = plain_match(tmpl, reference, f.mean_percent, reference_resolution);
+        const PlainMatch plain =
+            fidelity_only ? PlainMatch{}
+                          : plain_match(tmpl, reference, f.mean_percent, reference_resolution);
         const bool is_closed = closed(reduced.trunk) && closed(reduced.crown);
         char ratio[16] = "-";
         if (plain.resolution > 0)
@@ -119,9 +148,20 @@ int main(int argc, char** argv) {
                     reduced.triangles, reduced.handles_cut, reduce_ms, is_closed ? "yes" : "NO",
                     f.mean_percent, f.max_percent, hausdorff, plain.resolution, plain.triangles,
                     ratio, reduced.within_budget ? "" : reduced.note.c_str());
+        if (where) {
+            std::printf("    trunk %zu -> %zu, crown %zu -> %zu triangles; %zu crown bridges\n",
+                        tree.trunk.triangles.size(), reduced.trunk.triangles.size(),
+                        tree.crown.triangles.size(), reduced.crown.triangles.size(),
+                        tree.crown_bridges);
+            print_farthest("reduced -> reference", merge_meshes(reduced_parts), reference,
+                           f.height);
+            print_farthest("reference -> reduced", reference, merge_meshes(reduced_parts),
+                           f.height);
+        }
         std::fflush(stdout);
     }
 
+    if (fidelity_only) return 0;
     // Reduction speed: the default tree meshed to about 100k triangles, best of 5.
     TreeTemplate tmpl = default_template();
     Tree tree;

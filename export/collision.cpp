@@ -4,8 +4,8 @@
 #include <limits>
 #include <map>
 
+#include "core/convex_hull.h"
 #include "core/disjoint_sets.h"
-#include "export/convex_hull.h"
 #include "export/part_attributes.h"
 
 namespace sylva {

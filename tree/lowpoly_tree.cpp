@@ -6,8 +6,12 @@
 #include <limits>
 #include <utility>
 
+#include "core/disjoint_sets.h"
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
+#include "lowpoly/surface_sampling.h"
+#include "lowpoly/triangle_bvh.h"
+#include "tree/crown_hulls.h"
 #include "tree/leaf_thinning.h"
 
 namespace sylva {
@@ -90,6 +94,74 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
     return out;
 }
 
+// The larger of the two one-sided distances between `a` and `b` (2,000 samples each way): a
+// reduced crown's Hausdorff distance from the crown it was made from.
+float sampled_hausdorff(const Mesh& a, const Mesh& b) {
+    constexpr std::size_t kSamples = 2000;
+    const TriangleBvh near_a(a), near_b(b);
+    float far = 0.0f;
+    for (const glm::vec3& p : sample_surface(a, kSamples)) far = std::max(far, near_b.distance(p));
+    for (const glm::vec3& p : sample_surface(b, kSamples)) far = std::max(far, near_a.distance(p));
+    return far;
+}
+
+// Whether a closed mesh has a handle (a tunnel, where blobs touch in a ring): the sum of
+// its pieces' genera from the Euler characteristic, V - E + F = 2 (pieces - genus), with
+// E = 3F / 2 on a closed 2-manifold.
+bool has_handles(const Mesh& mesh) {
+    DisjointSets sets(mesh.positions.size());
+    std::vector<bool> used(mesh.positions.size(), false);
+    for (const auto& t : mesh.triangles) {
+        sets.unite(t[0], t[1]);
+        sets.unite(t[1], t[2]);
+        used[t[0]] = used[t[1]] = used[t[2]] = true;
+    }
+    long vertices = 0, pieces = 0;
+    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+        if (!used[v]) continue;
+        ++vertices;
+        if (sets.find(v) == v) ++pieces;
+    }
+    const long euler = vertices - static_cast<long>(mesh.triangles.size()) / 2;
+    return 2 * pieces - euler > 0;
+}
+
+// Trunk and crown to the budget, the crown drawn as crown_hull_count() says. In the
+// automatic mode only a crown with handles becomes hulls: where blobs touch in rings the
+// reduction must keep each tunnel (a dozen triangles) or cut it, and spends the budget on
+// spikes and slabs; a crown of sphere-like pieces (a conifer's cone) reads better as its
+// own surface reduced (measured with sylva-bench-lowpoly: the blobs won on exactly the
+// templates whose crown has no handle). The shared reduction runs on the hulls (they need
+// fewer triangles than the blobs; the trunk's branches get the rest); then half as many
+// hulls again, reduced alone to the same triangles, replace them when they keep closer to
+// the crown (a sampled Hausdorff distance): a long hedge wants more hulls than an
+// umbrella. Hulls are a few hundred triangles, so that costs little.
+// `hull_source` is the crown the hulls are made of and measured against: the crown itself,
+// or in a LOD chain the finest level's (a coarser level's crown, already hulls, has as many
+// pieces as the level before kept, more than a smaller budget can draw).
+ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
+                          const TreeBudget& budget, const DecimateSettings& settings) {
+    const std::size_t hull_count = crown_hull_count(budget);
+    if (hull_count == 0 ||
+        (budget.crown_shape == CrownShape::Automatic && !has_handles(hull_source)))
+        return reduce_solids(trunk, crown, budget, settings);
+    const Mesh hulls = crown_hulls(hull_source, hull_count);
+    ReducedTree out = reduce_solids(trunk, hulls, budget, settings);
+    const Mesh more_hulls = crown_hulls(hull_source, hull_count * 3 / 2);
+    if (out.crown.triangles.empty() || more_hulls.triangles.size() <= hulls.triangles.size())
+        return out;
+    DecimateSettings alone = settings;
+    alone.progress = nullptr;
+    alone.max_triangles = out.crown.triangles.size();
+    DecimateResult more = decimate(more_hulls, alone);
+    if (more.within_budget &&
+        sampled_hausdorff(more.parts[0], hull_source) < sampled_hausdorff(out.crown, hull_source)) {
+        out.crown = std::move(more.parts[0]);
+        out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
+    }
+    return out;
+}
+
 // The tree's trunk and crown without inner shells: hollows are invisible and only cost
 // triangles (lowpoly/inner_shells.h).
 std::pair<Mesh, Mesh> solids_to_reduce(const Tree& tree) {
@@ -142,10 +214,21 @@ std::size_t leaf_budget(const TreeBudget& budget) {
     return budget.total > 0 ? budget.total : std::numeric_limits<std::size_t>::max();
 }
 
+std::size_t crown_hull_count(const TreeBudget& budget) {
+    const std::size_t total = budget.trunk || budget.crown
+                                  ? budget.trunk.value_or(0) + budget.crown.value_or(0)
+                                  : budget.total;
+    const bool hulls = budget.crown_shape == CrownShape::Automatic
+                           ? total > 0 && total < kCrownHullBudget
+                           : budget.crown_shape == CrownShape::Hulls;
+    if (!hulls) return 0;
+    return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / kTrianglesPerHull);
+}
+
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
     const auto [trunk, crown] = solids_to_reduce(tree);
-    ReducedTree out = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
+    ReducedTree out = reduce_shaped(trunk, crown, crown, budget, with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -165,6 +248,7 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
         TreeBudget b;
         b.total = std::max<std::size_t>(finest.total >> i, 4);
         b.leaves = i < 64 ? leaves >> i : 0;  // SIZE_MAX (every leaf) halves like a number
+        b.crown_shape = finest.crown_shape;
         budgets.push_back(b);
     }
     return budgets;
@@ -178,7 +262,8 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     for (const TreeBudget& budget : budgets) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
-        ReducedTree level = reduce_solids(trunk, crown, budget, with_foot(settings, tree.trunk));
+        ReducedTree level =
+            reduce_shaped(trunk, crown, finest_crown, budget, with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;

@@ -11,6 +11,7 @@
 
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
+#include "tree/crown_hulls.h"
 #include "tree/pipeline.h"
 
 namespace sylva {
@@ -18,6 +19,14 @@ namespace sylva {
 // A game tree's trunk + crown triangles: the `triangle_budget` default, and where a LOD
 // chain starts when no budget is given.
 constexpr std::size_t kDefaultTriangleBudget = 800;
+
+// How a reduced crown is drawn (tree/crown_hulls.h).
+enum class CrownShape {
+    Automatic,  // hulls below kCrownHullBudget trunk + crown triangles when the crown has
+                // handles (blobs touching in rings), else blobs
+    Blobs,      // the crown's own surface, reduced
+    Hulls,      // the convex hulls of a few clusters of the crown, reduced
+};
 
 // How many triangles a tree keeps. Trunk + crown (the solids) are decimated to `total`;
 // leaves are not part of `total` but have a share of their own, `leaves`, which by default
@@ -36,7 +45,16 @@ struct TreeBudget {
     // Leaf triangles: at most this many (0: no leaves); unset: `total`, and every leaf
     // when `total` is 0 (no reduction).
     std::optional<std::size_t> leaves = std::nullopt;
+    // Whether the crown is reduced as it is or as the hulls of its pieces.
+    CrownShape crown_shape = CrownShape::Automatic;
 };
+
+// How many hulls `budget` may draw the crown as (tree/crown_hulls.h): 0 for blobs; with
+// CrownShape::Hulls, or Automatic and a trunk + crown budget (total, or the parts' sum)
+// above 0 and below kCrownHullBudget, one per kTrianglesPerHull of that budget (8 at 200).
+// reduce_tree() then takes these or half as many again, whichever keeps closer to the
+// crown, and in the automatic mode only for a crown with handles.
+std::size_t crown_hull_count(const TreeBudget& budget);
 
 // The leaf triangles `budget` allows; SIZE_MAX for every leaf.
 std::size_t leaf_budget(const TreeBudget& budget);
@@ -64,7 +82,8 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
 std::vector<std::size_t> lod_budgets(std::size_t finest = kDefaultTriangleBudget,
                                      std::size_t levels = 4);
 // The same for whole budgets: LOD0 gets `finest` (its total, at least 4), each further level
-// half the total and half the leaves of the one before (per-part budgets are not used).
+// half the total and half the leaves of the one before (per-part budgets are not used), all
+// with its crown shape.
 std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels);
 
 // A LOD chain, finest first. Level 0 is reduced from the tree, every further level from the
@@ -73,7 +92,9 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
 // trunk is pinned to the tree's ground: where a reduction lifted or sank the trunk's lowest
 // point, the bottom of the trunk is stretched back to it (the rest of the level stays put).
 // Leaves are thinned from the tree's for each level, so a coarser level keeps a subset of
-// the leaves of a finer one. Errors as reduce_tree().
+// the leaves of a finer one. A level whose crown is drawn as hulls (crown_hull_count())
+// makes them from the finest crown, as many as its own budget buys. Errors as
+// reduce_tree().
 std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
                                         const DecimateSettings& settings = {});
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "export/convex_hull.h"
+#include "core/convex_hull.h"
 #include "export/export_tree.h"
 #include "export/part_attributes.h"
 #include "export/wind_motion.h"

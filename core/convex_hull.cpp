@@ -1,4 +1,4 @@
-#include "export/convex_hull.h"
+#include "core/convex_hull.h"
 
 #include <algorithm>
 #include <cmath>

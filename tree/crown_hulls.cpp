@@ -1,0 +1,89 @@
+#include "tree/crown_hulls.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <vector>
+
+#include "core/convex_hull.h"
+
+namespace sylva {
+namespace {
+
+// Appends `piece` to `out`, indices shifted past what `out` holds.
+void append(Mesh& out, const Mesh& piece) {
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    out.positions.insert(out.positions.end(), piece.positions.begin(), piece.positions.end());
+    for (const auto& t : piece.triangles)
+        out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+// Lloyd's k-means on `points`, seeded by farthest-point sampling from the first point
+// (deterministic): the cluster of each point.
+std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& points, std::size_t k) {
+    std::vector<glm::vec3> centers{points.front()};
+    std::vector<float> nearest(points.size(), std::numeric_limits<float>::max());
+    while (centers.size() < k) {
+        std::size_t far = 0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            nearest[i] = std::min(nearest[i], glm::distance(points[i], centers.back()));
+            if (nearest[i] > nearest[far]) far = i;
+        }
+        if (nearest[far] <= 0.0f) break;
+        centers.push_back(points[far]);
+    }
+    std::vector<std::uint32_t> cluster(points.size(), 0);
+    for (int round = 0; round < 20; ++round) {
+        bool changed = false;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            std::uint32_t best = 0;
+            float best_d = std::numeric_limits<float>::max();
+            for (std::uint32_t c = 0; c < centers.size(); ++c) {
+                const glm::vec3 d = points[i] - centers[c];
+                const float d2 = glm::dot(d, d);
+                if (d2 < best_d) {
+                    best_d = d2;
+                    best = c;
+                }
+            }
+            changed |= cluster[i] != best;
+            cluster[i] = best;
+        }
+        if (!changed && round > 0) break;
+        std::vector<glm::vec3> sum(centers.size(), glm::vec3(0.0f));
+        std::vector<std::size_t> count(centers.size(), 0);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            sum[cluster[i]] += points[i];
+            ++count[cluster[i]];
+        }
+        for (std::size_t c = 0; c < centers.size(); ++c)
+            if (count[c] > 0) centers[c] = sum[c] / static_cast<float>(count[c]);
+    }
+    return cluster;
+}
+
+}  // namespace
+
+Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
+    std::vector<bool> used(crown.positions.size(), false);
+    for (const auto& t : crown.triangles) used[t[0]] = used[t[1]] = used[t[2]] = true;
+    std::vector<glm::vec3> points;
+    for (std::size_t v = 0; v < crown.positions.size(); ++v)
+        if (used[v]) points.push_back(crown.positions[v]);
+    if (points.size() < 4 || hulls == 0) return crown;
+    const std::vector<std::uint32_t> cluster = k_means(points, hulls);
+    const std::uint32_t clusters = *std::max_element(cluster.begin(), cluster.end()) + 1;
+    Mesh out;
+    for (std::uint32_t c = 0; c < clusters; ++c) {
+        std::vector<glm::vec3> members;
+        for (std::size_t i = 0; i < points.size(); ++i)
+            if (cluster[i] == c) members.push_back(points[i]);
+        const Mesh hull = extreme_point_hull(members);
+        if (hull.triangles.empty()) return crown;  // a flat cluster: keep the blobs
+        append(out, hull);
+    }
+    return out;
+}
+
+}  // namespace sylva
