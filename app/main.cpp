@@ -43,7 +43,8 @@ constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 
 Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
-                 [--budget-leaves N] [--lod] [--mesher KIND] -o OUT.{obj,glb,ply}
+                 [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
+                 -o OUT.{obj,glb,ply}
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
@@ -72,6 +73,9 @@ Usage:
                    carries at most 800 leaf triangles more), every leaf with --budget 0.
                    Leaves are thinned, not reduced: an even, seeded subset of whole leaves
                    is kept, each grown (up to 2x) so the crown looks as dense
+  --crown-shape S  how a reduced crown is drawn: auto (default: below 400 triangles a crown
+                   whose blobs touch in rings becomes a few convex hulls), blobs (its own
+                   surface, reduced) or hulls (always hulls)
   --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --format F       obj, glb or ply (default: from the extension of OUT)
@@ -123,6 +127,7 @@ struct Options {
     std::string output;
     MeshOptions mesh;
     std::optional<std::size_t> budget, budget_trunk, budget_crown, budget_leaves;
+    CrownShape crown_shape = CrownShape::Automatic;
     bool lod = false;
     bool fidelity = false;
     const ExportFormat* format = nullptr;
@@ -184,6 +189,16 @@ Options parse_options(int argc, char** argv) {
             o.budget_crown = parse_integer<std::size_t>(arg, value());
         } else if (arg == "--budget-leaves") {
             o.budget_leaves = parse_integer<std::size_t>(arg, value());
+        } else if (arg == "--crown-shape") {
+            const std::string name = value();
+            if (name == "auto")
+                o.crown_shape = CrownShape::Automatic;
+            else if (name == "blobs")
+                o.crown_shape = CrownShape::Blobs;
+            else if (name == "hulls")
+                o.crown_shape = CrownShape::Hulls;
+            else
+                throw UsageError("--crown-shape expects auto, blobs or hulls, not '" + name + "'");
         } else if (arg == "--lod") {
             o.lod = true;
         } else if (arg == "--fidelity") {
@@ -284,6 +299,7 @@ int run_export(const Options& o) {
     finish.budget.trunk = o.budget_trunk;
     finish.budget.crown = o.budget_crown;
     finish.budget.leaves = o.budget_leaves;
+    finish.budget.crown_shape = o.crown_shape;
     finish.lod = o.lod;
     MeshOptions mesh = o.mesh;
     mesh.budget = game_budget(finish);

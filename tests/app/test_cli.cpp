@@ -309,3 +309,22 @@ TEST_F(Cli, StartsWithoutOpenVdbAndLoadsItForTheVdbMesher) {
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_TRUE(fs::exists(path("tree.obj")));
 }
+
+// --crown-shape: hulls draw the crown as a few convex pieces; a wrong name is refused.
+TEST_F(Cli, CrownShapeHullsAndAWrongName) {
+    const Result hulls =
+        run("export -t honda --budget 200 --crown-shape hulls -o " + path("hulls.obj"));
+    EXPECT_EQ(hulls.code, 0) << hulls.output;
+    const Result blobs =
+        run("export -t honda --budget 200 --crown-shape blobs -o " + path("blobs.obj"));
+    EXPECT_EQ(blobs.code, 0) << blobs.output;
+    std::ifstream a(path("hulls.obj")), b(path("blobs.obj"));
+    const std::string hull_text((std::istreambuf_iterator<char>(a)), {});
+    const std::string blob_text((std::istreambuf_iterator<char>(b)), {});
+    EXPECT_NE(hull_text, blob_text) << "the crown shape changed nothing";
+    const Result wrong = run("export --crown-shape cubes -o " + path("x.obj"));
+    EXPECT_NE(wrong.code, 0);
+    EXPECT_NE(wrong.output.find("--crown-shape expects auto, blobs or hulls"), std::string::npos)
+        << wrong.output;
+    EXPECT_FALSE(fs::exists(path("x.obj")));
+}
