@@ -18,6 +18,7 @@
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
 #include "ui/panels.h"
+#include "ui/release_bench.h"
 #include "ui/scale_figure.h"
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
@@ -39,6 +40,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -413,6 +415,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
     state.view.wind = options.wind_seconds.has_value();
     state.view.forest = options.forest_preview;
+    state.wake = [] { glfwPostEmptyEvent(); };
+    std::optional<ReleaseBench> bench;
+    if (options.bench_release) {
+        bench = parse_release_bench(*options.bench_release);
+        bench->hold_ms = options.bench_hold_ms;
+    }
     start_generation(state);
     ForestPreview forest;  // ui/forest_preview.h
     VariantsStrip strip;   // ui/variants_strip.h
@@ -429,16 +437,20 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     FrameRate frame_rate;
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
         // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
-        // while anything runs or is being edited it draws every frame.
-        const bool busy = options.screenshot_path || state.view.wind || generation_running(state) ||
-                          !state.stale.empty() || state.export_job.valid() ||
-                          ImGui::IsAnyItemActive() || state.view.turntable ||
-                          forest_preview_running(forest);
-        if (busy)
+        // while anything moves or is being edited it draws every frame. While only workers
+        // run it draws when one has something to show (state.wake) or input comes, and a few
+        // times a second for the progress bar: a software renderer (Xvfb's llvmpipe) spends
+        // both cores on a frame, which the reduction waits for otherwise.
+        const bool animating = options.screenshot_path || state.view.wind ||
+                               ImGui::IsAnyItemActive() || state.view.turntable ||
+                               (bench && bench->phase != ReleaseBench::Released);
+        const bool waiting = generation_running(state) || !state.stale.empty() ||
+                             state.export_job.valid() || forest_preview_running(forest);
+        if (animating)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(0.25);
-        frame_rate.tick(glfwGetTime(), busy);
+            glfwWaitEventsTimeout(waiting ? 0.2 : 0.25);
+        frame_rate.tick(glfwGetTime(), animating);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
         ImGui_ImplOpenGL3_NewFrame();
@@ -514,7 +526,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // Live mode follows every edit; a new generation cancels the stale one. While a slider
         // is held the low-poly view shows drafts (no reduction); the game mesh follows on
         // release. The undo history records an edit once the widget is let go.
-        state.dragging = ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left);
+        set_dragging(state,
+                     bench ? drive_release_bench(*bench, state)
+                           : ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
@@ -541,6 +555,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             window_title = title;
         }
 
+        if (bench && bench->phase == ReleaseBench::Released) {
+            glFinish();  // the frame is drawn before the clock is read
+            if (release_bench_done(*bench, state)) {
+                std::printf("%s\n", release_bench_report(*bench, state).c_str());
+                break;
+            }
+        }
         if (options.screenshot_path && state.tree && !generation_running(state) &&
             !variants_running(strip) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&

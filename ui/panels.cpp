@@ -707,12 +707,13 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
             ImGui::Text("trunk %zu  crown %zu  leaves %zu triangles%s",
                         parts.trunk.triangles.size(), parts.crown.triangles.size(),
                         parts.leaves.triangles.size(),
-                        shown.draft ? " (draft: the game mesh follows on release)" : "");
+                        shown.draft ? " (draft: the game mesh follows)" : "");
         }
         // The time to the tree on screen; each stage's in the tooltip (the line is full).
         ImGui::SameLine(0.0f, 0.0f);
         if (shown.reduced())
-            ImGui::Text("   |   reduce %.0f ms, %.0f ms in all", shown.reduce_ms,
+            ImGui::Text("   |   %s %.0f ms, %.0f ms in all",
+                        shown.reduction_reused ? "reduction kept" : "reduce", shown.reduce_ms,
                         state.last_wall_ms);
         else
             ImGui::Text("   |   %.0f ms in all", state.last_wall_ms);
