@@ -435,22 +435,24 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     std::string window_title;
     int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;
+    double frame_seconds = 0.0;  // the last frame's work, without the wait before it
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
         // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
-        // while anything moves or is being edited it draws every frame. While only workers
-        // run it draws when one has something to show (state.wake) or input comes, and a few
-        // times a second for the progress bar: a software renderer (Xvfb's llvmpipe) spends
-        // both cores on a frame, which the reduction waits for otherwise.
-        const bool animating = options.screenshot_path || state.view.wind ||
-                               ImGui::IsAnyItemActive() || state.view.turntable ||
-                               (bench && bench->phase != ReleaseBench::Released);
+        // while anything moves it draws every frame. While workers run (a slider held still,
+        // say) it draws when one has something to show (state.wake) or input comes, and for
+        // the progress bar at most a tenth of the time: a software renderer (Xvfb's llvmpipe
+        // takes 30-80 ms of both cores per frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
                              state.export_job.valid() || forest_preview_running(forest);
+        const bool animating = options.screenshot_path || state.view.wind || state.view.turntable ||
+                               (ImGui::IsAnyItemActive() && !waiting) ||
+                               (bench && bench->phase == ReleaseBench::Drag);
         if (animating)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(waiting ? 0.2 : 0.25);
-        frame_rate.tick(glfwGetTime(), animating);
+            glfwWaitEventsTimeout(waiting ? std::clamp(9.0 * frame_seconds, 0.05, 0.5) : 0.25);
+        const double frame_start = glfwGetTime();
+        frame_rate.tick(frame_start, animating);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
         ImGui_ImplOpenGL3_NewFrame();
@@ -570,6 +572,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             break;
         }
         glfwSwapBuffers(window);
+        frame_seconds = glfwGetTime() - frame_start;
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);

@@ -728,6 +728,14 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
                 "in all: from the job's start (an edit, a slider let go) to the tree on screen";
             ImGui::SetTooltip("%s", stages.c_str());
         }
+        if (state.release_ms >= 0.0 && state.view.low_poly) {
+            ImGui::SameLine(0.0f, 0.0f);
+            ImGui::Text("   |   release %.0f ms", state.release_ms);
+            tooltip(
+                "From letting go of the last slider that changed the tree to its game mesh "
+                "arriving; 0 when the game mesh was there before it was let go (the "
+                "reduction runs while a slider is held still).");
+        }
     } else if (!generation_running(state)) {
         ImGui::TextUnformatted("no tree yet");
     }

@@ -320,6 +320,11 @@ void set_dragging(StudioState& state, bool dragging) {
         state.job->progress->draft = false;
         state.job->started = Clock::now();
     }
+    // The value let go at waited for a job of the drag: it starts now, the older job goes.
+    if (state.generate_wanted) {
+        state.generate_wanted = false;
+        start_generation(state);
+    }
     if (!state.drag_edited) return;
     state.drag_edited = false;
     if (preview_budget(state) == 0) return;

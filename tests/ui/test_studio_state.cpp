@@ -280,6 +280,33 @@ TEST(StudioState, ReleasingWhileTheJobMeshesKeepsThatJobAndTimesTheRelease) {
     EXPECT_FALSE(state.released_at);
 }
 
+TEST(StudioState, LettingGoStartsTheLastValueAtOnce) {
+    StudioState state = low_poly_state(300);
+    state.tree_template.params.trunk_resolution = 200;  // meshing takes a while
+    set_dragging(state, true);
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    const JobProgress* first = state.job->progress.get();
+    state.tree_template.params.tropism += 0.2;  // the slider moves on while it meshes
+    start_generation(state);
+    ASSERT_EQ(state.job->progress.get(), first);
+    EXPECT_TRUE(state.generate_wanted);
+
+    // Let go: the last value does not wait for the older job to mesh.
+    set_dragging(state, false);
+    EXPECT_FALSE(state.generate_wanted);
+    ASSERT_TRUE(state.job);
+    EXPECT_NE(state.job->progress.get(), first);
+    EXPECT_FALSE(state.job->progress->draft);
+    EXPECT_EQ(state.job->tree_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_TRUE(first->cancel);
+    EXPECT_TRUE(state.released_at);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_TRUE(state.tree->reduced());
+    EXPECT_EQ(state.shown_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_GT(state.release_ms, 0.0);
+}
+
 TEST(StudioState, ALeafEditKeepsTheReductionAndThinsTheNewLeaves) {
     StudioState state = low_poly_state(300);
     ASSERT_TRUE(state.tree && state.tree->reduced());
