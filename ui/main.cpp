@@ -444,8 +444,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // takes 30-80 ms of both cores per frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
                              state.export_job.valid() || forest_preview_running(forest);
-        const bool animating = options.screenshot_path || state.view.wind || state.view.turntable ||
-                               (ImGui::IsAnyItemActive() && !waiting) ||
+        const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
+                               state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
                                (bench && bench->phase == ReleaseBench::Drag);
         if (animating)
             glfwPollEvents();
@@ -561,10 +561,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             glFinish();  // the frame is drawn before the clock is read
             if (release_bench_done(*bench, state)) {
                 std::printf("%s\n", release_bench_report(*bench, state).c_str());
+                if (options.screenshot_path)
+                    save_back_buffer_png(*options.screenshot_path, width, height);
                 break;
             }
         }
-        if (options.screenshot_path && state.tree && !generation_running(state) &&
+        if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
             !variants_running(strip) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&
             !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
