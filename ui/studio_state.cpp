@@ -425,6 +425,7 @@ void start_generation(StudioState& state) {
         state.requested = state.tree_template;
         state.requested_budget = budget;
         state.generate_wanted = false;
+        state.cost_warning.clear();  // it was for a value left since
         return;
     }
     state.requested = state.tree_template;
