@@ -19,6 +19,7 @@
 #include "tree/leaf_thinning.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
+#include "ui/leaves_only.h"
 
 namespace sylva::studio {
 namespace {
@@ -56,10 +57,16 @@ int worker_threads() {
 GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
                        const std::shared_ptr<JobProgress>& progress,
                        const std::shared_ptr<const GeneratedTree>& base,
+                       const std::shared_ptr<const GeneratedTree>& leaves_base,
                        const std::shared_ptr<const GeneratedTree>& previous) {
     GeneratedTree out;
+    std::optional<Tree> releaved;
+    if (leaves_base)
+        releaved = with_new_leaves(leaves_base->tree, tree_template, &progress->cancel);
     if (base) {
         out.tree = base->tree;
+    } else if (releaved) {
+        out.tree = std::move(*releaved);
     } else {
         MeshOptions options;
         options.threads = worker_threads();
@@ -117,9 +124,10 @@ GenerationJob launch(GenerationJob job) {
     job.result = promise.get_future();
     job.worker = std::jthread([promise = std::move(promise), tree_template = job.tree_template,
                                budget = job.budget, progress = job.progress, base = job.base,
-                               previous = job.previous]() mutable {
+                               leaves_base = job.leaves_base, previous = job.previous]() mutable {
         try {
-            promise.set_value(generate(tree_template, budget, progress, base, previous));
+            promise.set_value(
+                generate(tree_template, budget, progress, base, leaves_base, previous));
         } catch (...) {
             promise.set_exception(std::current_exception());
         }
@@ -479,6 +487,8 @@ void start_generation(StudioState& state) {
     // Only the reduction changes (low poly switched on, another budget): keep the meshes.
     if (state.tree && same_tree_input(state.shown_template, state.tree_template))
         job.base = state.tree;
+    else if (state.tree && leaves_only_edit(state.shown_template, state.tree_template))
+        job.leaves_base = state.tree;  // only the leaves are scattered again
     job.previous = state.tree;
     // The worker gets its own copies: editing while it runs is safe.
     state.job = launch(std::move(job));

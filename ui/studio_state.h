@@ -116,6 +116,9 @@ struct GenerationJob {
     // are reused and only the reduction runs.
     std::shared_ptr<const GeneratedTree> base;
     bool during_drag = false;  // started while a slider was held
+    // The tree on screen when only the leaves' parameters changed: its skeleton, trunk and
+    // crown are kept and only the leaves scattered again (ui/leaves_only.h).
+    std::shared_ptr<const GeneratedTree> leaves_base;
     // The tree on screen when the job started: a job whose trunk and crown come out the same
     // reuses its reduction (reuse_reduction()).
     std::shared_ptr<const GeneratedTree> previous;
