@@ -33,6 +33,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -447,10 +448,16 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
                                state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
                                (bench && bench->phase == ReleaseBench::Drag);
+        double timeout = waiting ? std::clamp(9.0 * frame_seconds, 0.05, 0.5) : 0.25;
+        if (bench && bench->phase == ReleaseBench::Hold)  // let go on time
+            timeout = std::clamp(
+                std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
+                    .count(),
+                0.0, timeout);
         if (animating)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(waiting ? std::clamp(9.0 * frame_seconds, 0.05, 0.5) : 0.25);
+            glfwWaitEventsTimeout(timeout);
         const double frame_start = glfwGetTime();
         frame_rate.tick(frame_start, animating);
         int width = 0, height = 0;
