@@ -62,7 +62,8 @@ TEST(LeavesOnly, NewLeavesAreThePipelinesOwn) {
             const std::optional<Tree> quick = with_new_leaves(shown, edit);
             ASSERT_TRUE(quick) << name;
             const Tree full = generate_tree(edit, options_for(edit));
-            EXPECT_TRUE(same_mesh(quick->leaves, full.leaves)) << name << " crown_mesh " << crown_mesh;
+            EXPECT_TRUE(same_mesh(quick->leaves, full.leaves))
+                << name << " crown_mesh " << crown_mesh;
             // The bush's leaves are the turtle's polygons alone: no leaf parameter moves them.
             if (std::string(name) != "bush") {
                 EXPECT_NE(quick->leaves.triangles.size(), shown.leaves.triangles.size()) << name;
