@@ -18,6 +18,7 @@
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
 #include "ui/panels.h"
+#include "ui/release_bench.h"
 #include "ui/scale_figure.h"
 #include "ui/screenshot.h"
 #include "ui/studio_options.h"
@@ -32,6 +33,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -39,6 +41,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -413,6 +416,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
     state.view.wind = options.wind_seconds.has_value();
     state.view.forest = options.forest_preview;
+    state.wake = [] { glfwPostEmptyEvent(); };
+    std::optional<ReleaseBench> bench;
+    if (options.bench_release) {
+        bench = parse_release_bench(*options.bench_release);
+        bench->hold_ms = options.bench_hold_ms;
+    }
     start_generation(state);
     ForestPreview forest;  // ui/forest_preview.h
     VariantsStrip strip;   // ui/variants_strip.h
@@ -427,18 +436,30 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     std::string window_title;
     int uploaded_level = 0;  // the LOD level the viewport holds
     FrameRate frame_rate;
+    double frame_seconds = 0.0;  // the last frame's work, without the wait before it
     while (!glfwWindowShouldClose(window) && !state.quit_requested) {
         // Idle, the window sleeps until an event (or a moment passes, for ImGui's tooltips);
-        // while anything runs or is being edited it draws every frame.
-        const bool busy = options.screenshot_path || state.view.wind || generation_running(state) ||
-                          !state.stale.empty() || state.export_job.valid() ||
-                          ImGui::IsAnyItemActive() || state.view.turntable ||
-                          forest_preview_running(forest);
-        if (busy)
+        // while anything moves it draws every frame. While workers run (a slider held still,
+        // say) it draws when one has something to show (state.wake) or input comes, and for
+        // the progress bar at most a tenth of the time: a software renderer (Xvfb's llvmpipe
+        // takes 30-80 ms of both cores per frame) would otherwise take the worker's cores.
+        const bool waiting = generation_running(state) || !state.stale.empty() ||
+                             state.export_job.valid() || forest_preview_running(forest);
+        const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
+                               state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
+                               (bench && bench->phase == ReleaseBench::Drag);
+        double timeout = waiting ? std::clamp(9.0 * frame_seconds, 0.05, 0.5) : 0.25;
+        if (bench && bench->phase == ReleaseBench::Hold)  // let go on time
+            timeout = std::clamp(
+                std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
+                    .count(),
+                0.0, timeout);
+        if (animating)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(0.25);
-        frame_rate.tick(glfwGetTime(), busy);
+            glfwWaitEventsTimeout(timeout);
+        const double frame_start = glfwGetTime();
+        frame_rate.tick(frame_start, animating);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
         ImGui_ImplOpenGL3_NewFrame();
@@ -514,7 +535,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // Live mode follows every edit; a new generation cancels the stale one. While a slider
         // is held the low-poly view shows drafts (no reduction); the game mesh follows on
         // release. The undo history records an edit once the widget is let go.
-        state.dragging = ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left);
+        set_dragging(state,
+                     bench ? drive_release_bench(*bench, state)
+                           : ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
@@ -541,7 +564,16 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             window_title = title;
         }
 
-        if (options.screenshot_path && state.tree && !generation_running(state) &&
+        if (bench && bench->phase == ReleaseBench::Released) {
+            glFinish();  // the frame is drawn before the clock is read
+            if (release_bench_done(*bench, state)) {
+                std::printf("%s\n", release_bench_report(*bench, state).c_str());
+                if (options.screenshot_path)
+                    save_back_buffer_png(*options.screenshot_path, width, height);
+                break;
+            }
+        }
+        if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
             !variants_running(strip) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&
             !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
@@ -549,6 +581,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             break;
         }
         glfwSwapBuffers(window);
+        frame_seconds = glfwGetTime() - frame_start;
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);

@@ -707,12 +707,13 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
             ImGui::Text("trunk %zu  crown %zu  leaves %zu triangles%s",
                         parts.trunk.triangles.size(), parts.crown.triangles.size(),
                         parts.leaves.triangles.size(),
-                        shown.draft ? " (draft: the game mesh follows on release)" : "");
+                        shown.draft ? " (draft: the game mesh follows)" : "");
         }
         // The time to the tree on screen; each stage's in the tooltip (the line is full).
         ImGui::SameLine(0.0f, 0.0f);
         if (shown.reduced())
-            ImGui::Text("   |   reduce %.0f ms, %.0f ms in all", shown.reduce_ms,
+            ImGui::Text("   |   %s %.0f ms, %.0f ms in all",
+                        shown.reduction_reused ? "reduction kept" : "reduce", shown.reduce_ms,
                         state.last_wall_ms);
         else
             ImGui::Text("   |   %.0f ms in all", state.last_wall_ms);
@@ -726,6 +727,14 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
             stages +=
                 "in all: from the job's start (an edit, a slider let go) to the tree on screen";
             ImGui::SetTooltip("%s", stages.c_str());
+        }
+        if (state.release_ms >= 0.0 && state.view.low_poly) {
+            ImGui::SameLine(0.0f, 0.0f);
+            ImGui::Text("   |   release %.0f ms", state.release_ms);
+            tooltip(
+                "From letting go of the last slider that changed the tree to its game mesh "
+                "arriving; 0 when the game mesh was there before it was let go (the "
+                "reduction runs while a slider is held still).");
         }
     } else if (!generation_running(state)) {
         ImGui::TextUnformatted("no tree yet");

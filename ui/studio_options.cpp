@@ -69,6 +69,21 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--wind takes a time in seconds of at least 0, got '" +
                                  std::string(text) + "'");
             options.wind_seconds = seconds;
+        } else if (arg == "--bench-release") {
+            const std::string_view text = value();
+            if (text.find('=') == std::string_view::npos)
+                throw UsageError("--bench-release takes KEY=VALUE, got '" + std::string(text) +
+                                 "'");
+            options.bench_release = std::string(text);
+            options.low_poly = true;
+        } else if (arg == "--bench-hold") {
+            std::string_view text = value();
+            double ms = -1.0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), ms);
+            if (error != std::errc() || end != text.data() + text.size() || !(ms >= 0.0))
+                throw UsageError("--bench-hold takes milliseconds of at least 0, got '" +
+                                 std::string(text) + "'");
+            options.bench_hold_ms = ms;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -95,6 +110,7 @@ std::string studio_usage() {
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
            "                    [--forest-preview] [--screenshot PATH [--frames N]]\n"
+           "                    [--bench-release KEY=VALUE [--bench-hold MS]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -114,6 +130,12 @@ std::string studio_usage() {
            "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"
+           "  --bench-release KEY=VALUE\n"
+           "                     low-poly view on; once the game mesh shows, drag KEY's slider\n"
+           "                     to VALUE over 8 frames, let go, print the time from release\n"
+           "                     to the new game mesh on screen, and exit (with --screenshot:\n"
+           "                     saving that frame)\n"
+           "  --bench-hold MS    hold the slider still at VALUE this long before letting go\n"
            "  -h, --help         show this help\n"
            "\n"
            "Without a display, use the command-line tool instead: sylva export -o tree.obj\n";

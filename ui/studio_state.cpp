@@ -16,8 +16,10 @@
 #include "export/export_tree.h"
 #include "marching/marching_cubes.h"
 #include "tree/cost.h"
+#include "tree/leaf_thinning.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
+#include "ui/leaves_only.h"
 
 namespace sylva::studio {
 namespace {
@@ -48,14 +50,23 @@ int worker_threads() {
 }
 
 // The worker: the whole pipeline (or the shown tree's meshes, `base`), then the export's
-// LOD chain when a budget is given and the job is no draft. The chain's further levels are
-// reduced from level 0's few hundred triangles, so they cost little beside it.
+// LOD chain when a budget is given: the shown tree's own when the meshes came out the same
+// (reuse_reduction()), reduced otherwise. While a slider is held the meshes are handed over
+// as a draft first. The chain's further levels are reduced from level 0's few hundred
+// triangles, so they cost little beside it.
 GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
                        const std::shared_ptr<JobProgress>& progress,
-                       const std::shared_ptr<const GeneratedTree>& base) {
+                       const std::shared_ptr<const GeneratedTree>& base,
+                       const std::shared_ptr<const GeneratedTree>& leaves_base,
+                       const std::shared_ptr<const GeneratedTree>& previous) {
     GeneratedTree out;
+    std::optional<Tree> releaved;
+    if (leaves_base)
+        releaved = with_new_leaves(leaves_base->tree, tree_template, &progress->cancel);
     if (base) {
         out.tree = base->tree;
+    } else if (releaved) {
+        out.tree = std::move(*releaved);
     } else {
         MeshOptions options;
         options.threads = worker_threads();
@@ -71,13 +82,29 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
         out.tree = generate_tree(tree_template, options);
     }
     if (budget == 0) return out;
-    if (progress->draft) {
-        out.draft = true;
-        return out;
-    }
-    progress->stage = JobProgress::Reducing;
     progress->fraction = 0.0f;
     const Clock::time_point start = Clock::now();
+    if (previous) {
+        if (std::optional<FinishedTree> kept = reuse_reduction(*previous, out.tree, budget)) {
+            out.finished = std::move(*kept);
+            out.budget = budget;
+            out.reduction_reused = true;
+            out.reduce_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            return out;
+        }
+    }
+    if (progress->draft && !base) {
+        auto draft = std::make_shared<GeneratedTree>();
+        draft->tree = out.tree;
+        draft->draft = true;
+        {
+            const std::lock_guard lock(progress->draft_mutex);
+            progress->draft_tree = std::move(draft);
+        }
+        if (progress->wake) progress->wake();
+    }
+    // After the draft: a job that reduces is cancelled by a newer value of a held slider.
+    progress->stage = JobProgress::Reducing;
     FinishSettings finish;
     finish.budget.total = budget;
     finish.lod = true;
@@ -88,6 +115,25 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
     out.budget = budget;
     out.reduce_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return out;
+}
+
+// Runs generate() on a thread of its own: the result is set before the UI is woken, so the
+// loop that wakes finds it ready.
+GenerationJob launch(GenerationJob job) {
+    std::promise<GeneratedTree> promise;
+    job.result = promise.get_future();
+    job.worker = std::jthread([promise = std::move(promise), tree_template = job.tree_template,
+                               budget = job.budget, progress = job.progress, base = job.base,
+                               leaves_base = job.leaves_base, previous = job.previous]() mutable {
+        try {
+            promise.set_value(
+                generate(tree_template, budget, progress, base, leaves_base, previous));
+        } catch (...) {
+            promise.set_exception(std::current_exception());
+        }
+        if (progress->wake) progress->wake();
+    });
+    return job;
 }
 
 void apply_edit(StudioState& state, const TreeTemplate& edit) {
@@ -190,12 +236,44 @@ std::string crown_notice_for(const Tree& tree, const TreeParams& p) {
     return text;
 }
 
+// Shows the running job's draft, when it handed one over since the last look.
+void show_draft(StudioState& state) {
+    std::shared_ptr<const GeneratedTree> draft;
+    {
+        const std::lock_guard lock(state.job->progress->draft_mutex);
+        draft = std::move(state.job->progress->draft_tree);
+        state.job->progress->draft_tree.reset();
+    }
+    if (!draft) return;
+    state.tree = std::move(draft);
+    state.shown_template = state.job->tree_template;
+    state.tree_changed = true;
+    state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
+    state.error.clear();
+    state.error_line = state.error_column = 0;
+}
+
 }  // namespace
 
 bool same_template(const TreeTemplate& a, const TreeTemplate& b) {
     return same_tree_input(a, b) && a.name == b.name && a.description == b.description &&
            a.colors.trunk == b.colors.trunk && a.colors.crown == b.colors.crown &&
            a.colors.leaves == b.colors.leaves;
+}
+
+bool same_mesh(const Mesh& a, const Mesh& b) {
+    return a.positions == b.positions && a.triangles == b.triangles;
+}
+
+std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const Tree& tree,
+                                            std::size_t budget) {
+    if (!previous.reduced() || previous.budget != budget ||
+        !same_mesh(previous.tree.trunk, tree.trunk) || !same_mesh(previous.tree.crown, tree.crown))
+        return std::nullopt;
+    FinishedTree finished = previous.finished;
+    for (std::size_t i = 0; i < finished.levels.size(); ++i)
+        finished.levels[i].leaves = thin_leaves(tree.leaves, finished.leaf_budgets[i]);
+    return finished;
 }
 
 ShownParts shown_parts(const GeneratedTree& generated, int level) {
@@ -238,6 +316,35 @@ std::string totals_text(const GameMeshTotals& t) {
 
 bool draft_wanted(const StudioState& state) {
     return state.dragging && preview_budget(state) > 0;
+}
+
+void set_dragging(StudioState& state, bool dragging) {
+    const bool released = state.dragging && !dragging;
+    state.dragging = dragging;
+    if (!released) return;
+    // The job of the value let go at goes on to its game mesh without a draft, and its time
+    // counts from now.
+    if (state.job && state.job->progress->draft) {
+        state.job->progress->draft = false;
+        state.job->started = Clock::now();
+    }
+    // The value let go at waited for a job of the drag: it starts now, the older job goes.
+    if (state.generate_wanted) {
+        state.generate_wanted = false;
+        start_generation(state);
+    }
+    if (!state.drag_edited) return;
+    state.drag_edited = false;
+    if (preview_budget(state) == 0) return;
+    const bool shown = state.tree && state.tree->reduced() && !state.tree->draft &&
+                       same_tree_input(state.shown_template, state.tree_template) &&
+                       state.tree->budget == preview_budget(state) && !state.job;
+    if (shown) {
+        state.release_ms = 0;
+        state.released_at.reset();
+    } else {
+        state.released_at = Clock::now();
+    }
 }
 
 std::size_t preview_budget(const StudioState& state) {
@@ -312,20 +419,25 @@ bool asks_first(const StudioState& state, const Cost& cost) {
 void start_generation(StudioState& state) {
     const bool draft = draft_wanted(state);
     const std::size_t budget = preview_budget(state);
-    // A slider let go while its draft still meshes: that job reduces when it is done, and the
-    // time to the game mesh counts from now.
-    if (state.job && !draft && state.job->progress->draft && state.job->budget == budget &&
+    if (state.dragging) state.drag_edited = true;
+    // The running job already makes this edit (a slider let go at the value its job was
+    // started for): it goes on, without a draft once let go, and the time to the game mesh
+    // counts from now.
+    if (state.job && state.job->budget == budget &&
         same_tree_input(state.job->tree_template, state.tree_template)) {
-        state.job->progress->draft = false;
-        state.job->started = Clock::now();
+        if (!draft && state.job->progress->draft) {
+            state.job->progress->draft = false;
+            state.job->started = Clock::now();
+        }
         state.job->tree_template = state.tree_template;  // colours may have changed
         state.requested = state.tree_template;
-        state.requested_draft = false;
+        state.requested_budget = budget;
+        state.generate_wanted = false;
+        state.cost_warning.clear();  // it was for a value left since
         return;
     }
     state.requested = state.tree_template;
     state.requested_budget = budget;
-    state.requested_draft = draft;
     // A job the estimate puts over the limits (resolution 1500 took 68 s) waits for "run
     // anyway"; the tree on screen stays.
     const Cost cost = estimate_cost(state.tree_template, budget);
@@ -343,10 +455,14 @@ void start_generation(StudioState& state) {
     state.run_costly = false;
     state.cost_warning.clear();
     // Cancelling each step of a drag would show nothing while the slider moves: the drag's
-    // job runs to its end and the newest value follows it (poll_jobs starts it).
+    // job grows and meshes to its end and the newest value follows it (poll_jobs starts it).
+    // Once it reduces, its draft is on screen and the reduction is for a value already left.
     if (state.dragging && state.job && state.job->during_drag) {
-        state.generate_wanted = true;
-        return;
+        if (state.job->progress->stage != JobProgress::Reducing) {
+            state.generate_wanted = true;
+            return;
+        }
+        show_draft(state);  // handed over since the last poll: on screen before it goes
     }
     if (state.job) {
         state.job->progress->cancel = true;
@@ -366,14 +482,16 @@ void start_generation(StudioState& state) {
     job.tree_template = state.tree_template;
     job.budget = budget;
     job.progress->draft = draft;
+    job.progress->wake = state.wake;
     job.during_drag = state.dragging;
-    // Only the reduction changes (low poly switched on, a draft let go): keep the meshes.
+    // Only the reduction changes (low poly switched on, another budget): keep the meshes.
     if (state.tree && same_tree_input(state.shown_template, state.tree_template))
         job.base = state.tree;
+    else if (state.tree && leaves_only_edit(state.shown_template, state.tree_template))
+        job.leaves_base = state.tree;  // only the leaves are scattered again
+    job.previous = state.tree;
     // The worker gets its own copies: editing while it runs is safe.
-    job.result = std::async(std::launch::async, generate, job.tree_template, job.budget,
-                            job.progress, job.base);
-    state.job = std::move(job);
+    state.job = launch(std::move(job));
 }
 
 bool generation_running(const StudioState& state) {
@@ -402,6 +520,7 @@ void poll_jobs(StudioState& state) {
         }
         return true;
     });
+    if (state.job && !ready(state.job->result)) show_draft(state);
     if (state.job && ready(state.job->result)) {
         GenerationJob job = std::move(*state.job);
         state.job.reset();
@@ -414,9 +533,13 @@ void poll_jobs(StudioState& state) {
             state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
             state.error.clear();
             state.error_line = state.error_column = 0;
-            // Let go just as the draft finished: reduce it now (edit_pending does not see it,
-            // the request was already turned into a real one).
-            if (state.tree->draft && !job.progress->draft && !state.job) start_generation(state);
+            if (state.released_at && state.tree->reduced() &&
+                same_tree_input(state.shown_template, state.tree_template)) {
+                state.release_ms =
+                    std::chrono::duration<double, std::milli>(Clock::now() - *state.released_at)
+                        .count();
+                state.released_at.reset();
+            }
         } catch (const GrammarError& e) {
             // The GUI's error boundary: bad input becomes a message; the last tree stays.
             state.error = e.what();
@@ -451,8 +574,7 @@ void poll_jobs(StudioState& state) {
 
 bool edit_pending(const StudioState& state) {
     return !same_tree_input(state.tree_template, state.requested) ||
-           preview_budget(state) != state.requested_budget ||
-           (state.requested_draft && !draft_wanted(state));
+           preview_budget(state) != state.requested_budget;
 }
 
 bool commit_edit(StudioState& state) {

@@ -5,11 +5,14 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "export/export_tree.h"
@@ -36,12 +39,26 @@ struct GeneratedTree {
     // low-poly view is off, or this is a draft).
     FinishedTree finished;
     std::size_t budget = 0;  // what `finished` was reduced to
-    // The low-poly view wanted a reduction but a slider was being dragged: the raw meshes
-    // stand in until it is let go.
+    // The raw meshes of a job whose reduction still runs (a slider is held): they stand in
+    // until the game mesh follows.
     bool draft = false;
     bool reduced() const { return !finished.levels.empty(); }
     double reduce_ms = 0;
+    // Trunk and crown came out of the meshing exactly as the tree shown before had them at
+    // the same budget (a leaf, seed-of-leaves or colour edit): its reduction was kept and
+    // only the leaves thinned again.
+    bool reduction_reused = false;
 };
+
+// True when the two meshes are the same bytes (positions and triangles).
+bool same_mesh(const Mesh& a, const Mesh& b);
+
+// The game mesh `previous` shows, made again for `tree` without reducing: its reduced trunk
+// and crown when `tree`'s trunk and crown are the ones it was reduced from (same bytes) and
+// the budget is the same, with `tree`'s leaves thinned per level. Empty (nothing reused)
+// otherwise. What a reduction would give, as the reduction is deterministic.
+std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const Tree& tree,
+                                            std::size_t budget);
 
 // The meshes the view draws for LOD `level` (clamped to the levels there are): that level's
 // trunk, crown and thinned leaves when reduced, the tree's own otherwise. Exactly the parts an
@@ -75,15 +92,22 @@ struct JobProgress {
     std::atomic<bool> cancel{false};
     std::atomic<int> stage{Growing};
     std::atomic<float> fraction{0.0f};  // of the current stage
-    // Skip the reduction (a slider is held). Cleared when it is let go while the job still
-    // meshes, so the same job goes on to reduce instead of a new one starting over.
+    // A slider is held: once the meshes are made, hand them over as a draft (draft_tree)
+    // before the reduction starts. Cleared when the slider is let go (the game mesh follows
+    // without a draft in between).
     std::atomic<bool> draft{false};
+    std::mutex draft_mutex;
+    std::shared_ptr<const GeneratedTree> draft_tree;  // guarded by draft_mutex; taken by poll
+    // Called by the worker when it has something to show (a draft, its result): main wakes
+    // its event loop with it, which waits while only workers run.
+    std::function<void()> wake;
 };
 
 // A generation on a worker thread. Cancelling only asks; the job is kept until its future is
-// ready (a std::async future blocks in its destructor), so the UI thread never waits for it.
+// ready (its thread is joined when the job goes), so the UI thread never waits for it.
 struct GenerationJob {
     std::future<GeneratedTree> result;
+    std::jthread worker;  // sets `result`, then wakes the UI
     std::shared_ptr<JobProgress> progress = std::make_shared<JobProgress>();
     std::chrono::steady_clock::time_point started;
     TreeTemplate tree_template;  // what it generates (and the colours it is drawn with)
@@ -92,6 +116,12 @@ struct GenerationJob {
     // are reused and only the reduction runs.
     std::shared_ptr<const GeneratedTree> base;
     bool during_drag = false;  // started while a slider was held
+    // The tree on screen when only the leaves' parameters changed: its skeleton, trunk and
+    // crown are kept and only the leaves scattered again (ui/leaves_only.h).
+    std::shared_ptr<const GeneratedTree> leaves_base;
+    // The tree on screen when the job started: a job whose trunk and crown come out the same
+    // reuses its reduction (reuse_reduction()).
+    std::shared_ptr<const GeneratedTree> previous;
 };
 
 struct ViewToggles {
@@ -133,8 +163,15 @@ struct StudioState {
     std::vector<GenerationJob> stale;  // cancelled generations still finishing
     TreeTemplate requested;            // what the last started generation is for
     std::size_t requested_budget = 0;  // ... and the budget it reduces to
-    bool requested_draft = false;      // ... or that it skips the reduction (a slider is held)
-    bool dragging = false;         // a slider is held (main sets it each frame): reductions wait
+    bool dragging = false;             // a slider is held (set_dragging() each frame): drafts first
+    // The time from letting go of a slider that edited the tree to its game mesh arriving
+    // (the status bar's "release -> game mesh"); negative before the first. 0 when the game
+    // mesh was on screen before the slider was let go.
+    double release_ms = -1;
+    std::optional<std::chrono::steady_clock::time_point> released_at;  // still waiting
+    bool drag_edited = false;  // the held slider started a generation
+    // Wakes main's event loop from a worker (glfwPostEmptyEvent); empty headless.
+    std::function<void()> wake;
     bool generate_wanted = false;  // a start deferred until the cancelled jobs finished
     double last_wall_ms = 0;
     bool live = true;  // regenerate on every edit
@@ -196,9 +233,14 @@ struct StudioState {
     std::string forest_status;    // the forest preview's progress or error, for the View row
 };
 
-// True when the next generation should be a draft: the low-poly view is on and a slider is
-// held, so a reduction per step of the drag would only be cancelled by the next.
+// True when the next generation should show a draft: the low-poly view is on and a slider
+// is held, so the raw meshes are shown as soon as they are made, and the reduction follows
+// (cancelled when the slider moves on).
 bool draft_wanted(const StudioState& state);
+
+// Main's per-frame "a slider is held". Letting go of one that edited the tree starts the
+// release clock (release_ms).
+void set_dragging(StudioState& state, bool dragging);
 
 // The budget trunk and crown are shown at: the template's triangle_budget with the low-poly
 // view on, 0 (the marching-cubes meshes) otherwise.
@@ -231,11 +273,13 @@ void set_growth_method(StudioState& state, std::string_view method);
 
 // Cancels the running generation, if any, and starts one of the edited template. While two
 // cancelled jobs still wind down, the start waits (generate_wanted), so dragging a slider
-// never piles up workers. While a slider is held a job of the drag is not cancelled: the
-// newest value waits for it (generate_wanted), so a moving slider still shows a tree every
-// job's time rather than none until it pauses; with the low-poly view on those jobs skip the
-// reduction (draft_wanted). On release a running draft of the same tree is told to reduce,
-// and a finished one is reduced without running the pipeline again.
+// never piles up workers. While a slider is held a job of the drag is not cancelled while
+// it grows and meshes: the newest value waits for it (generate_wanted), so a moving slider
+// still shows a tree every job's time rather than none until it pauses; with the low-poly
+// view on those jobs show their meshes as a draft and then reduce, and a job that is
+// reducing is cancelled by a newer value (its draft is on screen). So a slider held still
+// gets its game mesh while it is held, and on release a running job of the same value is
+// kept: only what is left of its work stands between the release and the game mesh.
 void start_generation(StudioState& state);
 
 bool generation_running(const StudioState& state);
@@ -255,7 +299,7 @@ void cancel_generations(StudioState& state);
 void poll_jobs(StudioState& state);
 
 // True when the edited template differs from what was last generated in what shapes the tree,
-// in the budget shown, or when a slider was let go after a draft.
+// or in the budget shown.
 bool edit_pending(const StudioState& state);
 
 // Records an edit into the undo history once the template differs from the last committed

@@ -3,9 +3,11 @@
 // panels call every frame, so they are tested as the main loop drives them: poll, act, poll.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -176,98 +178,190 @@ TEST(StudioState, TotalsCountTheFinishedPartsAgainstTheBudget) {
     }
 }
 
-TEST(StudioState, ADraggedSliderShowsDraftsAndTheGameMeshOnRelease) {
-    StudioState state = low_poly_state(300);
-    ASSERT_TRUE(state.tree && state.tree->reduced());
-
-    // A drag step: the view gets the tree without a reduction.
-    state.dragging = true;
-    state.tree_template.params.tropism += 0.1;
-    ASSERT_TRUE(edit_pending(state));
-    start_generation(state);
-    EXPECT_TRUE(state.requested_draft);
-    ASSERT_TRUE(wait_for_generations(state));
-    ASSERT_TRUE(state.tree);
-    EXPECT_TRUE(state.tree->draft);
-    EXPECT_FALSE(state.tree->reduced());
-    EXPECT_FALSE(edit_pending(state));  // still held: nothing more to do
-    const auto draft = state.tree;
-
-    // Let go: the draft's meshes are reduced, the pipeline does not run again.
-    state.dragging = false;
-    ASSERT_TRUE(edit_pending(state));
-    start_generation(state);
-    ASSERT_TRUE(state.job);
-    EXPECT_EQ(state.job->base, draft);
-    ASSERT_TRUE(wait_for_generations(state));
-    ASSERT_TRUE(state.tree && state.tree->reduced());
-    EXPECT_FALSE(state.tree->draft);
-    EXPECT_EQ(state.tree->tree.crown.triangles.size(), draft->tree.crown.triangles.size());
-    EXPECT_LE(state.tree->finished.levels[0].triangles, 300u);
-    EXPECT_FALSE(edit_pending(state));
+// Polls as main does until no generation runs, keeping every tree that reached the screen.
+std::vector<std::shared_ptr<const GeneratedTree>> trees_shown_until_done(StudioState& state) {
+    std::vector<std::shared_ptr<const GeneratedTree>> shown;
+    const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
+    while ((generation_running(state) || !state.stale.empty()) && Clock::now() < end) {
+        poll_jobs(state);
+        if (state.tree_changed) {
+            shown.push_back(state.tree);
+            state.tree_changed = false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_FALSE(generation_running(state));
+    return shown;
 }
 
-TEST(StudioState, AMovingSliderShowsEachDraftInsteadOfCancellingIt) {
-    StudioState state = state_with(small_tree());
-    state.view.low_poly = true;
-    state.tree_template.params.triangle_budget = 300;
-    state.dragging = true;
-    start_generation(state);
-    ASSERT_TRUE(state.job);
-    const JobProgress* first = state.job->progress.get();
-    const double first_tropism = state.tree_template.params.tropism;
-
-    // The slider moves on while the first draft meshes: it is not cancelled, the new value
-    // waits for it.
-    state.tree_template.params.tropism += 0.2;
+TEST(StudioState, ASliderHeldStillShowsADraftThenItsGameMesh) {
+    StudioState state = low_poly_state(300);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    state.tree_changed = false;                         // main has uploaded it
+    state.tree_template.params.trunk_resolution = 120;  // a reduction long enough to see a draft
+    state.tree_template.params.tropism += 0.1;
+    set_dragging(state, true);
     ASSERT_TRUE(edit_pending(state));
     start_generation(state);
     ASSERT_TRUE(state.job);
-    EXPECT_EQ(state.job->progress.get(), first);
-    EXPECT_FALSE(first->cancel);
-    EXPECT_TRUE(state.stale.empty());
-    EXPECT_TRUE(state.generate_wanted);
+    EXPECT_TRUE(state.job->progress->draft);
+    const auto shown = trees_shown_until_done(state);
+
+    // Still held: the raw meshes came first, then the game mesh of the same tree, without
+    // waiting for the release.
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_TRUE(shown[0]->draft);
+    EXPECT_FALSE(shown[0]->reduced());
+    EXPECT_FALSE(shown[1]->draft);
+    ASSERT_TRUE(shown[1]->reduced());
+    EXPECT_TRUE(same_mesh(shown[0]->tree.crown, shown[1]->tree.crown));
+    EXPECT_LE(shown[1]->finished.levels[0].triangles, 300u);
+    EXPECT_TRUE(state.dragging);
     EXPECT_FALSE(edit_pending(state));
 
-    // Both drafts reach the screen, the newest last.
-    std::vector<double> shown;
+    // Let go: the game mesh is already there; nothing runs and the release costs nothing.
+    set_dragging(state, false);
+    EXPECT_FALSE(edit_pending(state));
+    EXPECT_FALSE(generation_running(state));
+    EXPECT_EQ(state.release_ms, 0.0);
+    EXPECT_FALSE(state.released_at);
+}
+
+TEST(StudioState, AMovingSliderEndsOnTheGameMeshOfItsLastValue) {
+    StudioState state = low_poly_state(300);
+    set_dragging(state, true);
+    // Five steps of a drag, a frame apart: each value that starts a job waits for it to
+    // mesh, and a job that reduces is dropped for the newer value.
+    std::size_t most_workers = 0;
+    for (int step = 1; step <= 5; ++step) {
+        state.tree_template.params.tropism = 0.05 * step;
+        poll_jobs(state);
+        if (edit_pending(state)) start_generation(state);
+        most_workers = std::max(most_workers, state.stale.size() + (state.job ? 1 : 0));
+        std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    }
     const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
     while (generation_running(state) && Clock::now() < end) {
         poll_jobs(state);
-        if (state.tree_changed) {
-            EXPECT_TRUE(state.tree->draft);
-            shown.push_back(state.shown_template.params.tropism);
-            state.tree_changed = false;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        most_workers = std::max(most_workers, state.stale.size() + (state.job ? 1 : 0));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    ASSERT_EQ(shown.size(), 2u);
-    EXPECT_EQ(shown[0], first_tropism);
-    EXPECT_EQ(shown[1], state.tree_template.params.tropism);
+    EXPECT_LE(most_workers, 3u);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    EXPECT_FALSE(state.tree->draft);
+    EXPECT_EQ(state.shown_template.params.tropism, 0.25);
+    EXPECT_FALSE(edit_pending(state));
+    ASSERT_TRUE(wait_for_generations(state));
 }
 
-TEST(StudioState, ReleasingWhileTheDraftMeshesLetsThatJobReduce) {
-    StudioState state = state_with(small_tree());
-    state.view.low_poly = true;
-    state.tree_template.params.triangle_budget = 300;
+TEST(StudioState, ReleasingWhileTheJobMeshesKeepsThatJobAndTimesTheRelease) {
+    StudioState state = low_poly_state(300);
+    state.tree_changed = false;
     state.tree_template.params.trunk_resolution = 200;  // meshing takes a while
-    state.dragging = true;
+    set_dragging(state, true);
     start_generation(state);
     ASSERT_TRUE(state.job);
     const JobProgress* running = state.job->progress.get();
 
-    state.dragging = false;  // let go at once, before the draft is done
-    ASSERT_TRUE(edit_pending(state));
-    start_generation(state);
+    set_dragging(state, false);  // let go at once, before the draft is done
+    EXPECT_FALSE(edit_pending(state));
     ASSERT_TRUE(state.job);
     EXPECT_EQ(state.job->progress.get(), running);  // the same job, not a new one
+    EXPECT_FALSE(running->draft);                   // no draft once let go
     EXPECT_TRUE(state.stale.empty());
-    EXPECT_FALSE(edit_pending(state));
-    ASSERT_TRUE(wait_for_generations(state));
-    // Whether the job saw the release in time or a reduction followed it: the game mesh.
-    ASSERT_TRUE(state.tree);
-    EXPECT_FALSE(state.tree->draft);
+    EXPECT_TRUE(state.released_at);
+    const auto shown = trees_shown_until_done(state);
+    ASSERT_FALSE(shown.empty());
+    // Whether the job handed a draft over before it saw the release or not: the game mesh,
+    // and the time from the release to it.
     EXPECT_TRUE(state.tree->reduced());
+    EXPECT_FALSE(state.tree->draft);
+    EXPECT_GT(state.release_ms, 0.0);
+    EXPECT_FALSE(state.released_at);
+}
+
+TEST(StudioState, LettingGoStartsTheLastValueAtOnce) {
+    StudioState state = low_poly_state(300);
+    state.tree_template.params.trunk_resolution = 200;  // meshing takes a while
+    set_dragging(state, true);
+    start_generation(state);
+    ASSERT_TRUE(state.job);
+    const JobProgress* first = state.job->progress.get();
+    state.tree_template.params.tropism += 0.2;  // the slider moves on while it meshes
+    start_generation(state);
+    ASSERT_EQ(state.job->progress.get(), first);
+    EXPECT_TRUE(state.generate_wanted);
+
+    // Let go: the last value does not wait for the older job to mesh.
+    set_dragging(state, false);
+    EXPECT_FALSE(state.generate_wanted);
+    ASSERT_TRUE(state.job);
+    EXPECT_NE(state.job->progress.get(), first);
+    EXPECT_FALSE(state.job->progress->draft);
+    EXPECT_EQ(state.job->tree_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_TRUE(first->cancel);
+    EXPECT_TRUE(state.released_at);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_TRUE(state.tree->reduced());
+    EXPECT_EQ(state.shown_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_GT(state.release_ms, 0.0);
+}
+
+TEST(StudioState, ALeafEditKeepsTheReductionAndThinsTheNewLeaves) {
+    StudioState state = low_poly_state(300);
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const auto before = state.tree;
+    EXPECT_FALSE(before->reduction_reused);
+
+    // Leaves only: trunk and crown come out of the meshing the same, the reduction is kept.
+    state.tree_template.params.leaf_density *= 2.0;
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    const auto leafier = state.tree;
+    ASSERT_TRUE(leafier->reduced());
+    EXPECT_TRUE(leafier->reduction_reused);
+    EXPECT_GT(leafier->tree.leaves.triangles.size(), before->tree.leaves.triangles.size());
+    for (std::size_t i = 0; i < leafier->finished.levels.size(); ++i) {
+        EXPECT_TRUE(same_mesh(leafier->finished.levels[i].trunk, before->finished.levels[i].trunk));
+        EXPECT_TRUE(same_mesh(leafier->finished.levels[i].crown, before->finished.levels[i].crown));
+        EXPECT_LE(leafier->finished.levels[i].leaves.triangles.size(),
+                  leafier->finished.leaf_budgets[i]);
+    }
+    // ... and it is what a reduction of the new tree gives, leaves and all (what an export
+    // writes).
+    FinishSettings finish;
+    finish.budget.total = 300;
+    finish.lod = true;
+    finish.lod_levels = kLodLevels;
+    const FinishedTree fresh = finish_tree(leafier->tree, finish);
+    ASSERT_EQ(fresh.levels.size(), leafier->finished.levels.size());
+    for (std::size_t i = 0; i < fresh.levels.size(); ++i) {
+        EXPECT_TRUE(same_mesh(fresh.levels[i].trunk, leafier->finished.levels[i].trunk)) << i;
+        EXPECT_TRUE(same_mesh(fresh.levels[i].crown, leafier->finished.levels[i].crown)) << i;
+        EXPECT_TRUE(same_mesh(fresh.levels[i].leaves, leafier->finished.levels[i].leaves)) << i;
+    }
+
+    // A shape edit meshes another trunk: reduced again.
+    state.tree_template.params.tropism += 0.2;
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_FALSE(state.tree->reduction_reused);
+    EXPECT_FALSE(same_mesh(state.tree->tree.trunk, leafier->tree.trunk));
+}
+
+TEST(StudioState, AReductionIsReusedOnlyForTheSameMeshesAndBudget) {
+    StudioState state = low_poly_state(300);
+    const GeneratedTree& shown = *state.tree;
+    ASSERT_TRUE(shown.reduced());
+    EXPECT_TRUE(reuse_reduction(shown, shown.tree, 300));
+    EXPECT_FALSE(reuse_reduction(shown, shown.tree, 200));  // another budget
+    Tree moved = shown.tree;
+    moved.crown.positions[0].x += 0.01f;
+    EXPECT_FALSE(reuse_reduction(shown, moved, 300));
+    // The marching-cubes meshes alone (low poly was off): nothing to reuse.
+    GeneratedTree raw;
+    raw.tree = shown.tree;
+    EXPECT_FALSE(reuse_reduction(raw, shown.tree, 300));
 }
 
 TEST(StudioState, ABrokenRuleKeepsTheLastGoodTreeAndNamesTheLine) {
