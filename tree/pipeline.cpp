@@ -301,6 +301,35 @@ FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
 
 }  // namespace
 
+Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeParams& p,
+                 CancelFlag cancel) {
+    Mesh out;
+    if (fields.crown && p.leaf_density > 0.0) {
+        LeafSettings leaves;
+        leaves.density = p.leaf_density;
+        leaves.size = p.leaf_size;
+        leaves.shape = static_cast<LeafShape>(p.leaf_shape);
+        leaves.seed = p.seed;
+        leaves.cancel = cancel;
+        const SphereField& crown = *fields.crown;
+        // Behind a meshed crown only the leaves near its surface are ever seen: they fill a
+        // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
+        // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).
+        const float shell = static_cast<float>(p.leaf_size);
+        if (p.crown_mesh != 0 && crown.is_distance_bound() && shell > 0.0f)
+            out = scatter_leaves(
+                [&crown, shell](const glm::vec3& q) {
+                    return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
+                },
+                fields.crown_box, leaves);
+        else
+            out = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
+                                 fields.crown_box, leaves);
+    }
+    add_polygon_leaves(out, skeleton.polygons);
+    return out;
+}
+
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
     Skeleton mature;
@@ -373,29 +402,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         }
         out.times.push_back({"crown mesh", clock.lap_ms()});
     }
-    if (fields.crown && p.leaf_density > 0.0) {
-        LeafSettings leaves;
-        leaves.density = p.leaf_density;
-        leaves.size = p.leaf_size;
-        leaves.shape = static_cast<LeafShape>(p.leaf_shape);
-        leaves.seed = p.seed;
-        leaves.cancel = options.cancel;
-        const SphereField& crown = *fields.crown;
-        // Behind a meshed crown only the leaves near its surface are ever seen: they fill a
-        // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
-        // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).
-        const float shell = static_cast<float>(p.leaf_size);
-        if (mesh_crown && crown.is_distance_bound() && shell > 0.0f)
-            out.leaves = scatter_leaves(
-                [&crown, shell](const glm::vec3& q) {
-                    return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
-                },
-                fields.crown_box, leaves);
-        else
-            out.leaves = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
-                                        fields.crown_box, leaves);
-    }
-    add_polygon_leaves(out.leaves, out.skeleton.polygons);
+    out.leaves = tree_leaves(out.skeleton, fields, p, options.cancel);
     out.times.push_back({"leaves", clock.lap_ms()});
     return out;
 }

@@ -89,6 +89,13 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
                        const FieldCells& cells = {}, CancelFlag cancel = nullptr,
                        bool with_trunk_field = true);
 
+// The tree's leaves (generate_tree's last stage): scattered over the crown's field, or where
+// the crown is meshed in a shell one leaf deep under its surface, then the turtle's
+// polygons. `params` as generate_tree meshes with (the budget's crown resolution). Throws
+// Cancelled once `cancel` is set.
+Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeParams& params,
+                 CancelFlag cancel = nullptr);
+
 // The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
 int cells_along(const Box& box, float cell);
 
