@@ -1,13 +1,12 @@
 // Low poly for real: quadric error decimation (Garland-Heckbert) of closed meshes down to
 // a triangle budget, keeping every part a closed, consistently oriented 2-manifold.
 //
-// Built on OpenMesh's decimation framework (BaseDecimaterT, ModQuadricT, its collapse
-// test and heap) with a greedy loop that scores candidates before the costly legality
-// tests, guards against fold-overs and slivers, quadric-optimal vertex placement at the
-// end, and handle cutting (lowpoly/handle_cutting.h) for budgets below what the topology
-// allows. OpenMesh stays inside the .cpp; callers see sylva::Mesh only.
+// A greedy loop of halfedge collapses on flat arrays (lowpoly/quadric_collapse.h: the
+// rules of OpenMesh's DecimaterT with its quadric module, the link condition, guards
+// against fold-overs and slivers), quadric-optimal vertex placement at the end, and handle
+// cutting (lowpoly/handle_cutting.h) for budgets below what the topology allows.
 //
-// Speed: a 100k-triangle tree to 800 triangles in about 0.3 s on one core.
+// Speed: about 1-2 us per input triangle on one core when no handle needs cutting.
 #pragma once
 
 #include <atomic>
@@ -62,8 +61,8 @@ struct DecimateResult {
     std::size_t triangles = 0;   // over all parts
     bool within_budget = false;  // triangles <= max_triangles
     // How often a reduction was redone with fewer collapses because a part failed
-    // check_topology (marching/mesh_checks.h). 0 in every case seen so far: OpenMesh's
-    // link condition and the guards keep the manifold; the back-off is the safety net.
+    // check_topology (marching/mesh_checks.h). 0 in every case seen so far: the link
+    // condition and the guards keep the manifold; the back-off is the safety net.
     int backoffs = 0;
     int handles_cut = 0;  // see DecimateSettings::cut_handles
     // Empty, or a sentence for people: why the budget was missed, or what was backed off.

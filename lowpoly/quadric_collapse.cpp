@@ -1,0 +1,504 @@
+#include "lowpoly/quadric_collapse.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/disjoint_sets.h"
+
+namespace sylva {
+
+void CollapseMesh::Quadric::add_plane(double na, double nb, double nc, double nd, double weight) {
+    a += weight * (na * na);
+    b += weight * (na * nb);
+    c += weight * (na * nc);
+    d += weight * (na * nd);
+    e += weight * (nb * nb);
+    f += weight * (nb * nc);
+    g += weight * (nb * nd);
+    h += weight * (nc * nc);
+    i += weight * (nc * nd);
+    j += weight * (nd * nd);
+}
+
+CollapseMesh::Quadric& CollapseMesh::Quadric::operator+=(const Quadric& q) {
+    a += q.a, b += q.b, c += q.c, d += q.d, e += q.e;
+    f += q.f, g += q.g, h += q.h, i += q.i, j += q.j;
+    return *this;
+}
+
+// As OpenMesh's QuadricT evaluates it: the decimater's priorities stay what they were.
+double CollapseMesh::Quadric::operator()(const glm::dvec3& p) const {
+    const double x = p.x, y = p.y, z = p.z;
+    return a * x * x + 2.0 * b * x * y + 2.0 * c * x * z + 2.0 * d * x + e * y * y +
+           2.0 * f * y * z + 2.0 * g * y + h * z * z + 2.0 * i * z + j;
+}
+
+bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_part) {
+    std::size_t nv = 0, nf = 0;
+    for (const Mesh* m : parts) {
+        nv += m->positions.size();
+        nf += m->triangles.size();
+    }
+    part_count_ = parts.size();
+    position_.clear();
+    position_.reserve(nv);
+    part_.clear();
+    part_.reserve(nv);
+    corner_.clear();
+    corner_.reserve(3 * nf);
+    std::vector<std::uint32_t> face_part;
+    face_part.reserve(nf);
+    auto fail = [&](std::size_t k) {
+        if (bad_part) *bad_part = k;
+        return false;
+    };
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Mesh& m = *parts[k];
+        const auto base = static_cast<std::uint32_t>(position_.size());
+        for (const glm::vec3& p : m.positions) {
+            position_.emplace_back(p);
+            part_.push_back(static_cast<std::uint32_t>(k));
+        }
+        for (const auto& t : m.triangles) {
+            if (t[0] >= m.positions.size() || t[1] >= m.positions.size() ||
+                t[2] >= m.positions.size() || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                return fail(k);
+            for (std::uint32_t v : t) corner_.push_back(base + v);
+            face_part.push_back(static_cast<std::uint32_t>(k));
+        }
+    }
+    const std::size_t halfedges = corner_.size();
+    // Halfedges leaving each vertex (CSR); the opposite of a -> b is among those leaving b.
+    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges);
+    for (std::uint32_t v : corner_) ++first[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+    {
+        std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+        for (std::uint32_t h = 0; h < halfedges; ++h) leaving[fill[corner_[h]]++] = h;
+    }
+    opposite_.assign(halfedges, kNone);
+    for (std::uint32_t h = 0; h < halfedges; ++h) {
+        const std::uint32_t a = corner_[h], b = to(h);
+        std::uint32_t found = kNone;
+        for (std::uint32_t i = first[b]; i < first[b + 1]; ++i) {
+            const std::uint32_t g = leaving[i];
+            if (to(g) != a) continue;
+            if (found != kNone) return fail(face_part[h / 3]);  // non-manifold or misoriented
+            found = g;
+        }
+        if (found == kNone) return fail(face_part[h / 3]);  // boundary or misoriented
+        opposite_[h] = found;
+    }
+    for (std::uint32_t h = 0; h < halfedges; ++h)
+        if (opposite_[opposite_[h]] != h) return fail(face_part[h / 3]);
+    // Each vertex's faces form one fan: turning around it visits all its halfedges.
+    outgoing_.assign(nv, kNone);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if (first[v] == first[v + 1]) continue;
+        const std::uint32_t start = leaving[first[v]];
+        std::uint32_t h = start, count = 0;
+        do {
+            h = turn(h);
+            if (++count > first[v + 1] - first[v]) break;
+        } while (h != start);
+        if (count != first[v + 1] - first[v]) return fail(part_[v]);
+        outgoing_[v] = start;
+    }
+    face_alive_.assign(nf, 1);
+    live_faces_ = nf;
+
+    // Pieces: vertices joined by triangles, numbered in vertex order.
+    DisjointSets sets(nv);
+    for (std::size_t f = 0; f < nf; ++f) {
+        sets.unite(corner_[3 * f + 1], corner_[3 * f]);
+        sets.unite(corner_[3 * f + 2], corner_[3 * f]);
+    }
+    std::vector<std::uint32_t> slot(nv, kNone);
+    piece_.assign(nv, 0);
+    std::uint32_t pieces = 0;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        std::uint32_t& s = slot[sets.find(v)];
+        if (s == kNone) s = pieces++;
+        piece_[v] = s;
+    }
+    piece_count_ = pieces;
+    return true;
+}
+
+std::size_t CollapseMesh::triangle_floor() const {
+    // Per piece with triangles: V - E + F = 2 - 2 genus, E = 3F / 2.
+    std::vector<long> vertices(piece_count_, 0), faces(piece_count_, 0);
+    for (std::uint32_t v = 0; v < position_.size(); ++v)
+        if (outgoing_[v] != kNone) ++vertices[piece_[v]];
+    for (std::size_t f = 0; f < face_alive_.size(); ++f)
+        if (face_alive_[f]) ++faces[piece_[corner_[3 * f]]];
+    std::size_t floor = 0;
+    for (std::size_t p = 0; p < piece_count_; ++p) {
+        if (faces[p] == 0) continue;
+        const long genus = std::max(0L, (2 - (vertices[p] - faces[p] / 2)) / 2);
+        floor += 4 + 12 * static_cast<std::size_t>(genus);
+    }
+    return floor;
+}
+
+void CollapseMesh::update_normal(std::uint32_t face) {
+    const glm::dvec3& a = position_[corner_[3 * face]];
+    const glm::dvec3 n =
+        glm::cross(position_[corner_[3 * face + 1]] - a, position_[corner_[3 * face + 2]] - a);
+    const double length = glm::length(n);
+    normal_[face] = length != 0.0 ? n / length : glm::dvec3(0.0);
+}
+
+void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
+    min_cos_ = std::cos(settings.max_normal_turn_degrees * M_PI / 180.0);
+    min_cos2_ = min_cos_ * min_cos_;
+    min_twice_area2_ = settings.min_twice_area * settings.min_twice_area;
+    foot_height_ = settings.foot_height;
+    min_foot_vertices_ = settings.min_foot_vertices;
+    cancel_ = cancel;
+    const std::size_t nv = position_.size(), nf = face_alive_.size();
+
+    normal_.assign(nf, glm::dvec3(0.0));
+    quadric_.assign(nv, Quadric());
+    piece_volume_.assign(piece_count_, 0.0);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        if (!face_alive_[f]) continue;
+        update_normal(f);
+        const glm::dvec3 &p0 = position_[corner_[3 * f]], &p1 = position_[corner_[3 * f + 1]],
+                         &p2 = position_[corner_[3 * f + 2]];
+        // ModQuadricT's quadric: the face's plane weighted by its area.
+        glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
+        double area = glm::length(n);
+        if (area > FLT_MIN) {
+            n /= area;
+            area *= 0.5;
+        }
+        Quadric q;
+        q.add_plane(n.x, n.y, n.z, -glm::dot(p0, n), area);
+        for (int k = 0; k < 3; ++k) quadric_[corner_[3 * f + k]] += q;
+        piece_volume_[piece_[corner_[3 * f]]] += glm::dot(p0, glm::cross(p1, p2)) / 6.0;
+    }
+    // A small closed piece can fold through itself over several collapses and come out
+    // inside out; no collapse may take a piece below a sliver of its volume. Inner shells
+    // (negative volume by nature) are left alone.
+    piece_floor_.resize(piece_count_);
+    for (std::size_t i = 0; i < piece_count_; ++i) piece_floor_[i] = 1e-3 * piece_volume_[i];
+    foot_vertices_.assign(piece_count_, 0);
+    for (std::uint32_t v = 0; v < nv; ++v)
+        if (outgoing_[v] != kNone && is_foot(v)) ++foot_vertices_[piece_[v]];
+
+    target_.assign(nv, kNone);
+    priority_.assign(nv, -1.0f);
+    heap_position_.assign(nv, kNone);
+    heap_.clear();
+    heap_.reserve(nv);
+    collapses_ = 0;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if ((v & 4095) == 4095) throw_if_cancelled(cancel_);
+        if (outgoing_[v] != kNone) heap_vertex(v);
+    }
+    throw_if_cancelled(cancel_);
+}
+
+bool CollapseMesh::topology_allows(std::uint32_t h) const {
+    const std::uint32_t v0 = corner_[h], v1 = to(h), o = opposite_[h];
+    const std::uint32_t vl = corner_[prev(h)], vr = corner_[prev(o)];
+    if (vl == vr) return false;
+    // Link condition: v0 and v1 share no neighbour but vl and vr.
+    constexpr int kMaxValence = 64;
+    std::array<std::uint32_t, kMaxValence> ring;
+    int n = 0;
+    for (std::uint32_t g = outgoing_[v1];;) {
+        if (n == kMaxValence) return false;  // never seen; refuse rather than overflow
+        ring[n++] = to(g);
+        g = turn(g);
+        if (g == outgoing_[v1]) break;
+    }
+    int valence0 = 0;
+    for (std::uint32_t g = outgoing_[v0];;) {
+        const std::uint32_t w = to(g);
+        ++valence0;
+        if (w != vl && w != vr)
+            for (int i = 0; i < n; ++i)
+                if (ring[i] == w) return false;
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    if (valence0 < 3) return false;
+    // A tetrahedron would collapse to two triangles back to back: vl and vr joined, both
+    // of valence 3.
+    auto valence_is_3 = [&](std::uint32_t v) {
+        const std::uint32_t g = outgoing_[v];
+        return turn(turn(turn(g))) == g && turn(g) != g && turn(turn(g)) != g;
+    };
+    if (valence_is_3(vl) && valence_is_3(vr)) {
+        for (std::uint32_t g = outgoing_[vl];;) {
+            if (to(g) == vr) return false;
+            g = turn(g);
+            if (g == outgoing_[vl]) break;
+        }
+    }
+    return true;
+}
+
+bool CollapseMesh::fan_allows(std::uint32_t v, const glm::dvec3& p, std::uint32_t skip_a,
+                              std::uint32_t skip_b, double* volume_change) const {
+    const glm::dvec3 o = position_[v], d = p - o;
+    double six = 0.0;
+    for (std::uint32_t h = outgoing_[v];;) {
+        const std::uint32_t f = h / 3;
+        if (f != skip_a && f != skip_b) {
+            const glm::dvec3& a = position_[corner_[next(h)]];
+            const glm::dvec3& b = position_[corner_[prev(h)]];
+            const glm::dvec3 n = glm::cross(a - p, b - p);
+            const double n2 = glm::dot(n, n);
+            if (n2 <= min_twice_area2_) return false;
+            // cos(turn) = n.old / |n| with a unit old normal.
+            const double dn = glm::dot(n, normal_[f]);
+            if (min_cos_ >= 0.0 ? !(dn >= 0.0 && dn * dn >= min_cos2_ * n2)
+                                : !(dn >= 0.0 || dn * dn <= min_cos2_ * n2))
+                return false;
+            six += glm::dot(d, glm::cross(a - o, b - o));
+        }
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    *volume_change = six / 6.0;
+    return true;
+}
+
+bool CollapseMesh::keeps_volume(std::uint32_t v, double change) const {
+    const std::uint32_t p = piece_[v];
+    return !(piece_floor_[p] > 0.0) || piece_volume_[p] + change > piece_floor_[p];
+}
+
+bool CollapseMesh::is_legal(std::uint32_t h, double* volume_change) const {
+    const std::uint32_t v0 = corner_[h], v1 = to(h);
+    // A foot vertex may only merge into another foot vertex, and only while its piece has
+    // more than the fewest.
+    if (is_foot(v0) && !(is_foot(v1) && foot_vertices_[piece_[v0]] > min_foot_vertices_))
+        return false;
+    if (!topology_allows(h)) return false;
+    return fan_allows(v0, position_[v1], h / 3, opposite_[h] / 3, volume_change) &&
+           keeps_volume(v0, *volume_change);
+}
+
+void CollapseMesh::heap_vertex(std::uint32_t v) {
+    float best = std::numeric_limits<float>::max();
+    std::uint32_t target = kNone;
+    const Quadric& qv = quadric_[v];
+    for (std::uint32_t h = outgoing_[v];;) {
+        const std::uint32_t v1 = to(h);
+        Quadric q = qv;
+        q += quadric_[v1];
+        const auto error = static_cast<float>(q(position_[v1]));
+        double change;
+        // The error first: the legality tests run only for a candidate that would win.
+        if (!(error < 0.0f) && error < best && is_legal(h, &change)) {
+            best = error;
+            target = h;
+        }
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    target_[v] = target;
+    if (target != kNone) {
+        priority_[v] = best;
+        heap_place(v);
+    } else {
+        priority_[v] = -1.0f;
+        heap_remove(v);
+    }
+}
+
+void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
+    const std::uint32_t v0 = corner_[h], v1 = to(h), o = opposite_[h];
+    const std::uint32_t piece = piece_[v0];
+    piece_volume_[piece] += volume_change;
+    if (is_foot(v0)) --foot_vertices_[piece];  // onto another foot vertex
+    support_.clear();
+    for (std::uint32_t g = outgoing_[v0];;) {
+        support_.push_back(to(g));
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    const std::uint32_t n1 = next(h), p1 = prev(h), n2 = next(o), p2 = prev(o);
+    const std::uint32_t vl = corner_[p1], vr = corner_[p2];
+    // Outside the two faces that go: a = vl -> v1, b = v0 -> vl, c = vr -> v0, d = v1 -> vr.
+    const std::uint32_t a = opposite_[n1], b = opposite_[p1], c = opposite_[n2], d = opposite_[p2];
+    for (std::uint32_t g = outgoing_[v0];;) {
+        corner_[g] = v1;
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    opposite_[a] = b;
+    opposite_[b] = a;
+    opposite_[c] = d;
+    opposite_[d] = c;
+    outgoing_[v1] = b;
+    outgoing_[vl] = a;
+    outgoing_[vr] = c;
+    outgoing_[v0] = kNone;
+    face_alive_[h / 3] = 0;
+    face_alive_[o / 3] = 0;
+    live_faces_ -= 2;
+    for (std::uint32_t g = outgoing_[v1];;) {
+        update_normal(g / 3);
+        g = turn(g);
+        if (g == outgoing_[v1]) break;
+    }
+    quadric_[v1] += quadric_[v0];
+    heap_remove(v0);
+    for (std::uint32_t s : support_) heap_vertex(s);
+}
+
+void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
+                               const std::function<bool(std::size_t)>& step) {
+    while (!heap_.empty() && live_faces_ > max_triangles) {
+        const std::uint32_t v = heap_.front();
+        const std::uint32_t h = target_[v];
+        heap_remove(v);
+        double change = 0.0;
+        // The entry may be stale: check again, and look for a new target if it is.
+        if (!face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
+            heap_vertex(v);
+            continue;
+        }
+        collapse(h, change);
+        ++collapses_;
+        if (step && interval > 0 && collapses_ % interval == 0 && !step(collapses_)) break;
+    }
+}
+
+// Halfedge collapses keep every vertex on the input surface, so a coarse result is
+// inscribed in it (a sphere comes out smaller). Moving each vertex to the minimum of its
+// accumulated quadric (the planes of the input it stands for) lets the facets straddle the
+// surface instead. A small pull towards the current position keeps flat and ridge
+// neighbourhoods (singular quadrics) in place; a move that would fold a triangle is halved,
+// then dropped.
+void CollapseMesh::relocate() {
+    for (std::uint32_t v = 0; v < position_.size(); ++v) {
+        if (outgoing_[v] == kNone) continue;
+        const Quadric& q = quadric_[v];
+        const glm::dvec3 p = position_[v];
+        const double mu = 1e-3 * (q.a + q.e + q.h) / 3.0 + 1e-30;
+        // (A + mu I) x = mu p - b
+        const double m[3][3] = {{q.a + mu, q.b, q.c}, {q.b, q.e + mu, q.f}, {q.c, q.f, q.h + mu}};
+        const double r[3] = {mu * p.x - q.d, mu * p.y - q.g, mu * p.z - q.i};
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        if (!(std::abs(det) > 0.0) || !std::isfinite(det)) continue;
+        glm::dvec3 x;
+        for (int k = 0; k < 3; ++k) {  // Cramer's rule
+            double c[3][3];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) c[i][j] = j == k ? r[i] : m[i][j];
+            x[k] = (c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) -
+                    c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
+                    c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0])) /
+                   det;
+        }
+        if (is_foot(v)) x.y = p.y;  // the foot stays on the ground
+        for (double step : {1.0, 0.5}) {
+            const glm::dvec3 candidate = p + step * (x - p);
+            if (!std::isfinite(candidate.x) || !std::isfinite(candidate.y) ||
+                !std::isfinite(candidate.z))
+                break;
+            double change = 0.0;
+            if (fan_allows(v, candidate, kNone, kNone, &change) && keeps_volume(v, change)) {
+                piece_volume_[piece_[v]] += change;
+                position_[v] = candidate;
+                for (std::uint32_t g = outgoing_[v];;) {
+                    update_normal(g / 3);
+                    g = turn(g);
+                    if (g == outgoing_[v]) break;
+                }
+                break;
+            }
+        }
+    }
+}
+
+std::vector<Mesh> CollapseMesh::extract() const {
+    std::vector<Mesh> out(part_count_);
+    // Only vertices that a triangle uses; new indices in the old order (deterministic).
+    std::vector<std::uint32_t> index(position_.size(), kNone);
+    for (std::uint32_t v = 0; v < position_.size(); ++v) {
+        if (outgoing_[v] == kNone) continue;
+        Mesh& m = out[part_[v]];
+        index[v] = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.emplace_back(static_cast<float>(position_[v].x),
+                                 static_cast<float>(position_[v].y),
+                                 static_cast<float>(position_[v].z));
+    }
+    for (std::size_t f = 0; f < face_alive_.size(); ++f) {
+        if (!face_alive_[f]) continue;
+        const std::uint32_t a = corner_[3 * f], b = corner_[3 * f + 1], c = corner_[3 * f + 2];
+        out[part_[a]].triangles.push_back({index[a], index[b], index[c]});
+    }
+    return out;
+}
+
+// A binary min-heap of vertices by priority_.
+void CollapseMesh::heap_up(std::size_t i) {
+    const std::uint32_t v = heap_[i];
+    const float p = priority_[v];
+    while (i > 0) {
+        const std::size_t parent = (i - 1) / 2;
+        const std::uint32_t u = heap_[parent];
+        if (!(p < priority_[u])) break;
+        heap_[i] = u;
+        heap_position_[u] = static_cast<std::uint32_t>(i);
+        i = parent;
+    }
+    heap_[i] = v;
+    heap_position_[v] = static_cast<std::uint32_t>(i);
+}
+
+void CollapseMesh::heap_down(std::size_t i) {
+    const std::uint32_t v = heap_[i];
+    const float p = priority_[v];
+    const std::size_t n = heap_.size();
+    for (;;) {
+        std::size_t child = 2 * i + 1;
+        if (child >= n) break;
+        if (child + 1 < n && priority_[heap_[child + 1]] < priority_[heap_[child]]) ++child;
+        const std::uint32_t u = heap_[child];
+        if (!(priority_[u] < p)) break;
+        heap_[i] = u;
+        heap_position_[u] = static_cast<std::uint32_t>(i);
+        i = child;
+    }
+    heap_[i] = v;
+    heap_position_[v] = static_cast<std::uint32_t>(i);
+}
+
+void CollapseMesh::heap_remove(std::uint32_t v) {
+    const std::uint32_t i = heap_position_[v];
+    if (i == kNone) return;
+    heap_position_[v] = kNone;
+    const std::uint32_t last = heap_.back();
+    heap_.pop_back();
+    if (last == v) return;
+    heap_[i] = last;
+    heap_position_[last] = i;
+    heap_up(i);
+    heap_down(heap_position_[last]);
+}
+
+void CollapseMesh::heap_place(std::uint32_t v) {
+    std::uint32_t i = heap_position_[v];
+    if (i == kNone) {
+        i = static_cast<std::uint32_t>(heap_.size());
+        heap_.push_back(v);
+        heap_position_[v] = i;
+    }
+    heap_up(i);
+    heap_down(heap_position_[v]);
+}
+
+}  // namespace sylva
