@@ -190,15 +190,20 @@ void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
     for (std::uint32_t v = 0; v < nv; ++v)
         if (outgoing_[v] != kNone && is_foot(v)) ++foot_vertices_[piece_[v]];
 
+    own_error_.assign(nv, 0.0);
+    for (std::uint32_t v = 0; v < nv; ++v) own_error_[v] = quadric_[v](position_[v]);
     target_.assign(nv, kNone);
+    verified_.assign(nv, 0);
     priority_.assign(nv, -1.0f);
+    mark_.assign(nv, 0);
+    stamp_ = 0;
     heap_position_.assign(nv, kNone);
     heap_.clear();
     heap_.reserve(nv);
     collapses_ = 0;
     for (std::uint32_t v = 0; v < nv; ++v) {
         if ((v & 4095) == 4095) throw_if_cancelled(cancel_);
-        if (outgoing_[v] != kNone) heap_vertex(v);
+        if (outgoing_[v] != kNone) queue_vertex(v);
     }
     throw_if_cancelled(cancel_);
 }
@@ -208,12 +213,12 @@ bool CollapseMesh::topology_allows(std::uint32_t h) const {
     const std::uint32_t vl = corner_[prev(h)], vr = corner_[prev(o)];
     if (vl == vr) return false;
     // Link condition: v0 and v1 share no neighbour but vl and vr.
-    constexpr int kMaxValence = 64;
-    std::array<std::uint32_t, kMaxValence> ring;
-    int n = 0;
+    if (++stamp_ == 0) {
+        std::fill(mark_.begin(), mark_.end(), 0);
+        stamp_ = 1;
+    }
     for (std::uint32_t g = outgoing_[v1];;) {
-        if (n == kMaxValence) return false;  // never seen; refuse rather than overflow
-        ring[n++] = to(g);
+        mark_[to(g)] = stamp_;
         g = turn(g);
         if (g == outgoing_[v1]) break;
     }
@@ -221,9 +226,7 @@ bool CollapseMesh::topology_allows(std::uint32_t h) const {
     for (std::uint32_t g = outgoing_[v0];;) {
         const std::uint32_t w = to(g);
         ++valence0;
-        if (w != vl && w != vr)
-            for (int i = 0; i < n; ++i)
-                if (ring[i] == w) return false;
+        if (w != vl && w != vr && mark_[w] == stamp_) return false;
         g = turn(g);
         if (g == outgoing_[v0]) break;
     }
@@ -286,32 +289,54 @@ bool CollapseMesh::is_legal(std::uint32_t h, double* volume_change) const {
            keeps_volume(v0, *volume_change);
 }
 
-void CollapseMesh::heap_vertex(std::uint32_t v) {
+float CollapseMesh::error(std::uint32_t h) const {
+    // (Q0 + Q1)(p1) = Q0(p1) + Q1(p1), the second term kept per vertex.
+    const std::uint32_t v1 = to(h);
+    return static_cast<float>(quadric_[corner_[h]](position_[v1]) + own_error_[v1]);
+}
+
+void CollapseMesh::queue_vertex(std::uint32_t v) {
     float best = std::numeric_limits<float>::max();
     std::uint32_t target = kNone;
-    const Quadric& qv = quadric_[v];
     for (std::uint32_t h = outgoing_[v];;) {
-        const std::uint32_t v1 = to(h);
-        Quadric q = qv;
-        q += quadric_[v1];
-        const auto error = static_cast<float>(q(position_[v1]));
-        double change;
-        // The error first: the legality tests run only for a candidate that would win.
-        if (!(error < 0.0f) && error < best && is_legal(h, &change)) {
-            best = error;
+        const float e = error(h);
+        if (!(e < 0.0f) && e < best) {
+            best = e;
             target = h;
         }
         h = turn(h);
         if (h == outgoing_[v]) break;
     }
     target_[v] = target;
+    verified_[v] = 0;
     if (target != kNone) {
         priority_[v] = best;
         heap_place(v);
     } else {
-        priority_[v] = -1.0f;
         heap_remove(v);
     }
+}
+
+std::uint32_t CollapseMesh::best_legal(std::uint32_t v, float* best, double* volume_change) const {
+    // Candidates by error (ties in turning order), tested until one is legal.
+    constexpr int kMaxValence = 64;
+    std::array<std::pair<float, std::uint32_t>, kMaxValence> candidates;
+    int n = 0;
+    for (std::uint32_t h = outgoing_[v];;) {
+        const float e = error(h);
+        if (!(e < 0.0f) && e < std::numeric_limits<float>::max() && n < kMaxValence)
+            candidates[n++] = {e, h};
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    std::stable_sort(candidates.begin(), candidates.begin() + n,
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (int i = 0; i < n; ++i)
+        if (is_legal(candidates[i].second, volume_change)) {
+            *best = candidates[i].first;
+            return candidates[i].second;
+        }
+    return kNone;
 }
 
 void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
@@ -351,21 +376,35 @@ void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
         if (g == outgoing_[v1]) break;
     }
     quadric_[v1] += quadric_[v0];
+    own_error_[v1] = quadric_[v1](position_[v1]);
     heap_remove(v0);
-    for (std::uint32_t s : support_) heap_vertex(s);
+    for (std::uint32_t s : support_) queue_vertex(s);
 }
 
 void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
                                const std::function<bool(std::size_t)>& step) {
+    // Lazy legality: a vertex waits in the heap with its cheapest collapse by error alone;
+    // the link condition and the guards run when it comes to the front. If that collapse is
+    // illegal, the cheapest legal one goes back into the heap at its own error (verified),
+    // so collapses still happen in the order of their errors, and a collapse's neighbours
+    // cost a quadric evaluation each instead of the legality tests of all their edges.
     while (!heap_.empty() && live_faces_ > max_triangles) {
         const std::uint32_t v = heap_.front();
-        const std::uint32_t h = target_[v];
+        const float popped = priority_[v];
+        std::uint32_t h = target_[v];
         heap_remove(v);
         double change = 0.0;
-        // The entry may be stale: check again, and look for a new target if it is.
-        if (!face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
-            heap_vertex(v);
-            continue;
+        if (!verified_[v] || !face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
+            float best = 0.0f;
+            h = best_legal(v, &best, &change);
+            if (h == kNone) continue;  // out of the heap until a neighbour changes
+            if (best > popped && !heap_.empty() && best > priority_[heap_.front()]) {
+                target_[v] = h;
+                priority_[v] = best;
+                verified_[v] = 1;
+                heap_place(v);
+                continue;
+            }
         }
         collapse(h, change);
         ++collapses_;

@@ -89,7 +89,12 @@ class CollapseMesh {
     bool keeps_volume(std::uint32_t v, double change) const;
     // Topology, foot, fan and volume: the collapse of h may go ahead.
     bool is_legal(std::uint32_t h, double* volume_change) const;
-    void heap_vertex(std::uint32_t v);
+    // The error of collapsing h: the summed quadric at the kept vertex.
+    float error(std::uint32_t h) const;
+    // Files v in the heap by its cheapest collapse by error alone (or takes it out).
+    void queue_vertex(std::uint32_t v);
+    // v's cheapest legal collapse (kNone if none), its error and volume change.
+    std::uint32_t best_legal(std::uint32_t v, float* best, double* volume_change) const;
     void collapse(std::uint32_t h, double volume_change);
 
     // Heap of vertices by priority_ (smallest first); heap_position_ is kNone when out.
@@ -117,8 +122,12 @@ class CollapseMesh {
     std::vector<std::uint32_t> piece_;
     std::vector<double> piece_volume_, piece_floor_;
     std::vector<std::size_t> foot_vertices_;  // per piece
-    std::vector<std::uint32_t> target_;       // per vertex: its cheapest legal collapse
+    std::vector<double> own_error_;           // per vertex: its quadric at its position
+    std::vector<std::uint32_t> target_;       // per vertex: its cheapest collapse
+    std::vector<std::uint8_t> verified_;      // per vertex: target_ passed the legality tests
     std::vector<float> priority_;
+    mutable std::vector<std::uint32_t> mark_;  // scratch of the link condition
+    mutable std::uint32_t stamp_ = 0;
     std::vector<std::uint32_t> heap_position_;
     std::vector<std::uint32_t> heap_;
     std::size_t collapses_ = 0;
