@@ -80,9 +80,8 @@ struct Reduction {
 // One reduction from scratch down to `target` triangles; with snapshot_at > target, also
 // the parts as they were at snapshot_at triangles (the start of handle cutting, which then
 // needs no reduction of its own).
-Reduction reduce(const CollapseMesh& input, std::size_t target, std::size_t snapshot_at,
+Reduction reduce(CollapseMesh mesh, std::size_t target, std::size_t snapshot_at,
                  const DecimateSettings& settings, double min_twice_area) {
-    CollapseMesh mesh = input;
     CollapseSettings cs;
     cs.max_normal_turn_degrees = settings.max_normal_turn_degrees;
     cs.min_twice_area = min_twice_area;
@@ -135,7 +134,7 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 // Reduction with the safety net: a result that fails check_topology is redone with fewer
 // collapses, down to returning the input. With snapshot_at > 0, *snapshot gets the parts
 // at that many triangles (or the input, if it has no more), when they pass the same checks.
-DecimateResult reduce_with_backoff(const CollapseMesh& mesh, std::span<const Mesh* const> parts,
+DecimateResult reduce_with_backoff(CollapseMesh mesh, std::span<const Mesh* const> parts,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr) {
@@ -154,8 +153,10 @@ DecimateResult reduce_with_backoff(const CollapseMesh& mesh, std::span<const Mes
         if (snapshot) *snapshot = result.parts;
     } else {
         for (int attempt = 0;; ++attempt) {
-            Reduction r = reduce(mesh, target, attempt == 0 && snapshot ? snapshot_at : 0, settings,
-                                 min_twice_area);
+            // The built mesh serves the first attempt; a retry (never seen) builds it again.
+            Reduction r =
+                reduce(attempt == 0 ? std::move(mesh) : build_checked(parts), target,
+                       attempt == 0 && snapshot ? snapshot_at : 0, settings, min_twice_area);
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot && !r.snapshot.empty() &&
@@ -192,7 +193,7 @@ DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
 }  // namespace
 
 DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings) {
-    const CollapseMesh input = build_checked(parts);
+    CollapseMesh input = build_checked(parts);
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
     const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);
     throw_if_cancelled(settings.cancel);
@@ -209,7 +210,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     DecimateResult result;
     std::vector<Mesh> snapshot;
     if (!handles_pin)
-        result = reduce_with_backoff(input, parts, settings, min_twice_area,
+        result = reduce_with_backoff(std::move(input), parts, settings, min_twice_area,
                                      settings.cut_handles ? intermediate : 0, &snapshot);
 
     // Over budget at the floor: handles pin the remaining triangles. Cut them, shortest
@@ -225,7 +226,8 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
             to_intermediate.max_triangles = intermediate;
             // Unrelocated like the snapshot: the vertices stay on the input surface.
             to_intermediate.relocate_vertices = false;
-            detailed = reduce_with_backoff(input, parts, to_intermediate, min_twice_area);
+            detailed = reduce_with_backoff(handles_pin ? std::move(input) : build_checked(parts),
+                                           parts, to_intermediate, min_twice_area);
         } else {
             detailed.parts = std::move(snapshot);
             detailed.triangles = count_triangles(detailed.parts);

@@ -298,8 +298,10 @@ float CollapseMesh::error(std::uint32_t h) const {
 void CollapseMesh::queue_vertex(std::uint32_t v) {
     float best = std::numeric_limits<float>::max();
     std::uint32_t target = kNone;
+    const Quadric& q = quadric_[v];
     for (std::uint32_t h = outgoing_[v];;) {
-        const float e = error(h);
+        const std::uint32_t v1 = to(h);
+        const auto e = static_cast<float>(q(position_[v1]) + own_error_[v1]);
         if (!(e < 0.0f) && e < best) {
             best = e;
             target = h;
@@ -329,8 +331,9 @@ std::uint32_t CollapseMesh::best_legal(std::uint32_t v, float* best, double* vol
         h = turn(h);
         if (h == outgoing_[v]) break;
     }
-    std::stable_sort(candidates.begin(), candidates.begin() + n,
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (int i = 1; i < n; ++i)  // insertion sort: stable, and n is a valence
+        for (int j = i; j > 0 && candidates[j].first < candidates[j - 1].first; --j)
+            std::swap(candidates[j], candidates[j - 1]);
     for (int i = 0; i < n; ++i)
         if (is_legal(candidates[i].second, volume_change)) {
             *best = candidates[i].first;
