@@ -133,7 +133,8 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 
 // Reduction with the safety net: a result that fails check_topology is redone with fewer
 // collapses, down to returning the input. With snapshot_at > 0, *snapshot gets the parts
-// at that many triangles (or the input, if it has no more), when they pass the same checks.
+// at that many triangles (or the input, if it has no more), unchecked: most reductions
+// never need it.
 DecimateResult reduce_with_backoff(CollapseMesh mesh, std::span<const Mesh* const> parts,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
@@ -159,9 +160,7 @@ DecimateResult reduce_with_backoff(CollapseMesh mesh, std::span<const Mesh* cons
                        attempt == 0 && snapshot ? snapshot_at : 0, settings, min_twice_area);
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
-            if (attempt == 0 && snapshot && !r.snapshot.empty() &&
-                broken(r.snapshot, parts, inward_before).empty())
-                *snapshot = std::move(r.snapshot);
+            if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
             const std::string why = broken(result.parts, parts, inward_before);
             if (why.empty()) break;
             ++result.backoffs;
@@ -221,7 +220,9 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         DecimateSettings quiet = settings;
         quiet.progress = nullptr;
         DecimateResult detailed;
-        if (handles_pin || snapshot.empty()) {
+        std::vector<std::size_t> inward_before;
+        for (const Mesh* m : parts) inward_before.push_back(inward_pieces(*m));
+        if (handles_pin || snapshot.empty() || !broken(snapshot, parts, inward_before).empty()) {
             DecimateSettings to_intermediate = handles_pin ? settings : quiet;
             to_intermediate.max_triangles = intermediate;
             // Unrelocated like the snapshot: the vertices stay on the input surface.

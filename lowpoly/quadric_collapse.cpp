@@ -392,7 +392,7 @@ void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
     // so collapses still happen in the order of their errors, and a collapse's neighbours
     // cost a quadric evaluation each instead of the legality tests of all their edges.
     while (!heap_.empty() && live_faces_ > max_triangles) {
-        const std::uint32_t v = heap_.front();
+        const std::uint32_t v = heap_.front().vertex;
         const float popped = priority_[v];
         std::uint32_t h = target_[v];
         heap_remove(v);
@@ -401,7 +401,7 @@ void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
             float best = 0.0f;
             h = best_legal(v, &best, &change);
             if (h == kNone) continue;  // out of the heap until a neighbour changes
-            if (best > popped && !heap_.empty() && best > priority_[heap_.front()]) {
+            if (best > popped && !heap_.empty() && best > heap_.front().key) {
                 target_[v] = h;
                 priority_[v] = best;
                 verified_[v] = 1;
@@ -485,59 +485,58 @@ std::vector<Mesh> CollapseMesh::extract() const {
     return out;
 }
 
-// A binary min-heap of vertices by priority_.
+// A binary min-heap of vertices by priority; each entry carries its key, so sifting reads
+// the heap's own array only.
 void CollapseMesh::heap_up(std::size_t i) {
-    const std::uint32_t v = heap_[i];
-    const float p = priority_[v];
+    const HeapEntry entry = heap_[i];
     while (i > 0) {
         const std::size_t parent = (i - 1) / 2;
-        const std::uint32_t u = heap_[parent];
-        if (!(p < priority_[u])) break;
-        heap_[i] = u;
-        heap_position_[u] = static_cast<std::uint32_t>(i);
+        if (!(entry.key < heap_[parent].key)) break;
+        heap_[i] = heap_[parent];
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
         i = parent;
     }
-    heap_[i] = v;
-    heap_position_[v] = static_cast<std::uint32_t>(i);
+    heap_[i] = entry;
+    heap_position_[entry.vertex] = static_cast<std::uint32_t>(i);
 }
 
 void CollapseMesh::heap_down(std::size_t i) {
-    const std::uint32_t v = heap_[i];
-    const float p = priority_[v];
+    const HeapEntry entry = heap_[i];
     const std::size_t n = heap_.size();
     for (;;) {
         std::size_t child = 2 * i + 1;
         if (child >= n) break;
-        if (child + 1 < n && priority_[heap_[child + 1]] < priority_[heap_[child]]) ++child;
-        const std::uint32_t u = heap_[child];
-        if (!(priority_[u] < p)) break;
-        heap_[i] = u;
-        heap_position_[u] = static_cast<std::uint32_t>(i);
+        if (child + 1 < n && heap_[child + 1].key < heap_[child].key) ++child;
+        if (!(heap_[child].key < entry.key)) break;
+        heap_[i] = heap_[child];
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
         i = child;
     }
-    heap_[i] = v;
-    heap_position_[v] = static_cast<std::uint32_t>(i);
+    heap_[i] = entry;
+    heap_position_[entry.vertex] = static_cast<std::uint32_t>(i);
 }
 
 void CollapseMesh::heap_remove(std::uint32_t v) {
     const std::uint32_t i = heap_position_[v];
     if (i == kNone) return;
     heap_position_[v] = kNone;
-    const std::uint32_t last = heap_.back();
+    const HeapEntry last = heap_.back();
     heap_.pop_back();
-    if (last == v) return;
+    if (last.vertex == v) return;
     heap_[i] = last;
-    heap_position_[last] = i;
+    heap_position_[last.vertex] = i;
     heap_up(i);
-    heap_down(heap_position_[last]);
+    heap_down(heap_position_[last.vertex]);
 }
 
 void CollapseMesh::heap_place(std::uint32_t v) {
     std::uint32_t i = heap_position_[v];
     if (i == kNone) {
         i = static_cast<std::uint32_t>(heap_.size());
-        heap_.push_back(v);
+        heap_.push_back({priority_[v], v});
         heap_position_[v] = i;
+    } else {
+        heap_[i].key = priority_[v];
     }
     heap_up(i);
     heap_down(heap_position_[v]);

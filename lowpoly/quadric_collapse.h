@@ -129,7 +129,11 @@ class CollapseMesh {
     mutable std::vector<std::uint32_t> mark_;  // scratch of the link condition
     mutable std::uint32_t stamp_ = 0;
     std::vector<std::uint32_t> heap_position_;
-    std::vector<std::uint32_t> heap_;
+    struct HeapEntry {
+        float key;
+        std::uint32_t vertex;
+    };
+    std::vector<HeapEntry> heap_;
     std::size_t collapses_ = 0;
     std::vector<std::uint32_t> support_;  // scratch: the neighbours of a collapsing vertex
 };
