@@ -87,6 +87,7 @@ Reduction reduce(CollapseMesh mesh, std::size_t target, std::size_t snapshot_at,
     cs.min_twice_area = min_twice_area;
     cs.foot_height = settings.foot_height;
     cs.min_foot_vertices = kMinFootVertices;
+    cs.lazy_legality = settings.lazy_legality;
     mesh.start(cs, settings.cancel);
     const std::size_t faces = mesh.triangles();
     const std::size_t expected = faces > target ? (faces - target) / 2 : 0;

@@ -158,6 +158,7 @@ void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
     min_twice_area2_ = settings.min_twice_area * settings.min_twice_area;
     foot_height_ = settings.foot_height;
     min_foot_vertices_ = settings.min_foot_vertices;
+    lazy_ = settings.lazy_legality;
     cancel_ = cancel;
     const std::size_t nv = position_.size(), nf = face_alive_.size();
 
@@ -296,6 +297,19 @@ float CollapseMesh::error(std::uint32_t h) const {
 }
 
 void CollapseMesh::queue_vertex(std::uint32_t v) {
+    if (!lazy_) {  // the cheapest legal collapse, tested now
+        float best = 0.0f;
+        double change = 0.0;
+        target_[v] = best_legal(v, &best, &change);
+        verified_[v] = 1;
+        if (target_[v] != kNone) {
+            priority_[v] = best;
+            heap_place(v);
+        } else {
+            heap_remove(v);
+        }
+        return;
+    }
     float best = std::numeric_limits<float>::max();
     std::uint32_t target = kNone;
     const Quadric& q = quadric_[v];

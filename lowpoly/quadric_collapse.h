@@ -34,6 +34,8 @@ struct CollapseSettings {
     float foot_height = -std::numeric_limits<float>::infinity();
     // The fewest foot vertices a piece keeps.
     std::size_t min_foot_vertices = 6;
+    // See DecimateSettings::lazy_legality.
+    bool lazy_legality = true;
 };
 
 class CollapseMesh {
@@ -116,6 +118,7 @@ class CollapseMesh {
     double min_cos_ = 0, min_cos2_ = 0, min_twice_area2_ = 0;
     float foot_height_ = -std::numeric_limits<float>::infinity();
     std::size_t min_foot_vertices_ = 6;
+    bool lazy_ = true;
     CancelFlag cancel_ = nullptr;
     std::vector<glm::dvec3> normal_;  // per face, unit (or zero)
     std::vector<Quadric> quadric_;    // per vertex

@@ -208,6 +208,25 @@ TEST(QuadricCollapse, FootKeepsItsVerticesOnTheGround) {
     EXPECT_GE(lowest, ground - 1e-5f);
 }
 
+TEST(QuadricCollapse, EagerLegalityKeepsTheSameGuarantees) {
+    const Mesh big = sphere(32), lattice_part = lattice(3, 48);
+    const Mesh* parts[] = {&big, &lattice_part};
+    DecimateSettings s = budget(150);
+    s.cut_handles = false;
+    for (bool lazy : {true, false}) {
+        SCOPED_TRACE(lazy);
+        s.lazy_legality = lazy;
+        const DecimateResult r = decimate(parts, s);
+        EXPECT_TRUE(r.within_budget) << r.note;
+        EXPECT_EQ(genus(r.parts[1]), 4u);
+        for (const Mesh& m : r.parts) {
+            EXPECT_TRUE(check_topology(m).is_closed_manifold());
+            EXPECT_EQ(pieces(m), 1u);
+            EXPECT_TRUE(all_outward(m));
+        }
+    }
+}
+
 TEST(QuadricCollapse, ReportsProgressInOrderAndCancels) {
     const Mesh input = lattice(3, 48);
     DecimateSettings s = budget(100);
