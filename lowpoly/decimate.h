@@ -47,9 +47,10 @@ struct DecimateSettings {
     // Collapse order. true: a vertex waits in the queue by its cheapest collapse by error,
     // and the legality tests (link condition, guards) run when it reaches the front. false:
     // after each collapse its neighbours are tested at once, as OpenMesh's decimater does
-    // (the output is then the same as the OpenMesh-based reducer this one replaced), at
-    // about 1.7x the run time. Lazy legality sees legality as it is when a collapse is made
-    // rather than when it was queued; mean errors stay within a few percent either way.
+    // (where no handle is cut, the output then matched the OpenMesh-based reducer this one
+    // replaced, in the checks made), at about 1.7x the run time. Lazy legality sees legality as it
+    // is when a collapse is made rather than when it was queued; mean errors stay within a few
+    // percent either way.
     bool lazy_legality = true;
     // Vertices at or below this height (Y) are the foot, where the model stands: no
     // collapse lifts a foot vertex off it (nor does relocation), and each piece keeps at
