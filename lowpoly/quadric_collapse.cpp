@@ -71,23 +71,27 @@ bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_pa
         }
     }
     const std::size_t halfedges = corner_.size();
-    // Halfedges leaving each vertex (CSR); the opposite of a -> b is among those leaving b.
-    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges);
+    // Halfedges leaving each vertex (CSR, with where each goes); the opposite of a -> b is
+    // among those leaving b.
+    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges), leaving_to(halfedges);
     for (std::uint32_t v : corner_) ++first[v + 1];
     for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
     {
         std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-        for (std::uint32_t h = 0; h < halfedges; ++h) leaving[fill[corner_[h]]++] = h;
+        for (std::uint32_t h = 0; h < halfedges; ++h) {
+            const std::uint32_t i = fill[corner_[h]]++;
+            leaving[i] = h;
+            leaving_to[i] = to(h);
+        }
     }
     opposite_.assign(halfedges, kNone);
     for (std::uint32_t h = 0; h < halfedges; ++h) {
         const std::uint32_t a = corner_[h], b = to(h);
         std::uint32_t found = kNone;
         for (std::uint32_t i = first[b]; i < first[b + 1]; ++i) {
-            const std::uint32_t g = leaving[i];
-            if (to(g) != a) continue;
+            if (leaving_to[i] != a) continue;
             if (found != kNone) return fail(face_part[h / 3]);  // non-manifold or misoriented
-            found = g;
+            found = leaving[i];
         }
         if (found == kNone) return fail(face_part[h / 3]);  // boundary or misoriented
         opposite_[h] = found;
@@ -202,10 +206,16 @@ void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
     heap_.clear();
     heap_.reserve(nv);
     collapses_ = 0;
+    // Every vertex filed, then the heap made in one pass (Floyd's).
     for (std::uint32_t v = 0; v < nv; ++v) {
         if ((v & 4095) == 4095) throw_if_cancelled(cancel_);
-        if (outgoing_[v] != kNone) queue_vertex(v);
+        if (outgoing_[v] == kNone) continue;
+        queue_vertex(v, /*place=*/false);
+        if (target_[v] != kNone) heap_.push_back({priority_[v], v});
     }
+    for (std::size_t i = heap_.size() / 2; i-- > 0;) heap_down(i);
+    for (std::size_t i = 0; i < heap_.size(); ++i)
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
     throw_if_cancelled(cancel_);
 }
 
@@ -296,18 +306,18 @@ float CollapseMesh::error(std::uint32_t h) const {
     return static_cast<float>(quadric_[corner_[h]](position_[v1]) + own_error_[v1]);
 }
 
-void CollapseMesh::queue_vertex(std::uint32_t v) {
+void CollapseMesh::queue_vertex(std::uint32_t v, bool place) {
     if (!lazy_) {  // the cheapest legal collapse, tested now
         float best = 0.0f;
         double change = 0.0;
         target_[v] = best_legal(v, &best, &change);
         verified_[v] = 1;
-        if (target_[v] != kNone) {
-            priority_[v] = best;
+        priority_[v] = best;
+        if (!place) return;
+        if (target_[v] != kNone)
             heap_place(v);
-        } else {
+        else
             heap_remove(v);
-        }
         return;
     }
     float best = std::numeric_limits<float>::max();
@@ -325,12 +335,12 @@ void CollapseMesh::queue_vertex(std::uint32_t v) {
     }
     target_[v] = target;
     verified_[v] = 0;
-    if (target != kNone) {
-        priority_[v] = best;
+    priority_[v] = best;
+    if (!place) return;
+    if (target != kNone)
         heap_place(v);
-    } else {
+    else
         heap_remove(v);
-    }
 }
 
 std::uint32_t CollapseMesh::best_legal(std::uint32_t v, float* best, double* volume_change) const {

@@ -93,8 +93,10 @@ class CollapseMesh {
     bool is_legal(std::uint32_t h, double* volume_change) const;
     // The error of collapsing h: the summed quadric at the kept vertex.
     float error(std::uint32_t h) const;
-    // Files v in the heap by its cheapest collapse by error alone (or takes it out).
-    void queue_vertex(std::uint32_t v);
+    // Files v in the heap by its cheapest collapse (by error alone, or the cheapest legal
+    // one without lazy legality), or takes it out; with place = false only sets target_,
+    // priority_ and verified_.
+    void queue_vertex(std::uint32_t v, bool place = true);
     // v's cheapest legal collapse (kNone if none), its error and volume change.
     std::uint32_t best_legal(std::uint32_t v, float* best, double* volume_change) const;
     void collapse(std::uint32_t h, double volume_change);
