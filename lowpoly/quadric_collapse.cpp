@@ -405,25 +405,7 @@ void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
     quadric_[v1] += quadric_[v0];
     own_error_[v1] = quadric_[v1](position_[v1]);
     heap_remove(v0);
-    for (std::uint32_t s : support_) {
-        // Of a waiting neighbour's candidates only the one onto v1 changed (v1's quadric
-        // grew, v0 went): unless its own target went or moved onto v1, that one candidate
-        // is all there is to weigh. (Lazy legality only: verified entries are redone.)
-        const std::uint32_t t = target_[s];
-        if (!lazy_ || s == v1 || verified_[s] || heap_position_[s] == kNone || t == kNone ||
-            !face_alive_[t / 3] || to(t) == v1) {
-            queue_vertex(s);
-            continue;
-        }
-        std::uint32_t onto = outgoing_[s];
-        while (to(onto) != v1) onto = turn(onto);
-        const float e = error(onto);
-        if (!(e < 0.0f) && e < priority_[s]) {
-            target_[s] = onto;
-            priority_[s] = e;
-            heap_place(s);
-        }
-    }
+    for (std::uint32_t s : support_) queue_vertex(s);
 }
 
 void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
