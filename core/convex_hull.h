@@ -2,7 +2,7 @@
 // (tree/crown_hulls.h): small ones, of a point set's extremes along a fixed
 // set of directions, so a hull has at most 2 * kHullDirections - 4 triangles whatever the
 // input (Unity's convex MeshCollider takes at most 255). Written here because none of the
-// project's libraries (GLM, OpenMesh, OpenVDB, meshoptimizer, ...) computes a 3D hull.
+// project's libraries (GLM, OpenVDB, meshoptimizer, ...) computes a 3D hull.
 #pragma once
 
 #include <span>

@@ -19,14 +19,17 @@ namespace sylva {
 // closed 2-manifold.
 std::size_t genus(const Mesh& mesh);
 
-// Cuts up to `max_cuts` handles, shortest loops first (loops through a deterministic
-// sample of root vertices: Erickson and Whittlesey's greedy system of loops, whose
-// shortest member is the shortest non-separating loop through its root). Each cut
-// duplicates the loop's vertices and closes both sides with a fan around the loop's
-// centroid; a cut that would not lower the genus by one or would break the manifold
-// (check_topology) is undone and skipped. Returns the number of handles cut.
+// Cuts up to `max_cuts` handles, short loops first. Each round finds candidate loops
+// through many roots at once (Erickson and Whittlesey's greedy system of loops, grown from a
+// forest of shortest paths: a cell per root, and per cell its shortest non-separating loop
+// through the root), takes the shortest ones that stay apart, keeps uncut those that would
+// separate the surface together with the others, and cuts the rest: each cut duplicates the
+// loop's vertices and closes both sides with a fan around the loop's centroid. A round whose
+// cuts do not lower the genus by their number or break the manifold (check_topology,
+// restricted to the cuts) is redone one cut at a time, each checked alone. Returns the number
+// of handles cut.
 // Precondition: a closed 2-manifold. Deterministic. Throws Cancelled once `cancel` is set
-// (polled per loop search and per cut; the mesh is then left with the cuts made so far).
+// (polled per round; the mesh is then left with the cuts of the finished rounds).
 std::size_t cut_handles(Mesh& mesh, std::size_t max_cuts, CancelFlag cancel = nullptr);
 
 }  // namespace sylva

@@ -29,7 +29,7 @@ constexpr double kReduceSecondsPerTriangle = 9.0e-6;
 // Cutting h handles costs about 12 us * h^2 (ternary tree: 126, 645, 1845 handles take
 // 0.15, 5.0, 44 s beyond the triangles' share).
 constexpr double kReduceSecondsPerHandleSquared = 1.2e-5;
-constexpr double kReduceBytesPerTriangle = 400.0;  // OpenMesh's half-edges and properties
+constexpr double kReduceBytesPerTriangle = 400.0;  // corner table, heap, quadrics, copies
 
 std::string format_number(double n) {
     char text[32];

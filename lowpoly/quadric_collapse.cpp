@@ -1,0 +1,569 @@
+#include "lowpoly/quadric_collapse.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/disjoint_sets.h"
+
+namespace sylva {
+
+void CollapseMesh::Quadric::add_plane(double na, double nb, double nc, double nd, double weight) {
+    a += weight * (na * na);
+    b += weight * (na * nb);
+    c += weight * (na * nc);
+    d += weight * (na * nd);
+    e += weight * (nb * nb);
+    f += weight * (nb * nc);
+    g += weight * (nb * nd);
+    h += weight * (nc * nc);
+    i += weight * (nc * nd);
+    j += weight * (nd * nd);
+}
+
+CollapseMesh::Quadric& CollapseMesh::Quadric::operator+=(const Quadric& q) {
+    a += q.a, b += q.b, c += q.c, d += q.d, e += q.e;
+    f += q.f, g += q.g, h += q.h, i += q.i, j += q.j;
+    return *this;
+}
+
+// As OpenMesh's QuadricT evaluates it: the decimater's priorities stay what they were.
+double CollapseMesh::Quadric::operator()(const glm::dvec3& p) const {
+    const double x = p.x, y = p.y, z = p.z;
+    return a * x * x + 2.0 * b * x * y + 2.0 * c * x * z + 2.0 * d * x + e * y * y +
+           2.0 * f * y * z + 2.0 * g * y + h * z * z + 2.0 * i * z + j;
+}
+
+bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_part) {
+    std::size_t nv = 0, nf = 0;
+    for (const Mesh* m : parts) {
+        nv += m->positions.size();
+        nf += m->triangles.size();
+    }
+    part_count_ = parts.size();
+    position_.clear();
+    position_.reserve(nv);
+    part_.clear();
+    part_.reserve(nv);
+    corner_.clear();
+    corner_.reserve(3 * nf);
+    std::vector<std::uint32_t> face_part;
+    face_part.reserve(nf);
+    auto fail = [&](std::size_t k) {
+        if (bad_part) *bad_part = k;
+        return false;
+    };
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Mesh& m = *parts[k];
+        const auto base = static_cast<std::uint32_t>(position_.size());
+        for (const glm::vec3& p : m.positions) {
+            position_.emplace_back(p);
+            part_.push_back(static_cast<std::uint32_t>(k));
+        }
+        for (const auto& t : m.triangles) {
+            if (t[0] >= m.positions.size() || t[1] >= m.positions.size() ||
+                t[2] >= m.positions.size() || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                return fail(k);
+            for (std::uint32_t v : t) corner_.push_back(base + v);
+            face_part.push_back(static_cast<std::uint32_t>(k));
+        }
+    }
+    const std::size_t halfedges = corner_.size();
+    // Halfedges leaving each vertex (CSR, with where each goes); the opposite of a -> b is
+    // among those leaving b.
+    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges), leaving_to(halfedges);
+    for (std::uint32_t v : corner_) ++first[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+    {
+        std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+        for (std::uint32_t h = 0; h < halfedges; ++h) {
+            const std::uint32_t i = fill[corner_[h]]++;
+            leaving[i] = h;
+            leaving_to[i] = to(h);
+        }
+    }
+    opposite_.assign(halfedges, kNone);
+    for (std::uint32_t h = 0; h < halfedges; ++h) {
+        const std::uint32_t a = corner_[h], b = to(h);
+        std::uint32_t found = kNone;
+        for (std::uint32_t i = first[b]; i < first[b + 1]; ++i) {
+            if (leaving_to[i] != a) continue;
+            if (found != kNone) return fail(face_part[h / 3]);  // non-manifold or misoriented
+            found = leaving[i];
+        }
+        if (found == kNone) return fail(face_part[h / 3]);  // boundary or misoriented
+        opposite_[h] = found;
+    }
+    for (std::uint32_t h = 0; h < halfedges; ++h)
+        if (opposite_[opposite_[h]] != h) return fail(face_part[h / 3]);
+    // Each vertex's faces form one fan: turning around it visits all its halfedges.
+    outgoing_.assign(nv, kNone);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if (first[v] == first[v + 1]) continue;
+        const std::uint32_t start = leaving[first[v]];
+        std::uint32_t h = start, count = 0;
+        do {
+            h = turn(h);
+            if (++count > first[v + 1] - first[v]) break;
+        } while (h != start);
+        if (count != first[v + 1] - first[v]) return fail(part_[v]);
+        outgoing_[v] = start;
+    }
+    face_alive_.assign(nf, 1);
+    live_faces_ = nf;
+
+    // Pieces: vertices joined by triangles, numbered in vertex order.
+    DisjointSets sets(nv);
+    for (std::size_t f = 0; f < nf; ++f) {
+        sets.unite(corner_[3 * f + 1], corner_[3 * f]);
+        sets.unite(corner_[3 * f + 2], corner_[3 * f]);
+    }
+    std::vector<std::uint32_t> slot(nv, kNone);
+    piece_.assign(nv, 0);
+    std::uint32_t pieces = 0;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        std::uint32_t& s = slot[sets.find(v)];
+        if (s == kNone) s = pieces++;
+        piece_[v] = s;
+    }
+    piece_count_ = pieces;
+    return true;
+}
+
+std::size_t CollapseMesh::triangle_floor() const {
+    // Per piece with triangles: V - E + F = 2 - 2 genus, E = 3F / 2.
+    std::vector<long> vertices(piece_count_, 0), faces(piece_count_, 0);
+    for (std::uint32_t v = 0; v < position_.size(); ++v)
+        if (outgoing_[v] != kNone) ++vertices[piece_[v]];
+    for (std::size_t f = 0; f < face_alive_.size(); ++f)
+        if (face_alive_[f]) ++faces[piece_[corner_[3 * f]]];
+    std::size_t floor = 0;
+    for (std::size_t p = 0; p < piece_count_; ++p) {
+        if (faces[p] == 0) continue;
+        const long genus = std::max(0L, (2 - (vertices[p] - faces[p] / 2)) / 2);
+        floor += 4 + 12 * static_cast<std::size_t>(genus);
+    }
+    return floor;
+}
+
+void CollapseMesh::update_normal(std::uint32_t face) {
+    const glm::dvec3& a = position_[corner_[3 * face]];
+    const glm::dvec3 n =
+        glm::cross(position_[corner_[3 * face + 1]] - a, position_[corner_[3 * face + 2]] - a);
+    const double length = glm::length(n);
+    normal_[face] = length != 0.0 ? n / length : glm::dvec3(0.0);
+}
+
+void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
+    min_cos_ = std::cos(settings.max_normal_turn_degrees * M_PI / 180.0);
+    min_cos2_ = min_cos_ * min_cos_;
+    min_twice_area2_ = settings.min_twice_area * settings.min_twice_area;
+    foot_height_ = settings.foot_height;
+    min_foot_vertices_ = settings.min_foot_vertices;
+    lazy_ = settings.lazy_legality;
+    cancel_ = cancel;
+    const std::size_t nv = position_.size(), nf = face_alive_.size();
+
+    normal_.assign(nf, glm::dvec3(0.0));
+    quadric_.assign(nv, Quadric());
+    piece_volume_.assign(piece_count_, 0.0);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        if (!face_alive_[f]) continue;
+        update_normal(f);
+        const glm::dvec3 &p0 = position_[corner_[3 * f]], &p1 = position_[corner_[3 * f + 1]],
+                         &p2 = position_[corner_[3 * f + 2]];
+        // ModQuadricT's quadric: the face's plane weighted by its area.
+        glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
+        double area = glm::length(n);
+        if (area > FLT_MIN) {
+            n /= area;
+            area *= 0.5;
+        }
+        Quadric q;
+        q.add_plane(n.x, n.y, n.z, -glm::dot(p0, n), area);
+        for (int k = 0; k < 3; ++k) quadric_[corner_[3 * f + k]] += q;
+        piece_volume_[piece_[corner_[3 * f]]] += glm::dot(p0, glm::cross(p1, p2)) / 6.0;
+    }
+    // A small closed piece can fold through itself over several collapses and come out
+    // inside out; no collapse may take a piece below a sliver of its volume. Inner shells
+    // (negative volume by nature) are left alone.
+    piece_floor_.resize(piece_count_);
+    for (std::size_t i = 0; i < piece_count_; ++i) piece_floor_[i] = 1e-3 * piece_volume_[i];
+    foot_vertices_.assign(piece_count_, 0);
+    for (std::uint32_t v = 0; v < nv; ++v)
+        if (outgoing_[v] != kNone && is_foot(v)) ++foot_vertices_[piece_[v]];
+
+    own_error_.assign(nv, 0.0);
+    for (std::uint32_t v = 0; v < nv; ++v) own_error_[v] = quadric_[v](position_[v]);
+    target_.assign(nv, kNone);
+    verified_.assign(nv, 0);
+    priority_.assign(nv, -1.0f);
+    mark_.assign(nv, 0);
+    stamp_ = 0;
+    heap_position_.assign(nv, kNone);
+    heap_.clear();
+    heap_.reserve(nv);
+    collapses_ = 0;
+    // Every vertex filed, then the heap made in one pass (Floyd's).
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if ((v & 4095) == 4095) throw_if_cancelled(cancel_);
+        if (outgoing_[v] == kNone) continue;
+        queue_vertex(v, /*place=*/false);
+        if (target_[v] != kNone) heap_.push_back({priority_[v], v});
+    }
+    for (std::size_t i = heap_.size() / 2; i-- > 0;) heap_down(i);
+    for (std::size_t i = 0; i < heap_.size(); ++i)
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
+    throw_if_cancelled(cancel_);
+}
+
+bool CollapseMesh::topology_allows(std::uint32_t h) const {
+    const std::uint32_t v0 = corner_[h], v1 = to(h), o = opposite_[h];
+    const std::uint32_t vl = corner_[prev(h)], vr = corner_[prev(o)];
+    if (vl == vr) return false;
+    // Link condition: v0 and v1 share no neighbour but vl and vr.
+    if (++stamp_ == 0) {
+        std::fill(mark_.begin(), mark_.end(), 0);
+        stamp_ = 1;
+    }
+    for (std::uint32_t g = outgoing_[v1];;) {
+        mark_[to(g)] = stamp_;
+        g = turn(g);
+        if (g == outgoing_[v1]) break;
+    }
+    int valence0 = 0;
+    for (std::uint32_t g = outgoing_[v0];;) {
+        const std::uint32_t w = to(g);
+        ++valence0;
+        if (w != vl && w != vr && mark_[w] == stamp_) return false;
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    if (valence0 < 3) return false;
+    // A tetrahedron would collapse to two triangles back to back: vl and vr joined, both
+    // of valence 3.
+    auto valence_is_3 = [&](std::uint32_t v) {
+        const std::uint32_t g = outgoing_[v];
+        return turn(turn(turn(g))) == g && turn(g) != g && turn(turn(g)) != g;
+    };
+    if (valence_is_3(vl) && valence_is_3(vr)) {
+        for (std::uint32_t g = outgoing_[vl];;) {
+            if (to(g) == vr) return false;
+            g = turn(g);
+            if (g == outgoing_[vl]) break;
+        }
+    }
+    return true;
+}
+
+bool CollapseMesh::fan_allows(std::uint32_t v, const glm::dvec3& p, std::uint32_t skip_a,
+                              std::uint32_t skip_b, double* volume_change) const {
+    const glm::dvec3 o = position_[v], d = p - o;
+    double six = 0.0;
+    for (std::uint32_t h = outgoing_[v];;) {
+        const std::uint32_t f = h / 3;
+        if (f != skip_a && f != skip_b) {
+            const glm::dvec3& a = position_[corner_[next(h)]];
+            const glm::dvec3& b = position_[corner_[prev(h)]];
+            const glm::dvec3 n = glm::cross(a - p, b - p);
+            const double n2 = glm::dot(n, n);
+            if (n2 <= min_twice_area2_) return false;
+            // cos(turn) = n.old / |n| with a unit old normal.
+            const double dn = glm::dot(n, normal_[f]);
+            if (min_cos_ >= 0.0 ? !(dn >= 0.0 && dn * dn >= min_cos2_ * n2)
+                                : !(dn >= 0.0 || dn * dn <= min_cos2_ * n2))
+                return false;
+            six += glm::dot(d, glm::cross(a - o, b - o));
+        }
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    *volume_change = six / 6.0;
+    return true;
+}
+
+bool CollapseMesh::keeps_volume(std::uint32_t v, double change) const {
+    const std::uint32_t p = piece_[v];
+    return !(piece_floor_[p] > 0.0) || piece_volume_[p] + change > piece_floor_[p];
+}
+
+bool CollapseMesh::is_legal(std::uint32_t h, double* volume_change) const {
+    const std::uint32_t v0 = corner_[h], v1 = to(h);
+    // A foot vertex may only merge into another foot vertex, and only while its piece has
+    // more than the fewest.
+    if (is_foot(v0) && !(is_foot(v1) && foot_vertices_[piece_[v0]] > min_foot_vertices_))
+        return false;
+    if (!topology_allows(h)) return false;
+    return fan_allows(v0, position_[v1], h / 3, opposite_[h] / 3, volume_change) &&
+           keeps_volume(v0, *volume_change);
+}
+
+float CollapseMesh::error(std::uint32_t h) const {
+    // (Q0 + Q1)(p1) = Q0(p1) + Q1(p1), the second term kept per vertex.
+    const std::uint32_t v1 = to(h);
+    return static_cast<float>(quadric_[corner_[h]](position_[v1]) + own_error_[v1]);
+}
+
+void CollapseMesh::queue_vertex(std::uint32_t v, bool place) {
+    if (!lazy_) {  // the cheapest legal collapse, tested now
+        float best = 0.0f;
+        double change = 0.0;
+        target_[v] = best_legal(v, &best, &change);
+        verified_[v] = 1;
+        priority_[v] = best;
+        if (!place) return;
+        if (target_[v] != kNone)
+            heap_place(v);
+        else
+            heap_remove(v);
+        return;
+    }
+    float best = std::numeric_limits<float>::max();
+    std::uint32_t target = kNone;
+    const Quadric& q = quadric_[v];
+    for (std::uint32_t h = outgoing_[v];;) {
+        const std::uint32_t v1 = to(h);
+        const auto e = static_cast<float>(q(position_[v1]) + own_error_[v1]);
+        if (!(e < 0.0f) && e < best) {
+            best = e;
+            target = h;
+        }
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    target_[v] = target;
+    verified_[v] = 0;
+    priority_[v] = best;
+    if (!place) return;
+    if (target != kNone)
+        heap_place(v);
+    else
+        heap_remove(v);
+}
+
+std::uint32_t CollapseMesh::best_legal(std::uint32_t v, float* best, double* volume_change) const {
+    // Candidates by error (ties in turning order), tested until one is legal.
+    constexpr int kMaxValence = 64;
+    std::array<std::pair<float, std::uint32_t>, kMaxValence> candidates;
+    int n = 0;
+    for (std::uint32_t h = outgoing_[v];;) {
+        const float e = error(h);
+        if (!(e < 0.0f) && e < std::numeric_limits<float>::max() && n < kMaxValence)
+            candidates[n++] = {e, h};
+        h = turn(h);
+        if (h == outgoing_[v]) break;
+    }
+    for (int i = 1; i < n; ++i)  // insertion sort: stable, and n is a valence
+        for (int j = i; j > 0 && candidates[j].first < candidates[j - 1].first; --j)
+            std::swap(candidates[j], candidates[j - 1]);
+    for (int i = 0; i < n; ++i)
+        if (is_legal(candidates[i].second, volume_change)) {
+            *best = candidates[i].first;
+            return candidates[i].second;
+        }
+    return kNone;
+}
+
+void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
+    const std::uint32_t v0 = corner_[h], v1 = to(h), o = opposite_[h];
+    const std::uint32_t piece = piece_[v0];
+    piece_volume_[piece] += volume_change;
+    if (is_foot(v0)) --foot_vertices_[piece];  // onto another foot vertex
+    support_.clear();
+    for (std::uint32_t g = outgoing_[v0];;) {
+        support_.push_back(to(g));
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    const std::uint32_t n1 = next(h), p1 = prev(h), n2 = next(o), p2 = prev(o);
+    const std::uint32_t vl = corner_[p1], vr = corner_[p2];
+    // Outside the two faces that go: a = vl -> v1, b = v0 -> vl, c = vr -> v0, d = v1 -> vr.
+    const std::uint32_t a = opposite_[n1], b = opposite_[p1], c = opposite_[n2], d = opposite_[p2];
+    for (std::uint32_t g = outgoing_[v0];;) {
+        corner_[g] = v1;
+        g = turn(g);
+        if (g == outgoing_[v0]) break;
+    }
+    opposite_[a] = b;
+    opposite_[b] = a;
+    opposite_[c] = d;
+    opposite_[d] = c;
+    outgoing_[v1] = b;
+    outgoing_[vl] = a;
+    outgoing_[vr] = c;
+    outgoing_[v0] = kNone;
+    face_alive_[h / 3] = 0;
+    face_alive_[o / 3] = 0;
+    live_faces_ -= 2;
+    for (std::uint32_t g = outgoing_[v1];;) {
+        update_normal(g / 3);
+        g = turn(g);
+        if (g == outgoing_[v1]) break;
+    }
+    quadric_[v1] += quadric_[v0];
+    own_error_[v1] = quadric_[v1](position_[v1]);
+    heap_remove(v0);
+    for (std::uint32_t s : support_) queue_vertex(s);
+}
+
+void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
+                               const std::function<bool(std::size_t)>& step) {
+    // Lazy legality: a vertex waits in the heap with its cheapest collapse by error alone;
+    // the link condition and the guards run when it comes to the front. If that collapse is
+    // illegal, the cheapest legal one goes back into the heap at its own error (verified),
+    // so collapses still happen in the order of their errors, and a collapse's neighbours
+    // cost a quadric evaluation each instead of the legality tests of all their edges.
+    while (!heap_.empty() && live_faces_ > max_triangles) {
+        const std::uint32_t v = heap_.front().vertex;
+        const float popped = priority_[v];
+        std::uint32_t h = target_[v];
+        heap_remove(v);
+        double change = 0.0;
+        if (!verified_[v] || !face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
+            float best = 0.0f;
+            h = best_legal(v, &best, &change);
+            if (h == kNone) continue;  // out of the heap until a neighbour changes
+            if (best > popped && !heap_.empty() && best > heap_.front().key) {
+                target_[v] = h;
+                priority_[v] = best;
+                verified_[v] = 1;
+                heap_place(v);
+                continue;
+            }
+        }
+        collapse(h, change);
+        ++collapses_;
+        if (step && interval > 0 && collapses_ % interval == 0 && !step(collapses_)) break;
+    }
+}
+
+// Halfedge collapses keep every vertex on the input surface, so a coarse result is
+// inscribed in it (a sphere comes out smaller). Moving each vertex to the minimum of its
+// accumulated quadric (the planes of the input it stands for) lets the facets straddle the
+// surface instead. A small pull towards the current position keeps flat and ridge
+// neighbourhoods (singular quadrics) in place; a move that would fold a triangle is halved,
+// then dropped.
+void CollapseMesh::relocate() {
+    for (std::uint32_t v = 0; v < position_.size(); ++v) {
+        if (outgoing_[v] == kNone) continue;
+        const Quadric& q = quadric_[v];
+        const glm::dvec3 p = position_[v];
+        const double mu = 1e-3 * (q.a + q.e + q.h) / 3.0 + 1e-30;
+        // (A + mu I) x = mu p - b
+        const double m[3][3] = {{q.a + mu, q.b, q.c}, {q.b, q.e + mu, q.f}, {q.c, q.f, q.h + mu}};
+        const double r[3] = {mu * p.x - q.d, mu * p.y - q.g, mu * p.z - q.i};
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        if (!(std::abs(det) > 0.0) || !std::isfinite(det)) continue;
+        glm::dvec3 x;
+        for (int k = 0; k < 3; ++k) {  // Cramer's rule
+            double c[3][3];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) c[i][j] = j == k ? r[i] : m[i][j];
+            x[k] = (c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) -
+                    c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
+                    c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0])) /
+                   det;
+        }
+        if (is_foot(v)) x.y = p.y;  // the foot stays on the ground
+        for (double step : {1.0, 0.5}) {
+            const glm::dvec3 candidate = p + step * (x - p);
+            if (!std::isfinite(candidate.x) || !std::isfinite(candidate.y) ||
+                !std::isfinite(candidate.z))
+                break;
+            double change = 0.0;
+            if (fan_allows(v, candidate, kNone, kNone, &change) && keeps_volume(v, change)) {
+                piece_volume_[piece_[v]] += change;
+                position_[v] = candidate;
+                for (std::uint32_t g = outgoing_[v];;) {
+                    update_normal(g / 3);
+                    g = turn(g);
+                    if (g == outgoing_[v]) break;
+                }
+                break;
+            }
+        }
+    }
+}
+
+std::vector<Mesh> CollapseMesh::extract() const {
+    std::vector<Mesh> out(part_count_);
+    // Only vertices that a triangle uses; new indices in the old order (deterministic).
+    std::vector<std::uint32_t> index(position_.size(), kNone);
+    for (std::uint32_t v = 0; v < position_.size(); ++v) {
+        if (outgoing_[v] == kNone) continue;
+        Mesh& m = out[part_[v]];
+        index[v] = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.emplace_back(static_cast<float>(position_[v].x),
+                                 static_cast<float>(position_[v].y),
+                                 static_cast<float>(position_[v].z));
+    }
+    for (std::size_t f = 0; f < face_alive_.size(); ++f) {
+        if (!face_alive_[f]) continue;
+        const std::uint32_t a = corner_[3 * f], b = corner_[3 * f + 1], c = corner_[3 * f + 2];
+        out[part_[a]].triangles.push_back({index[a], index[b], index[c]});
+    }
+    return out;
+}
+
+// A binary min-heap of vertices by priority; each entry carries its key, so sifting reads
+// the heap's own array only.
+void CollapseMesh::heap_up(std::size_t i) {
+    const HeapEntry entry = heap_[i];
+    while (i > 0) {
+        const std::size_t parent = (i - 1) / 2;
+        if (!(entry.key < heap_[parent].key)) break;
+        heap_[i] = heap_[parent];
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
+        i = parent;
+    }
+    heap_[i] = entry;
+    heap_position_[entry.vertex] = static_cast<std::uint32_t>(i);
+}
+
+void CollapseMesh::heap_down(std::size_t i) {
+    const HeapEntry entry = heap_[i];
+    const std::size_t n = heap_.size();
+    for (;;) {
+        std::size_t child = 2 * i + 1;
+        if (child >= n) break;
+        if (child + 1 < n && heap_[child + 1].key < heap_[child].key) ++child;
+        if (!(heap_[child].key < entry.key)) break;
+        heap_[i] = heap_[child];
+        heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
+        i = child;
+    }
+    heap_[i] = entry;
+    heap_position_[entry.vertex] = static_cast<std::uint32_t>(i);
+}
+
+void CollapseMesh::heap_remove(std::uint32_t v) {
+    const std::uint32_t i = heap_position_[v];
+    if (i == kNone) return;
+    heap_position_[v] = kNone;
+    const HeapEntry last = heap_.back();
+    heap_.pop_back();
+    if (last.vertex == v) return;
+    heap_[i] = last;
+    heap_position_[last.vertex] = i;
+    heap_up(i);
+    heap_down(heap_position_[last.vertex]);
+}
+
+void CollapseMesh::heap_place(std::uint32_t v) {
+    std::uint32_t i = heap_position_[v];
+    if (i == kNone) {
+        i = static_cast<std::uint32_t>(heap_.size());
+        heap_.push_back({priority_[v], v});
+        heap_position_[v] = i;
+    } else {
+        heap_[i].key = priority_[v];
+    }
+    heap_up(i);
+    heap_down(heap_position_[v]);
+}
+
+}  // namespace sylva

@@ -1,0 +1,146 @@
+// The greedy quadric-error edge collapse under decimate() (lowpoly/decimate.h), on flat
+// index arrays: closed triangle meshes as corner tables (halfedge h = 3 * face + corner,
+// with its opposite), one binary heap of vertices keyed by their cheapest legal halfedge
+// collapse (Garland-Heckbert quadrics, the error measured at the kept vertex), the link
+// condition, the fold-over and sliver guards, the per-piece volume floor and the foot.
+// The rules are those of OpenMesh's DecimaterT with ModQuadricT as decimate() used them
+// before; the arrays make a collapse several times cheaper than OpenMesh's kernel, whose
+// property lookups and handle checks dominated the run (Debian builds it without NDEBUG).
+//
+// A CollapseMesh is built once from the parts (which checks that each is a closed
+// 2-manifold) and can be copied, reduced in steps (collapse_to() twice: a snapshot on the
+// way down costs no second reduction), relocated and extracted.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <glm/vec3.hpp>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "core/cancel.h"
+#include "core/mesh.h"
+
+namespace sylva {
+
+struct CollapseSettings {
+    // No collapse may turn a remaining triangle's normal by more than this.
+    double max_normal_turn_degrees = 75.0;
+    // No remaining triangle may get twice its area at or below this (a sliver).
+    double min_twice_area = 0.0;
+    // Vertices at or below this height are the foot (DecimateSettings::foot_height).
+    float foot_height = -std::numeric_limits<float>::infinity();
+    // The fewest foot vertices a piece keeps.
+    std::size_t min_foot_vertices = 6;
+    // See DecimateSettings::lazy_legality.
+    bool lazy_legality = true;
+};
+
+class CollapseMesh {
+  public:
+    // The parts in one mesh (they share no vertex, so no collapse joins them). Returns
+    // true when every non-empty part is a closed, consistently oriented 2-manifold
+    // (triangles of zero area allowed); otherwise false with *bad_part the first part that
+    // is not, and *this is unusable.
+    bool build(std::span<const Mesh* const> parts, std::size_t* bad_part = nullptr);
+
+    std::size_t triangles() const { return live_faces_; }
+    // About where collapses stop: 4 triangles per closed piece and 12 per handle.
+    std::size_t triangle_floor() const;
+
+    // Quadrics, pieces, the heap: call once before collapse_to().
+    void start(const CollapseSettings& settings, CancelFlag cancel);
+    // Collapses the cheapest legal edges until at most `max_triangles` are left or no
+    // collapse is legal; may be called again with a smaller count. Calls `step` (if set)
+    // every `interval` collapses with the number done so far; stops early when it returns
+    // false. Throws Cancelled when `cancel` is set while the heap is built.
+    void collapse_to(std::size_t max_triangles, std::size_t interval = 0,
+                     const std::function<bool(std::size_t)>& step = nullptr);
+    // Moves each vertex to the minimum of its accumulated quadric where the guards allow.
+    void relocate();
+    // The parts as meshes: used vertices in their original order, triangles likewise.
+    std::vector<Mesh> extract() const;
+
+  private:
+    struct Quadric {
+        double a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
+        void add_plane(double na, double nb, double nc, double nd, double weight);
+        Quadric& operator+=(const Quadric& q);
+        double operator()(const glm::dvec3& p) const;
+    };
+    static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+    static std::uint32_t next(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+    static std::uint32_t prev(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+    std::uint32_t to(std::uint32_t h) const { return corner_[next(h)]; }
+    // The next halfedge out of the same vertex (around it, as OpenMesh turns).
+    std::uint32_t turn(std::uint32_t h) const { return next(opposite_[h]); }
+
+    void update_normal(std::uint32_t face);
+    bool is_foot(std::uint32_t v) const { return position_[v].y <= foot_height_; }
+    // The link condition and no tetrahedron collapse (closed meshes).
+    bool topology_allows(std::uint32_t h) const;
+    // Moving v to p (faces skip_a and skip_b, which a collapse removes, left out) keeps
+    // every other triangle around v from turning its normal past the limit or becoming a
+    // sliver; *volume_change gets the change of the enclosed volume.
+    bool fan_allows(std::uint32_t v, const glm::dvec3& p, std::uint32_t skip_a,
+                    std::uint32_t skip_b, double* volume_change) const;
+    // v's piece stays above its volume floor after a change.
+    bool keeps_volume(std::uint32_t v, double change) const;
+    // Topology, foot, fan and volume: the collapse of h may go ahead.
+    bool is_legal(std::uint32_t h, double* volume_change) const;
+    // The error of collapsing h: the summed quadric at the kept vertex.
+    float error(std::uint32_t h) const;
+    // Files v in the heap by its cheapest collapse (by error alone, or the cheapest legal
+    // one without lazy legality), or takes it out; with place = false only sets target_,
+    // priority_ and verified_.
+    void queue_vertex(std::uint32_t v, bool place = true);
+    // v's cheapest legal collapse (kNone if none), its error and volume change.
+    std::uint32_t best_legal(std::uint32_t v, float* best, double* volume_change) const;
+    void collapse(std::uint32_t h, double volume_change);
+
+    // Heap of vertices by priority_ (smallest first); heap_position_ is kNone when out.
+    void heap_up(std::size_t i);
+    void heap_down(std::size_t i);
+    void heap_remove(std::uint32_t v);
+    void heap_place(std::uint32_t v);
+
+    std::size_t part_count_ = 0, piece_count_ = 0;
+    std::vector<glm::dvec3> position_;
+    std::vector<std::uint32_t> part_;       // per vertex
+    std::vector<std::uint32_t> corner_;     // per halfedge: the vertex it leaves
+    std::vector<std::uint32_t> opposite_;   // per halfedge
+    std::vector<std::uint32_t> outgoing_;   // per vertex: one halfedge leaving it, or kNone
+    std::vector<std::uint8_t> face_alive_;  // per face
+    std::size_t live_faces_ = 0;
+
+    // Set by start().
+    double min_cos_ = 0, min_cos2_ = 0, min_twice_area2_ = 0;
+    float foot_height_ = -std::numeric_limits<float>::infinity();
+    std::size_t min_foot_vertices_ = 6;
+    bool lazy_ = true;
+    CancelFlag cancel_ = nullptr;
+    std::vector<glm::dvec3> normal_;  // per face, unit (or zero)
+    std::vector<Quadric> quadric_;    // per vertex
+    std::vector<std::uint32_t> piece_;
+    std::vector<double> piece_volume_, piece_floor_;
+    std::vector<std::size_t> foot_vertices_;  // per piece
+    std::vector<double> own_error_;           // per vertex: its quadric at its position
+    std::vector<std::uint32_t> target_;       // per vertex: its cheapest collapse
+    std::vector<std::uint8_t> verified_;      // per vertex: target_ passed the legality tests
+    std::vector<float> priority_;
+    mutable std::vector<std::uint32_t> mark_;  // scratch of the link condition
+    mutable std::uint32_t stamp_ = 0;
+    std::vector<std::uint32_t> heap_position_;
+    struct HeapEntry {
+        float key;
+        std::uint32_t vertex;
+    };
+    std::vector<HeapEntry> heap_;
+    std::size_t collapses_ = 0;
+    std::vector<std::uint32_t> support_;  // scratch: the neighbours of a collapsing vertex
+};
+
+}  // namespace sylva
