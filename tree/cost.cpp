@@ -22,13 +22,13 @@ constexpr double kBytesPerCellSquared = 850;  // per resolution^2: the sparse me
 constexpr double kSecondsPerModule = 2.0e-6;
 constexpr double kSecondsPerSegment = 34.0e-6;
 constexpr double kMeshSecondsPerCellSquared = 6.0e-6;
-// The default template at budget 800: about 1.8 resolution^2 raw triangles at 9 us each
-// (resolution 2000: 104 s estimated, 103 s measured; 5e-5 overestimated it twice).
-constexpr double kReduceSecondsPerCellSquared = 2.0e-5;
-constexpr double kReduceSecondsPerTriangle = 9.0e-6;
-// Cutting h handles costs about 12 us * h^2 (ternary tree: 126, 645, 1845 handles take
-// 0.15, 5.0, 44 s beyond the triangles' share).
-constexpr double kReduceSecondsPerHandleSquared = 1.2e-5;
+// The default template at budget 800: about 1.8 resolution^2 raw triangles, reduced at
+// 1.2 us each at 160k triangles and 2.2 us at 640k (memory-bound; resolution 600: 1.42 s).
+constexpr double kReduceSecondsPerCellSquared = 4.0e-6;
+constexpr double kReduceSecondsPerTriangle = 2.2e-6;
+// Cutting h handles adds about 0.26 us * h^2 (ternary tree at generations 6, 7, 8: 126,
+// 645, 1845 handles in 97k, 200k, 318k triangles reduce in 0.12, 0.38, 1.26 s).
+constexpr double kReduceSecondsPerHandleSquared = 2.6e-7;
 constexpr double kReduceBytesPerTriangle = 400.0;  // corner table, heap, quadrics, copies
 
 std::string format_number(double n) {
