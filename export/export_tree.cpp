@@ -29,7 +29,8 @@ std::size_t game_budget(const FinishSettings& settings) {
     return b.total;
 }
 
-FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings) {
+FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
+                         std::optional<ReducedTree> level0) {
     FinishedTree out;
     const TreeBudget& budget = settings.budget;
     if (settings.lod) {
@@ -42,7 +43,7 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings) {
             out.budgets.push_back(b.total);
             out.leaf_budgets.push_back(leaf_budget(b));
         }
-        out.levels = make_lod_chain(tree, budgets, settings.decimate);
+        out.levels = make_lod_chain(tree, budgets, settings.decimate, std::move(level0));
     } else if (budget.total > 0 || budget.trunk || budget.crown || budget.leaves) {
         out.budgets = {budget.total};
         out.leaf_budgets = {leaf_budget(budget)};

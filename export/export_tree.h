@@ -53,7 +53,10 @@ SolidParts finest_solids(const Tree& tree, const FinishedTree& finished);
 std::size_t game_budget(const FinishSettings& settings);
 
 // Reduces the tree as `settings` say. Throws what reduce_tree() throws.
-FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings);
+// With settings.lod, `level0` (if given) is the chain's level 0 as made before: what
+// finish_tree() without lod returned as its only level (make_lod_chain()).
+FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
+                         std::optional<ReducedTree> level0 = std::nullopt);
 
 // The parts of each level as the writers want them: trunk, crown and leaves of that level
 // (or the tree's own when not reduced), with the template's colours, named `trunk`,

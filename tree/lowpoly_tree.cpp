@@ -94,16 +94,28 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
     return out;
 }
 
-// The larger of the two one-sided distances between `a` and `b` (2,000 samples each way): a
-// reduced crown's Hausdorff distance from the crown it was made from.
-float sampled_hausdorff(const Mesh& a, const Mesh& b) {
-    constexpr std::size_t kSamples = 2000;
-    const TriangleBvh near_a(a), near_b(b);
-    float far = 0.0f;
-    for (const glm::vec3& p : sample_surface(a, kSamples)) far = std::max(far, near_b.distance(p));
-    for (const glm::vec3& p : sample_surface(b, kSamples)) far = std::max(far, near_a.distance(p));
-    return far;
-}
+// The larger of the two one-sided distances between a mesh and `source` (2,000 samples each
+// way): a reduced crown's Hausdorff distance from the crown it was made from. The source's
+// nearest-triangle tree and samples are made once for every candidate measured against it.
+class SampledHausdorff {
+  public:
+    explicit SampledHausdorff(const Mesh& source)
+        : near_source_(source), source_samples_(sample_surface(source, kSamples)) {}
+
+    float operator()(const Mesh& mesh) const {
+        const TriangleBvh near_mesh(mesh);
+        float far = 0.0f;
+        for (const glm::vec3& p : sample_surface(mesh, kSamples))
+            far = std::max(far, near_source_.distance(p));
+        for (const glm::vec3& p : source_samples_) far = std::max(far, near_mesh.distance(p));
+        return far;
+    }
+
+  private:
+    static constexpr std::size_t kSamples = 2000;
+    TriangleBvh near_source_;
+    std::vector<glm::vec3> source_samples_;
+};
 
 // Whether a closed mesh has a handle (a tunnel, where blobs touch in a ring): the sum of
 // its pieces' genera from the Euler characteristic, V - E + F = 2 (pieces - genus), with
@@ -154,8 +166,8 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     alone.progress = nullptr;
     alone.max_triangles = out.crown.triangles.size();
     DecimateResult more = decimate(more_hulls, alone);
-    if (more.within_budget &&
-        sampled_hausdorff(more.parts[0], hull_source) < sampled_hausdorff(out.crown, hull_source)) {
+    const SampledHausdorff from_source(hull_source);
+    if (more.within_budget && from_source(more.parts[0]) < from_source(out.crown)) {
         out.crown = std::move(more.parts[0]);
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     }
@@ -255,11 +267,13 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
 }
 
 std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
-                                        const DecimateSettings& settings) {
+                                        const DecimateSettings& settings,
+                                        std::optional<ReducedTree> level0) {
     std::vector<ReducedTree> levels;
+    if (level0 && !budgets.empty()) levels.push_back(std::move(*level0));
     const float ground = lowest_y(tree.trunk);
     const auto [finest_trunk, finest_crown] = solids_to_reduce(tree);
-    for (const TreeBudget& budget : budgets) {
+    for (const TreeBudget& budget : budgets.subspan(levels.size())) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
         ReducedTree level =

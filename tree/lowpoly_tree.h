@@ -95,8 +95,13 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
 // the leaves of a finer one. A level whose crown is drawn as hulls (crown_hull_count())
 // makes them from the finest crown, as many as its own budget buys. Errors as
 // reduce_tree().
+//
+// `level0`, when given, is taken as level 0: what reduce_tree(tree, budgets[0]) returned,
+// which is what the chain's level 0 is (the studio shows it while the further levels are
+// made).
 std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBudget> budgets,
-                                        const DecimateSettings& settings = {});
+                                        const DecimateSettings& settings = {},
+                                        std::optional<ReducedTree> level0 = std::nullopt);
 
 // The tree's fine surface: trunk and crown meshed at `resolution` cells along the longest
 // side (issue 6 measures against 200), as one mesh.

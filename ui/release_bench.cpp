@@ -71,9 +71,11 @@ bool drive_release_bench(ReleaseBench& bench, StudioState& state) {
 bool release_bench_done(ReleaseBench& bench, const StudioState& state) {
     if (bench.phase == ReleaseBench::Done) return true;
     if (bench.phase == ReleaseBench::Released) ++bench.frames;
+    // The game mesh of the value let go at, at the level viewed, is on screen (a job may
+    // still be making the chain's coarser levels).
     if (bench.phase != ReleaseBench::Released || !game_mesh_shown(state) ||
-        generation_running(state) ||
-        get_param(state.shown_template.params, bench.key) != bench.target)
+        get_param(state.shown_template.params, bench.key) != bench.target ||
+        static_cast<int>(state.tree->finished.levels.size()) <= state.view.lod_level)
         return false;
     bench.release_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - bench.released).count();

@@ -43,10 +43,10 @@ bool same_tree_input(const TreeTemplate& a, const TreeTemplate& b) {
            a.width_model == b.width_model && same_params(a.params, b.params);
 }
 
-// The meshers get all cores but one: the UI thread draws the window (on a software renderer
-// that is CPU work too), so it keeps its frame rate while a big tree builds.
+// The meshers get every core: while a worker runs, the UI thread draws only when woken or
+// at a tenth of its usual rate (ui/main.cpp), so it keeps up without a core of its own.
 int worker_threads() {
-    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency() - 1));
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 // The worker: the whole pipeline (or the shown tree's meshes, `base`), then the export's
@@ -111,7 +111,29 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
     finish.lod_levels = kLodLevels;
     finish.decimate.cancel = &progress->cancel;  // a newer edit stops a long reduction too
     finish.decimate.progress = [&progress](float f) { progress->fraction = f; };
-    out.finished = finish_tree(out.tree, finish);
+    // Level 0 first, handed over to be shown (half the chain's time on a willow: the coarser
+    // levels' crown hulls are made from the whole crown), then the rest of the chain from it.
+    FinishSettings level0 = finish;
+    level0.lod = false;
+    FinishedTree first = finish_tree(out.tree, level0);
+    if (!first.levels.empty()) {
+        auto partial = std::make_shared<GeneratedTree>();
+        partial->tree = out.tree;
+        partial->finished = first;
+        partial->budget = budget;
+        partial->reduce_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        {
+            const std::lock_guard lock(progress->draft_mutex);
+            progress->draft_tree = std::move(partial);
+        }
+        if (progress->wake) progress->wake();
+    }
+    finish.decimate.progress = nullptr;
+    out.finished =
+        finish_tree(out.tree, finish,
+                    first.levels.empty() ? std::nullopt
+                                         : std::optional<ReducedTree>(std::move(first.levels[0])));
     out.budget = budget;
     out.reduce_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return out;
@@ -158,7 +180,8 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
                         std::size_t budget, const ExportSettings& settings) {
     const Tree& tree = shown->tree;
     FinishedTree finished;
-    if (budget > 0 && shown->reduced() && shown->budget == budget) {
+    if (budget > 0 && shown->reduced() && shown->budget == budget &&
+        (!settings.lod || shown->finished.lod)) {
         // The view's chain is the export's: the whole of it, or level 0 alone.
         finished = shown->finished;
         if (!settings.lod) {
@@ -247,6 +270,13 @@ void show_draft(StudioState& state) {
     if (!draft) return;
     state.tree = std::move(draft);
     state.shown_template = state.job->tree_template;
+    // A job hands over its level 0 before the further levels: the game mesh is on screen.
+    if (state.released_at && state.tree->reduced() && !state.tree->draft &&
+        state.view.lod_level == 0 && same_tree_input(state.shown_template, state.tree_template)) {
+        state.release_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - *state.released_at).count();
+        state.released_at.reset();
+    }
     state.tree_changed = true;
     state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
     state.error.clear();
@@ -267,7 +297,7 @@ bool same_mesh(const Mesh& a, const Mesh& b) {
 
 std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const Tree& tree,
                                             std::size_t budget) {
-    if (!previous.reduced() || previous.budget != budget ||
+    if (!previous.reduced() || !previous.finished.lod || previous.budget != budget ||
         !same_mesh(previous.tree.trunk, tree.trunk) || !same_mesh(previous.tree.crown, tree.crown))
         return std::nullopt;
     FinishedTree finished = previous.finished;

@@ -183,3 +183,38 @@ TEST(TreeReduction, TheTrunkKeepsItsFootAtEveryBudgetAndLevel) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+bool same_mesh_bytes(const Mesh& a, const Mesh& b) {
+    return a.positions == b.positions && a.triangles == b.triangles;
+}
+
+// The studio shows level 0 before the chain's coarser levels are made: a chain continued
+// from the level finish_tree() made alone is the chain made in one go (the willow's coarser
+// levels draw the crown as hulls, the path that costs most).
+TEST(TreeReduction, AChainFromItsLevelZeroIsTheWholeChain) {
+    MeshOptions options;
+    options.budget = 800;
+    const Tree tree = generate_tree(load_template("willow"), options);
+    FinishSettings chain;
+    chain.budget.total = 800;
+    chain.lod = true;
+    FinishSettings alone = chain;
+    alone.lod = false;
+    FinishedTree first = finish_tree(tree, alone);
+    ASSERT_EQ(first.levels.size(), 1u);
+    const FinishedTree whole = finish_tree(tree, chain);
+    const FinishedTree continued = finish_tree(tree, chain, std::move(first.levels[0]));
+    ASSERT_EQ(whole.levels.size(), continued.levels.size());
+    EXPECT_EQ(whole.budgets, continued.budgets);
+    for (std::size_t i = 0; i < whole.levels.size(); ++i) {
+        EXPECT_TRUE(same_mesh_bytes(whole.levels[i].trunk, continued.levels[i].trunk)) << i;
+        EXPECT_TRUE(same_mesh_bytes(whole.levels[i].crown, continued.levels[i].crown)) << i;
+        EXPECT_TRUE(same_mesh_bytes(whole.levels[i].leaves, continued.levels[i].leaves)) << i;
+    }
+}
+
+}  // namespace
+}  // namespace sylva
