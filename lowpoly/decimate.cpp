@@ -1,7 +1,11 @@
 #include "lowpoly/decimate.h"
 
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_group.h>
+
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <glm/common.hpp>
 #include <limits>
 
@@ -53,21 +57,43 @@ std::size_t inward_pieces(const Mesh& mesh) {
         std::count_if(volumes.begin(), volumes.end(), [](double v) { return !(v > 0.0); }));
 }
 
-// The parts as one CollapseMesh; throws InputError naming the first part that is not a
-// closed 2-manifold (zero-area triangles are fine: marching cubes on a very fine grid makes
-// some, and they are the first collapses).
-CollapseMesh build_checked(std::span<const Mesh* const> parts) {
-    CollapseMesh mesh;
-    std::size_t bad = 0;
-    if (mesh.build(parts, &bad)) return mesh;
-    const MeshTopology full = check_topology(*parts[bad]);
-    MeshTopology shape = full;
-    shape.degenerate_triangles = 0;
-    std::string what = describe(shape);
-    if (what.empty()) what = describe(full);  // a repeated or missing vertex index
-    if (what.empty()) what = "a triangle with a repeated vertex";
-    throw InputError("decimate: part " + std::to_string(bad) + " is not a closed 2-manifold (" +
-                     what + ")");
+// One CollapseMesh per part (built in parallel; each part is reduced on its own thread
+// first, see reduce()); throws InputError naming the first part that is not a closed
+// 2-manifold (zero-area triangles are fine: marching cubes on a very fine grid makes some,
+// and they are the first collapses).
+using PartMeshes = std::vector<CollapseMesh>;
+
+PartMeshes build_checked(std::span<const Mesh* const> parts) {
+    PartMeshes meshes(parts.size());
+    std::vector<std::uint8_t> built(parts.size(), 0);
+    tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t k) {
+        const Mesh* one[] = {parts[k]};
+        built[k] = meshes[k].build(one);
+    });
+    for (std::size_t bad = 0; bad < parts.size(); ++bad) {
+        if (built[bad]) continue;
+        const MeshTopology full = check_topology(*parts[bad]);
+        MeshTopology shape = full;
+        shape.degenerate_triangles = 0;
+        std::string what = describe(shape);
+        if (what.empty()) what = describe(full);  // a repeated or missing vertex index
+        if (what.empty()) what = "a triangle with a repeated vertex";
+        throw InputError("decimate: part " + std::to_string(bad) + " is not a closed 2-manifold (" +
+                         what + ")");
+    }
+    return meshes;
+}
+
+std::size_t triangles_in(const PartMeshes& meshes) {
+    std::size_t n = 0;
+    for (const CollapseMesh& m : meshes) n += m.triangles();
+    return n;
+}
+
+std::vector<Mesh> extract(const PartMeshes& meshes) {
+    std::vector<Mesh> parts;
+    for (const CollapseMesh& m : meshes) parts.push_back(std::move(m.extract().front()));
+    return parts;
 }
 
 struct Reduction {
@@ -79,8 +105,11 @@ struct Reduction {
 
 // One reduction from scratch down to `target` triangles; with snapshot_at > target, also
 // the parts as they were at snapshot_at triangles (the start of handle cutting, which then
-// needs no reduction of its own).
-Reduction reduce(CollapseMesh mesh, std::size_t target, std::size_t snapshot_at,
+// needs no reduction of its own). The parts share the budget as one mesh would (one order
+// of collapses by error, collapse_together()); the bulk of it, each part down to what all
+// parts together may keep, runs on a thread per part (the calling thread takes part 0 and
+// reports progress).
+Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
                  const DecimateSettings& settings, double min_twice_area) {
     CollapseSettings cs;
     cs.max_normal_turn_degrees = settings.max_normal_turn_degrees;
@@ -88,28 +117,50 @@ Reduction reduce(CollapseMesh mesh, std::size_t target, std::size_t snapshot_at,
     cs.foot_height = settings.foot_height;
     cs.min_foot_vertices = kMinFootVertices;
     cs.lazy_legality = settings.lazy_legality;
-    mesh.start(cs, settings.cancel);
-    const std::size_t faces = mesh.triangles();
-    const std::size_t expected = faces > target ? (faces - target) / 2 : 0;
+    const std::size_t alone = std::max(target, snapshot_at);
+    const std::size_t first = meshes.empty() ? 0 : meshes[0].triangles();
+    const std::size_t expected = first > alone ? (first - alone) / 2 : 0;
     const std::size_t interval = std::max<std::size_t>(expected / 100, 64);
-    auto step = [&](std::size_t done) {
+    auto reported = [&](std::size_t done) {
         if (settings.progress)
-            settings.progress(
-                std::min(1.0f, static_cast<float>(done) / std::max<std::size_t>(expected, 1)));
+            settings.progress(0.9f * std::min(1.0f, static_cast<float>(done) /
+                                                        std::max<std::size_t>(expected, 1)));
         return !is_cancelled(settings.cancel);
     };
+    auto polled = [&](std::size_t) { return !is_cancelled(settings.cancel); };
+    std::vector<std::exception_ptr> errors(meshes.size());
+    auto reduce_alone = [&](std::size_t k) {
+        try {
+            meshes[k].start(cs, settings.cancel);
+            if (k == 0)
+                meshes[k].collapse_to(alone, interval, reported);
+            else
+                meshes[k].collapse_to(alone, 256, polled);
+        } catch (...) {
+            errors[k] = std::current_exception();
+        }
+    };
+    tbb::task_group others;
+    for (std::size_t k = 1; k < meshes.size(); ++k)
+        others.run([&reduce_alone, k] { reduce_alone(k); });
+    if (!meshes.empty()) reduce_alone(0);
+    others.wait();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+    throw_if_cancelled(settings.cancel);
     Reduction out;
     if (snapshot_at > target) {
-        mesh.collapse_to(snapshot_at, interval, step);
+        collapse_together(meshes, snapshot_at, settings.cancel);
         throw_if_cancelled(settings.cancel);
-        out.snapshot = mesh.extract();
+        out.snapshot = extract(meshes);
     }
-    mesh.collapse_to(target, interval, step);
+    collapse_together(meshes, target, settings.cancel);
     throw_if_cancelled(settings.cancel);
-    if (settings.relocate_vertices) mesh.relocate();
+    if (settings.relocate_vertices)
+        for (CollapseMesh& m : meshes) m.relocate();
     throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
-    out.parts = mesh.extract();
+    out.parts = extract(meshes);
     return out;
 }
 
@@ -136,12 +187,12 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 // collapses, down to returning the input. With snapshot_at > 0, *snapshot gets the parts
 // at that many triangles (or the input, if it has no more), unchecked: most reductions
 // never need it.
-DecimateResult reduce_with_backoff(CollapseMesh mesh, std::span<const Mesh* const> parts,
+DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* const> parts,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr) {
     DecimateResult result;
-    const std::size_t input_triangles = mesh.triangles();
+    const std::size_t input_triangles = triangles_in(meshes);
     auto copy_input = [&] {
         result.parts.clear();
         for (const Mesh* m : parts) result.parts.push_back(*m);
@@ -157,7 +208,7 @@ DecimateResult reduce_with_backoff(CollapseMesh mesh, std::span<const Mesh* cons
         for (int attempt = 0;; ++attempt) {
             // The built mesh serves the first attempt; a retry (never seen) builds it again.
             Reduction r =
-                reduce(attempt == 0 ? std::move(mesh) : build_checked(parts), target,
+                reduce(attempt == 0 ? std::move(meshes) : build_checked(parts), target,
                        attempt == 0 && snapshot ? snapshot_at : 0, settings, min_twice_area);
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
@@ -193,7 +244,7 @@ DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
 }  // namespace
 
 DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings) {
-    CollapseMesh input = build_checked(parts);
+    PartMeshes input = build_checked(parts);
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
     const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);
     throw_if_cancelled(settings.cancel);
@@ -202,7 +253,8 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     // straight to the intermediate one and cut handles there. Otherwise the direct
     // reduction keeps a snapshot at the intermediate count on its way down, in case the
     // handles pin more than the floor says.
-    const std::size_t floor = input.triangle_floor();
+    std::size_t floor = 0;
+    for (const CollapseMesh& m : input) floor += m.triangle_floor();
     const bool handles_pin = settings.cut_handles && floor > settings.max_triangles;
     // Where handles are cut: the parts still have detail there (a few times the floor), so
     // the final reduction can still share the budget well between the parts.

@@ -408,34 +408,70 @@ void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
     for (std::uint32_t s : support_) queue_vertex(s);
 }
 
-void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
-                               const std::function<bool(std::size_t)>& step) {
+float CollapseMesh::front_key() const {
+    return heap_.empty() ? std::numeric_limits<float>::infinity() : heap_.front().key;
+}
+
+std::size_t CollapseMesh::step(float others_front) {
     // Lazy legality: a vertex waits in the heap with its cheapest collapse by error alone;
     // the link condition and the guards run when it comes to the front. If that collapse is
-    // illegal, the cheapest legal one goes back into the heap at its own error (verified),
-    // so collapses still happen in the order of their errors, and a collapse's neighbours
-    // cost a quadric evaluation each instead of the legality tests of all their edges.
+    // illegal, the cheapest legal one goes back into the heap at its own error (verified)
+    // when something else is cheaper now, so collapses still happen in the order of their
+    // errors, and a collapse's neighbours cost a quadric evaluation each instead of the
+    // legality tests of all their edges.
+    const std::uint32_t v = heap_.front().vertex;
+    const float popped = priority_[v];
+    std::uint32_t h = target_[v];
+    heap_remove(v);
+    double change = 0.0;
+    if (!verified_[v] || !face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
+        float best = 0.0f;
+        h = best_legal(v, &best, &change);
+        if (h == kNone) return 0;  // out of the heap until a neighbour changes
+        if (best > popped && best > std::min(front_key(), others_front)) {
+            target_[v] = h;
+            priority_[v] = best;
+            verified_[v] = 1;
+            heap_place(v);
+            return 0;
+        }
+    }
+    collapse(h, change);
+    ++collapses_;
+    return 2;
+}
+
+void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
+                               const std::function<bool(std::size_t)>& step_done) {
     while (!heap_.empty() && live_faces_ > max_triangles) {
-        const std::uint32_t v = heap_.front().vertex;
-        const float popped = priority_[v];
-        std::uint32_t h = target_[v];
-        heap_remove(v);
-        double change = 0.0;
-        if (!verified_[v] || !face_alive_[h / 3] || corner_[h] != v || !is_legal(h, &change)) {
-            float best = 0.0f;
-            h = best_legal(v, &best, &change);
-            if (h == kNone) continue;  // out of the heap until a neighbour changes
-            if (best > popped && !heap_.empty() && best > heap_.front().key) {
-                target_[v] = h;
-                priority_[v] = best;
-                verified_[v] = 1;
-                heap_place(v);
-                continue;
+        if (step(std::numeric_limits<float>::infinity()) == 0) continue;
+        if (step_done && interval > 0 && collapses_ % interval == 0 && !step_done(collapses_))
+            break;
+    }
+}
+
+void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
+                       CancelFlag cancel) {
+    std::size_t triangles = 0;
+    for (const CollapseMesh& m : meshes) triangles += m.triangles();
+    for (std::size_t steps = 1; triangles > max_triangles; ++steps) {
+        // The cheapest front of all (ties to the first mesh), and the next cheapest.
+        std::size_t cheapest = meshes.size();
+        float key = std::numeric_limits<float>::infinity();
+        float second = key;
+        for (std::size_t k = 0; k < meshes.size(); ++k) {
+            const float front = meshes[k].front_key();
+            if (front < key) {
+                second = key;
+                key = front;
+                cheapest = k;
+            } else if (front < second) {
+                second = front;
             }
         }
-        collapse(h, change);
-        ++collapses_;
-        if (step && interval > 0 && collapses_ % interval == 0 && !step(collapses_)) break;
+        if (cheapest == meshes.size()) break;  // no collapse left anywhere
+        triangles -= meshes[cheapest].step(second);
+        if ((steps & 255) == 0 && is_cancelled(cancel)) return;
     }
 }
 

@@ -58,6 +58,13 @@ class CollapseMesh {
     // false. Throws Cancelled when `cancel` is set while the heap is built.
     void collapse_to(std::size_t max_triangles, std::size_t interval = 0,
                      const std::function<bool(std::size_t)>& step = nullptr);
+    // The error of the cheapest collapse waiting (+infinity when none is).
+    float front_key() const;
+    // One turn of collapse_to() for several meshes reduced as one (collapse_together()):
+    // the front vertex collapses, or goes back with its cheapest legal collapse when that
+    // costs more than its own or another mesh's front (`others_front`). Returns the
+    // triangles removed (0 or 2). Precondition: front_key() is finite.
+    std::size_t step(float others_front);
     // Moves each vertex to the minimum of its accumulated quadric where the guards allow.
     void relocate();
     // The parts as meshes: used vertices in their original order, triangles likewise.
@@ -142,5 +149,15 @@ class CollapseMesh {
     std::size_t collapses_ = 0;
     std::vector<std::uint32_t> support_;  // scratch: the neighbours of a collapsing vertex
 };
+
+// Collapses across meshes as if they were one (one heap over all of them, the cheapest
+// collapse first) until at most `max_triangles` are left in all or none can collapse: the
+// same order as one CollapseMesh of all their parts (but for equal errors), since no
+// collapse in one changes another. Reducing each mesh alone first (in parallel) to at most
+// `max_triangles`, then together, gives nearly that order too: a mesh's own collapses come in the
+// same order, except where a collapse found illegal at the front is weighed against the other
+// meshes' fronts. Returns early once `cancel` is set (polled every 256 steps).
+void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
+                       CancelFlag cancel = nullptr);
 
 }  // namespace sylva

@@ -280,3 +280,42 @@ TEST(HandleCutting, DecimationBelowTheHandleFloorOfALattice) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// Parts reduced in meshes of their own but with one order of collapses (collapse_together)
+// share the budget as one mesh of both parts does: the same triangles in all, split between
+// the parts alike (equal errors, of which a marching-cubes sphere has many, may go in another
+// order), every piece closed and outward.
+TEST(QuadricCollapse, MeshesCollapsedTogetherShareTheBudgetAsOneMesh) {
+    const Mesh a = sphere(20), b = lattice(3, 40);
+    CollapseSettings settings;
+    settings.min_twice_area = 1e-12;
+    const Mesh* both[] = {&a, &b};
+    CollapseMesh joint;
+    ASSERT_TRUE(joint.build(both));
+    joint.start(settings, nullptr);
+    joint.collapse_to(300);
+    const std::vector<Mesh> expected = joint.extract();
+
+    std::vector<CollapseMesh> apart(2);
+    const Mesh* only_a[] = {&a};
+    const Mesh* only_b[] = {&b};
+    ASSERT_TRUE(apart[0].build(only_a));
+    ASSERT_TRUE(apart[1].build(only_b));
+    for (CollapseMesh& m : apart) m.start(settings, nullptr);
+    collapse_together(apart, 300);
+    EXPECT_EQ(apart[0].triangles() + apart[1].triangles(), joint.triangles());
+    for (std::size_t k = 0; k < 2; ++k) {
+        const Mesh got = apart[k].extract().front();
+        const double want = static_cast<double>(expected[k].triangles.size());
+        EXPECT_NEAR(static_cast<double>(got.triangles.size()), want, 0.1 * want) << "part " << k;
+        EXPECT_TRUE(check_topology(got).is_closed_manifold()) << "part " << k;
+        EXPECT_TRUE(all_outward(got)) << "part " << k;
+        EXPECT_EQ(genus(got), genus(expected[k])) << "part " << k;
+    }
+}
+
+}  // namespace
+}  // namespace sylva
