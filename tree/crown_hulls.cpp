@@ -7,17 +7,10 @@
 #include <vector>
 
 #include "core/convex_hull.h"
+#include "lowpoly/merge_meshes.h"
 
 namespace sylva {
 namespace {
-
-// Appends `piece` to `out`, indices shifted past what `out` holds.
-void append(Mesh& out, const Mesh& piece) {
-    const auto base = static_cast<std::uint32_t>(out.positions.size());
-    out.positions.insert(out.positions.end(), piece.positions.begin(), piece.positions.end());
-    for (const auto& t : piece.triangles)
-        out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
 
 // Lloyd's k-means on `points`, seeded by farthest-point sampling from the first point
 // (deterministic): the cluster of each point.
@@ -74,16 +67,17 @@ Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
     if (points.size() < 4 || hulls == 0) return crown;
     const std::vector<std::uint32_t> cluster = k_means(points, hulls);
     const std::uint32_t clusters = *std::max_element(cluster.begin(), cluster.end()) + 1;
-    Mesh out;
+    std::vector<Mesh> hull_meshes;
     for (std::uint32_t c = 0; c < clusters; ++c) {
         std::vector<glm::vec3> members;
         for (std::size_t i = 0; i < points.size(); ++i)
             if (cluster[i] == c) members.push_back(points[i]);
-        const Mesh hull = extreme_point_hull(members);
-        if (hull.triangles.empty()) return crown;  // a flat cluster: keep the blobs
-        append(out, hull);
+        hull_meshes.push_back(extreme_point_hull(members));
+        if (hull_meshes.back().triangles.empty()) return crown;  // flat: keep the blobs
     }
-    return out;
+    std::vector<const Mesh*> pointers;
+    for (const Mesh& m : hull_meshes) pointers.push_back(&m);
+    return merge_meshes(pointers);
 }
 
 }  // namespace sylva

@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "core/disjoint_sets.h"
+#include "lowpoly/handle_cutting.h"
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/surface_sampling.h"
@@ -117,30 +117,9 @@ class SampledHausdorff {
     std::vector<glm::vec3> source_samples_;
 };
 
-// Whether a closed mesh has a handle (a tunnel, where blobs touch in a ring): the sum of
-// its pieces' genera from the Euler characteristic, V - E + F = 2 (pieces - genus), with
-// E = 3F / 2 on a closed 2-manifold.
-bool has_handles(const Mesh& mesh) {
-    DisjointSets sets(mesh.positions.size());
-    std::vector<bool> used(mesh.positions.size(), false);
-    for (const auto& t : mesh.triangles) {
-        sets.unite(t[0], t[1]);
-        sets.unite(t[1], t[2]);
-        used[t[0]] = used[t[1]] = used[t[2]] = true;
-    }
-    long vertices = 0, pieces = 0;
-    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
-        if (!used[v]) continue;
-        ++vertices;
-        if (sets.find(v) == v) ++pieces;
-    }
-    const long euler = vertices - static_cast<long>(mesh.triangles.size()) / 2;
-    return 2 * pieces - euler > 0;
-}
-
 // Trunk and crown to the budget, the crown drawn as crown_hull_count() says. In the
-// automatic mode only a crown with handles becomes hulls: where blobs touch in rings the
-// reduction must keep each tunnel (a dozen triangles) or cut it, and spends the budget on
+// automatic mode only a crown with handles (genus above 0) becomes hulls: where blobs touch in
+// rings the reduction must keep each tunnel (a dozen triangles) or cut it, and spends the budget on
 // spikes and slabs; a crown of sphere-like pieces (a conifer's cone) reads better as its
 // own surface reduced (measured with sylva-bench-lowpoly: the blobs won on exactly the
 // templates whose crown has no handle). The shared reduction runs on the hulls (they need
@@ -154,8 +133,7 @@ bool has_handles(const Mesh& mesh) {
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
                           const TreeBudget& budget, const DecimateSettings& settings) {
     const std::size_t hull_count = crown_hull_count(budget);
-    if (hull_count == 0 ||
-        (budget.crown_shape == CrownShape::Automatic && !has_handles(hull_source)))
+    if (hull_count == 0 || (budget.crown_shape == CrownShape::Automatic && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
     const Mesh hulls = crown_hulls(hull_source, hull_count);
     ReducedTree out = reduce_solids(trunk, hulls, budget, settings);

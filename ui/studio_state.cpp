@@ -49,11 +49,19 @@ int worker_threads() {
     return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+// Hands a tree to the UI before the job ends (poll_jobs shows it) and wakes the UI.
+void hand_over(JobProgress& progress, std::shared_ptr<const GeneratedTree> tree) {
+    {
+        const std::lock_guard lock(progress.draft_mutex);
+        progress.draft_tree = std::move(tree);
+    }
+    if (progress.wake) progress.wake();
+}
+
 // The worker: the whole pipeline (or the shown tree's meshes, `base`), then the export's
 // LOD chain when a budget is given: the shown tree's own when the meshes came out the same
 // (reuse_reduction()), reduced otherwise. While a slider is held the meshes are handed over
-// as a draft first. The chain's further levels are reduced from level 0's few hundred
-// triangles, so they cost little beside it.
+// as a draft first; level 0 of the game mesh is handed over before the further levels.
 GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
                        const std::shared_ptr<JobProgress>& progress,
                        const std::shared_ptr<const GeneratedTree>& base,
@@ -97,11 +105,7 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
         auto draft = std::make_shared<GeneratedTree>();
         draft->tree = out.tree;
         draft->draft = true;
-        {
-            const std::lock_guard lock(progress->draft_mutex);
-            progress->draft_tree = std::move(draft);
-        }
-        if (progress->wake) progress->wake();
+        hand_over(*progress, std::move(draft));
     }
     // After the draft: a job that reduces is cancelled by a newer value of a held slider.
     progress->stage = JobProgress::Reducing;
@@ -123,11 +127,7 @@ GeneratedTree generate(const TreeTemplate& tree_template, std::size_t budget,
         partial->budget = budget;
         partial->reduce_ms =
             std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        {
-            const std::lock_guard lock(progress->draft_mutex);
-            progress->draft_tree = std::move(partial);
-        }
-        if (progress->wake) progress->wake();
+        hand_over(*progress, std::move(partial));
     }
     finish.decimate.progress = nullptr;
     out.finished =
@@ -259,7 +259,28 @@ std::string crown_notice_for(const Tree& tree, const TreeParams& p) {
     return text;
 }
 
-// Shows the running job's draft, when it handed one over since the last look.
+// Puts `generated` (made from `made_from`) on screen. When it is the game mesh, at the level
+// viewed, of the value a slider was let go at, the release's time ends.
+void show(StudioState& state, std::shared_ptr<const GeneratedTree> generated,
+          TreeTemplate made_from) {
+    state.tree = std::move(generated);
+    state.shown_template = std::move(made_from);
+    state.tree_changed = true;
+    state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
+    state.error.clear();
+    state.error_line = state.error_column = 0;
+    const bool level_shown =
+        static_cast<int>(state.tree->finished.levels.size()) > state.view.lod_level;
+    if (state.released_at && state.tree->reduced() && !state.tree->draft && level_shown &&
+        same_tree_input(state.shown_template, state.tree_template)) {
+        state.release_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - *state.released_at).count();
+        state.released_at.reset();
+    }
+}
+
+// Shows what the running job handed over since the last look: its draft, or its level 0
+// before the further levels.
 void show_draft(StudioState& state) {
     std::shared_ptr<const GeneratedTree> draft;
     {
@@ -267,20 +288,7 @@ void show_draft(StudioState& state) {
         draft = std::move(state.job->progress->draft_tree);
         state.job->progress->draft_tree.reset();
     }
-    if (!draft) return;
-    state.tree = std::move(draft);
-    state.shown_template = state.job->tree_template;
-    // A job hands over its level 0 before the further levels: the game mesh is on screen.
-    if (state.released_at && state.tree->reduced() && !state.tree->draft &&
-        state.view.lod_level == 0 && same_tree_input(state.shown_template, state.tree_template)) {
-        state.release_ms =
-            std::chrono::duration<double, std::milli>(Clock::now() - *state.released_at).count();
-        state.released_at.reset();
-    }
-    state.tree_changed = true;
-    state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
-    state.error.clear();
-    state.error_line = state.error_column = 0;
+    if (draft) show(state, std::move(draft), state.job->tree_template);
 }
 
 }  // namespace
@@ -557,19 +565,8 @@ void poll_jobs(StudioState& state) {
         state.last_wall_ms =
             std::chrono::duration<double, std::milli>(Clock::now() - job.started).count();
         try {
-            state.tree = std::make_shared<const GeneratedTree>(job.result.get());
-            state.shown_template = std::move(job.tree_template);
-            state.tree_changed = true;
-            state.crown_notice = crown_notice_for(state.tree->tree, state.shown_template.params);
-            state.error.clear();
-            state.error_line = state.error_column = 0;
-            if (state.released_at && state.tree->reduced() &&
-                same_tree_input(state.shown_template, state.tree_template)) {
-                state.release_ms =
-                    std::chrono::duration<double, std::milli>(Clock::now() - *state.released_at)
-                        .count();
-                state.released_at.reset();
-            }
+            show(state, std::make_shared<const GeneratedTree>(job.result.get()),
+                 std::move(job.tree_template));
         } catch (const GrammarError& e) {
             // The GUI's error boundary: bad input becomes a message; the last tree stays.
             state.error = e.what();

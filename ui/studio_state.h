@@ -97,7 +97,9 @@ struct JobProgress {
     // without a draft in between).
     std::atomic<bool> draft{false};
     std::mutex draft_mutex;
-    std::shared_ptr<const GeneratedTree> draft_tree;  // guarded by draft_mutex; taken by poll
+    // What the worker hands over before it ends (the draft, then level 0 of the game mesh);
+    // guarded by draft_mutex; taken by poll_jobs.
+    std::shared_ptr<const GeneratedTree> draft_tree;
     // Called by the worker when it has something to show (a draft, its result): main wakes
     // its event loop with it, which waits while only workers run.
     std::function<void()> wake;
