@@ -1,5 +1,7 @@
 // sylva: the headless command-line interface (SPEC section 8).
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
+#include <oneapi/tbb/parallel_for.h>
+
 #include <charconv>
 #include <chrono>
 #include <cstdint>
@@ -273,16 +275,37 @@ void print_help(std::FILE* to) {
     print_forest_help(to);
 }
 
-void print_parts(const std::vector<NamedMesh>& parts, const char* indent) {
-    for (const NamedMesh& part : parts) {
-        // Leaves are open by design (and counted); the solid parts must be closed.
-        const std::string state =
-            !part.closed ? std::to_string(count_leaves(*part.mesh)) + " leaves, open by design"
-            : check_topology(*part.mesh).is_closed_manifold() ? "closed"
-                                                              : "NOT closed";
-        std::printf("%s%-7s %zu triangles, %zu vertices, %s\n", indent, part.name.c_str(),
-                    part.mesh->triangles.size(), part.mesh->positions.size(), state.c_str());
+// What each part of each group is: "closed", "NOT closed" or its leaf count. The solid
+// parts' checks (the raw marching-cubes meshes are the big ones) run on every core.
+std::vector<std::vector<std::string>> part_states(
+    const std::vector<std::vector<NamedMesh>>& groups) {
+    std::vector<std::pair<std::size_t, std::size_t>> solids;  // (group, part)
+    std::vector<std::vector<std::string>> states(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        states[g].resize(groups[g].size());
+        for (std::size_t k = 0; k < groups[g].size(); ++k) {
+            const NamedMesh& part = groups[g][k];
+            // Leaves are open by design (and counted); the solid parts must be closed.
+            if (part.closed)
+                solids.emplace_back(g, k);
+            else
+                states[g][k] = std::to_string(count_leaves(*part.mesh)) + " leaves, open by design";
+        }
     }
+    tbb::parallel_for(std::size_t{0}, solids.size(), [&](std::size_t i) {
+        const auto [g, k] = solids[i];
+        states[g][k] =
+            check_topology(*groups[g][k].mesh).is_closed_manifold() ? "closed" : "NOT closed";
+    });
+    return states;
+}
+
+void print_parts(const std::vector<NamedMesh>& parts, const std::vector<std::string>& states,
+                 const char* indent) {
+    for (std::size_t k = 0; k < parts.size(); ++k)
+        std::printf("%s%-7s %zu triangles, %zu vertices, %s\n", indent, parts[k].name.c_str(),
+                    parts[k].mesh->triangles.size(), parts[k].mesh->positions.size(),
+                    states[k].c_str());
 }
 
 int run_export(const Options& o) {
@@ -318,8 +341,13 @@ int run_export(const Options& o) {
     tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
+    std::vector<std::vector<NamedMesh>> groups{
+        tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors)};
+    for (const ReducedTree& level : finished.levels)
+        groups.push_back(tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors));
+    const std::vector<std::vector<std::string>> states = part_states(groups);
     std::printf("  marching cubes:\n");
-    print_parts(tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors), "    ");
+    print_parts(groups[0], states[0], "    ");
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
         const std::size_t leaves = finished.leaf_budgets[i];
@@ -330,7 +358,7 @@ int run_export(const Options& o) {
                         leaf_budget.c_str());
         else
             std::printf("  reduced (budget %zu + %s):\n", finished.budgets[i], leaf_budget.c_str());
-        print_parts(tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors), "    ");
+        print_parts(groups[i + 1], states[i + 1], "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),

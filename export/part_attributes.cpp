@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
+#include <numeric>
+#include <span>
 
 #include "core/disjoint_sets.h"
 #include "core/random.h"
@@ -176,22 +179,31 @@ class SegmentGrid {
         cell_ = std::max({size.x, size.y, size.z, 1e-3f}) / 32.0f;
         lo_ -= glm::vec3(cell_);
         dims_ = glm::ivec3((hi + glm::vec3(cell_) - lo_) / cell_) + 1;
-        cells_.resize(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z);
-        for (std::size_t i = 0; i < segs_.size(); ++i) {
+        // Each segment's cells, then a counting sort into one array (segments in order
+        // within a cell): two passes over the boxes instead of a vector per cell.
+        auto for_each_cell = [&](std::size_t i, auto&& f) {
             const Segment& s = segs_[i];
             const float pad = 1.5f * std::max(s.ra, s.rb) + cell_;
             const glm::ivec3 a = cell_of(glm::min(s.a, s.b) - pad),
                              b = cell_of(glm::max(s.a, s.b) + pad);
             for (int z = a.z; z <= b.z; ++z)
                 for (int y = a.y; y <= b.y; ++y)
-                    for (int x = a.x; x <= b.x; ++x)
-                        cells_[index(glm::ivec3(x, y, z))].push_back(static_cast<int>(i));
-        }
+                    for (int x = a.x; x <= b.x; ++x) f(index(glm::ivec3(x, y, z)));
+        };
+        start_.assign(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z + 1, 0);
+        for (std::size_t i = 0; i < segs_.size(); ++i)
+            for_each_cell(i, [&](std::size_t c) { ++start_[c + 1]; });
+        std::partial_sum(start_.begin(), start_.end(), start_.begin());
+        items_.resize(start_.back());
+        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t i = 0; i < segs_.size(); ++i)
+            for_each_cell(i, [&](std::size_t c) { items_[fill[c]++] = static_cast<int>(i); });
     }
 
     int nearest(const glm::vec3& p) const {
         if (segs_.empty()) return -1;
-        const std::vector<int>& near = cells_[index(cell_of(p))];
+        const std::size_t c = index(cell_of(p));
+        const std::span<const int> near(items_.data() + start_[c], start_[c + 1] - start_[c]);
         int best = -1;
         float best_d = std::numeric_limits<float>::max();
         auto consider = [&](int i) {
@@ -218,7 +230,8 @@ class SegmentGrid {
     glm::vec3 lo_{0.0f};
     float cell_ = 1.0f;
     glm::ivec3 dims_{1};
-    std::vector<std::vector<int>> cells_;
+    std::vector<std::uint32_t> start_;  // cell c's segments: items_[start_[c] .. start_[c + 1])
+    std::vector<int> items_;
 };
 
 // Bark UV of p on segment s: u around (before the seam fix), v along in tiles.
@@ -254,11 +267,18 @@ TreeFrame tree_frame(const Mesh& trunk, const Mesh& crown, const Mesh& leaves) {
     return frame;
 }
 
-std::vector<int> owning_segments(const Mesh& mesh, const Skeleton& skeleton) {
-    const SegmentGrid grid(skeleton);
+namespace {
+
+std::vector<int> owning_segments(const Mesh& mesh, const SegmentGrid& grid) {
     std::vector<int> owner(mesh.positions.size());
     for (std::size_t v = 0; v < owner.size(); ++v) owner[v] = grid.nearest(mesh.positions[v]);
     return owner;
+}
+
+}  // namespace
+
+std::vector<int> owning_segments(const Mesh& mesh, const Skeleton& skeleton) {
+    return owning_segments(mesh, SegmentGrid(skeleton));
 }
 
 PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton, const TreeFrame& frame,
@@ -266,7 +286,7 @@ PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton, con
     PartAttributes out;
     const Branches b = branches(skeleton, settings.seed);
     const SegmentGrid grid(skeleton);
-    const std::vector<int> owner = owning_segments(trunk, skeleton);
+    const std::vector<int> owner = owning_segments(trunk, grid);
     const auto& segs = skeleton.segments;
     const std::size_t n = trunk.positions.size();
     auto root_of = [&](int s) { return s < 0 ? -1 : b.root[static_cast<std::size_t>(s)]; };
