@@ -57,6 +57,12 @@ std::size_t inward_pieces(const Mesh& mesh) {
         std::count_if(volumes.begin(), volumes.end(), [](double v) { return !(v > 0.0); }));
 }
 
+std::vector<std::size_t> inward_pieces(std::span<const Mesh* const> parts) {
+    std::vector<std::size_t> inward;
+    for (const Mesh* m : parts) inward.push_back(inward_pieces(*m));
+    return inward;
+}
+
 // One CollapseMesh per part (built in parallel; each part is reduced on its own thread
 // first, see reduce()); throws InputError naming the first part that is not a closed
 // 2-manifold (zero-area triangles are fine: marching cubes on a very fine grid makes some,
@@ -184,10 +190,11 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 }
 
 // Reduction with the safety net: a result that fails check_topology is redone with fewer
-// collapses, down to returning the input. With snapshot_at > 0, *snapshot gets the parts
-// at that many triangles (or the input, if it has no more), unchecked: most reductions
-// never need it.
+// collapses, down to returning the input. `inward_before` is inward_pieces(parts). With
+// snapshot_at > 0, *snapshot gets the parts at that many triangles (or the input, if it has
+// no more), unchecked: most reductions never need it.
 DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* const> parts,
+                                   const std::vector<std::size_t>& inward_before,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr) {
@@ -197,8 +204,6 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
         result.parts.clear();
         for (const Mesh* m : parts) result.parts.push_back(*m);
     };
-    std::vector<std::size_t> inward_before;
-    for (const Mesh* m : parts) inward_before.push_back(inward_pieces(*m));
     std::size_t target = settings.max_triangles;
     constexpr int kMaxAttempts = 6;
     if (input_triangles <= target) {
@@ -238,7 +243,8 @@ DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
                                    const DecimateSettings& settings, double min_twice_area) {
     std::vector<const Mesh*> pointers;
     for (const Mesh& m : meshes) pointers.push_back(&m);
-    return reduce_with_backoff(build_checked(pointers), pointers, settings, min_twice_area);
+    return reduce_with_backoff(build_checked(pointers), pointers, inward_pieces(pointers), settings,
+                               min_twice_area);
 }
 
 }  // namespace
@@ -259,11 +265,14 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     // Where handles are cut: the parts still have detail there (a few times the floor), so
     // the final reduction can still share the budget well between the parts.
     const std::size_t intermediate = 4 * std::max(settings.max_triangles, floor);
+    // Inside-out pieces of the input: a reduction may not add any (broken()).
+    const std::vector<std::size_t> inward_before = inward_pieces(parts);
     DecimateResult result;
     std::vector<Mesh> snapshot;
     if (!handles_pin)
-        result = reduce_with_backoff(std::move(input), parts, settings, min_twice_area,
-                                     settings.cut_handles ? intermediate : 0, &snapshot);
+        result =
+            reduce_with_backoff(std::move(input), parts, inward_before, settings, min_twice_area,
+                                settings.cut_handles ? intermediate : 0, &snapshot);
 
     // Over budget at the floor: handles pin the remaining triangles. Cut them, shortest
     // loops first, then reduce the cut parts to the budget; repeat while it helps.
@@ -273,15 +282,13 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         DecimateSettings quiet = settings;
         quiet.progress = nullptr;
         DecimateResult detailed;
-        std::vector<std::size_t> inward_before;
-        for (const Mesh* m : parts) inward_before.push_back(inward_pieces(*m));
         if (handles_pin || snapshot.empty() || !broken(snapshot, parts, inward_before).empty()) {
             DecimateSettings to_intermediate = handles_pin ? settings : quiet;
             to_intermediate.max_triangles = intermediate;
             // Unrelocated like the snapshot: the vertices stay on the input surface.
             to_intermediate.relocate_vertices = false;
             detailed = reduce_with_backoff(handles_pin ? std::move(input) : build_checked(parts),
-                                           parts, to_intermediate, min_twice_area);
+                                           parts, inward_before, to_intermediate, min_twice_area);
         } else {
             detailed.parts = std::move(snapshot);
             detailed.triangles = count_triangles(detailed.parts);
