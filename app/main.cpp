@@ -1,6 +1,7 @@
 // sylva: the headless command-line interface (SPEC section 8).
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_invoke.h>
 
 #include <charconv>
 #include <chrono>
@@ -332,20 +333,29 @@ int run_export(const Options& o) {
     check_cost(estimate_reduction_cost(tree.trunk, tree.crown, mesh.budget), o.limits,
                kRaiseLimits);
 
+    // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
+    // and a core is often free (the reduction of a big trunk waits for nothing either).
+    std::vector<std::vector<NamedMesh>> groups{
+        tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors)};
+    std::vector<std::vector<std::string>> states;
     Stopwatch clock;
-    const FinishedTree finished = finish_tree(tree, finish);
-    ExportOptions export_options = o.export_options;
-    export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
-    const std::vector<std::filesystem::path> files =
-        write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
+    FinishedTree finished;
+    std::vector<std::filesystem::path> files;
+    tbb::parallel_invoke(
+        [&] {
+            finished = finish_tree(tree, finish);
+            ExportOptions export_options = o.export_options;
+            export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
+            files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
+        },
+        [&] { states = part_states(groups); });
     tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
-    std::vector<std::vector<NamedMesh>> groups{
-        tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors)};
-    for (const ReducedTree& level : finished.levels)
+    for (const ReducedTree& level : finished.levels) {
         groups.push_back(tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors));
-    const std::vector<std::vector<std::string>> states = part_states(groups);
+        states.push_back(part_states({groups.back()}).front());
+    }
     std::printf("  marching cubes:\n");
     print_parts(groups[0], states[0], "    ");
     for (size_t i = 0; i < finished.levels.size(); ++i) {
