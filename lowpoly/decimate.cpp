@@ -8,6 +8,7 @@
 #include <exception>
 #include <glm/common.hpp>
 #include <limits>
+#include <numeric>
 
 #include "core/errors.h"
 #include "lowpoly/handle_cutting.h"
@@ -301,19 +302,23 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         int handles_cut = 0;
         for (int round = 0; round < 8 && !result.within_budget && detailed.backoffs == 0; ++round) {
             throw_if_cancelled(settings.cancel);
-            std::vector<std::size_t> genera;
-            std::size_t total_genus = 0;
-            for (const Mesh& m : cut)
-                total_genus += genera.emplace_back(m.triangles.empty() ? 0 : genus(m));
+            // The parts share no vertex: each is measured and cut on a core of its own.
+            std::vector<std::size_t> genera(cut.size(), 0);
+            tbb::parallel_for(std::size_t{0}, cut.size(), [&](std::size_t k) {
+                if (!cut[k].triangles.empty()) genera[k] = genus(cut[k]);
+            });
+            const std::size_t total_genus =
+                std::accumulate(genera.begin(), genera.end(), std::size_t{0});
             if (total_genus == 0) break;
             // A handle pins about a dozen triangles at the floor.
             const std::size_t wanted = std::clamp<std::size_t>(
                 (result.triangles - settings.max_triangles + 7) / 8, 1, total_genus);
-            std::size_t done = 0;
-            for (std::size_t k = 0; k < cut.size(); ++k) {
+            std::vector<std::size_t> cuts(cut.size(), 0);
+            tbb::parallel_for(std::size_t{0}, cut.size(), [&](std::size_t k) {
                 const std::size_t share = (wanted * genera[k] + total_genus - 1) / total_genus;
-                if (share > 0) done += cut_handles(cut[k], share, settings.cancel);
-            }
+                if (share > 0) cuts[k] = cut_handles(cut[k], share, settings.cancel);
+            });
+            const std::size_t done = std::accumulate(cuts.begin(), cuts.end(), std::size_t{0});
             if (done == 0) break;
             handles_cut += static_cast<int>(done);
             DecimateResult again = reduce_with_backoff(cut, quiet, min_twice_area);
