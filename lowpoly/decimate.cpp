@@ -164,7 +164,8 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     collapse_together(meshes, target, settings.cancel);
     throw_if_cancelled(settings.cancel);
     if (settings.relocate_vertices)
-        for (CollapseMesh& m : meshes) m.relocate();
+        tbb::parallel_for(std::size_t{0}, meshes.size(),
+                          [&](std::size_t k) { meshes[k].relocate(); });
     throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
     out.parts = extract(meshes);
@@ -175,18 +176,27 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
 // a closed 2-manifold, or has more inside-out pieces than the input had.
 std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const> input,
                    const std::vector<std::size_t>& inward_before) {
-    for (std::size_t k = 0; k < reduced.size(); ++k) {
-        if (reduced[k].triangles.empty() != input[k]->triangles.empty())
-            return "part " + std::to_string(k) + " vanished";
-        if (reduced[k].triangles.empty()) continue;
+    // Each part checked on a core of its own; the first part's reason wins.
+    std::vector<std::string> why(reduced.size());
+    tbb::parallel_for(std::size_t{0}, reduced.size(), [&](std::size_t k) {
+        if (reduced[k].triangles.empty() != input[k]->triangles.empty()) {
+            why[k] = "part " + std::to_string(k) + " vanished";
+            return;
+        }
+        if (reduced[k].triangles.empty()) return;
         const MeshTopology t = check_topology(reduced[k]);
-        if (!t.is_closed_manifold()) return "part " + std::to_string(k) + " had " + describe(t);
+        if (!t.is_closed_manifold()) {
+            why[k] = "part " + std::to_string(k) + " had " + describe(t);
+            return;
+        }
         // Collapses guard each triangle's turn, but a small piece can still fold through
         // itself and come out inside out: closed, yet with no volume. (An inner shell, the
         // wall of a hollow, is inward by nature: count only new ones.)
         if (inward_pieces(reduced[k]) > inward_before[k])
-            return "part " + std::to_string(k) + " had an inside-out piece";
-    }
+            why[k] = "part " + std::to_string(k) + " had an inside-out piece";
+    });
+    for (std::string& w : why)
+        if (!w.empty()) return std::move(w);
     return {};
 }
 
