@@ -1,5 +1,7 @@
 #include "tree/lowpoly_tree.h"
 
+#include <oneapi/tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -155,9 +157,16 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
 // The tree's trunk and crown without inner shells: hollows are invisible and only cost
 // triangles (lowpoly/inner_shells.h).
 std::pair<Mesh, Mesh> solids_to_reduce(const Tree& tree) {
-    std::pair<Mesh, Mesh> solids{tree.trunk, tree.crown};
-    remove_inner_shells(solids.first);
-    remove_inner_shells(solids.second);
+    std::pair<Mesh, Mesh> solids;
+    tbb::parallel_invoke(
+        [&] {
+            solids.first = tree.trunk;
+            remove_inner_shells(solids.first);
+        },
+        [&] {
+            solids.second = tree.crown;
+            remove_inner_shells(solids.second);
+        });
     return solids;
 }
 
