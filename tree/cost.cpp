@@ -1,5 +1,7 @@
 #include "tree/cost.h"
 
+#include <oneapi/tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -72,7 +74,10 @@ Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t b
     Cost cost;
     cost.triangles = static_cast<double>(trunk.triangles.size() + crown.triangles.size());
     if (budget == 0 || cost.triangles <= static_cast<double>(budget)) return Cost{};
-    cost.handles = static_cast<double>(genus(trunk) + genus(crown));
+    std::size_t trunk_handles = 0, crown_handles = 0;
+    tbb::parallel_invoke([&] { trunk_handles = genus(trunk); },
+                         [&] { crown_handles = genus(crown); });
+    cost.handles = static_cast<double>(trunk_handles + crown_handles);
     cost.bytes = kReduceBytesPerTriangle * cost.triangles;
     cost.seconds = kReduceSecondsPerTriangle * cost.triangles +
                    kReduceSecondsPerHandleSquared * cost.handles * cost.handles;
