@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <numeric>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -64,8 +63,10 @@ MeshTopology check_topology(const Mesh& mesh) {
     // Triangles with a bad or repeated index are degenerate and left out of the edge and
     // vertex checks, which would otherwise report the same defect again; flat triangles with
     // distinct indices still connect their neighbours and are kept.
+    const std::size_t vertex_count = mesh.positions.size();
     std::vector<std::uint32_t> usable;
     usable.reserve(mesh.triangles.size());
+    std::vector<std::uint32_t> link_start(vertex_count + 1, 0);
     for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
         const Triangle& tri = mesh.triangles[t];
         if (!indices_valid(mesh, tri) || repeats_index(tri)) {
@@ -74,77 +75,84 @@ MeshTopology check_topology(const Mesh& mesh) {
         }
         if (glm::length(area_vector(mesh, tri)) <= min_twice_area) ++result.degenerate_triangles;
         usable.push_back(t);
+        for (const std::uint32_t v : tri) ++link_start[v + 1];
     }
 
-    // Undirected edges as (low, high, forward), sorted so that the uses of one edge are
-    // adjacent.
-    std::vector<std::tuple<std::uint32_t, std::uint32_t, bool>> edges;
-    edges.reserve(3 * usable.size());
-    for (const std::uint32_t t : usable) {
-        const Triangle& tri = mesh.triangles[t];
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = tri[k], b = tri[(k + 1) % 3];
-            edges.emplace_back(std::min(a, b), std::max(a, b), a < b);
-        }
-    }
-    std::sort(edges.begin(), edges.end());
-    for (std::size_t first = 0; first < edges.size();) {
-        std::size_t last = first + 1;
-        while (last < edges.size() && std::get<0>(edges[last]) == std::get<0>(edges[first]) &&
-               std::get<1>(edges[last]) == std::get<1>(edges[first])) {
-            ++last;
-        }
-        const std::size_t uses = last - first;
-        if (uses == 1) {
-            ++result.boundary_edges;
-        } else if (uses >= 3) {
-            ++result.non_manifold_edges;
-        } else if (std::get<2>(edges[first]) == std::get<2>(edges[first + 1])) {
-            ++result.misoriented_edges;
-        }
-        first = last;
-    }
-
-    // A vertex is manifold when the edges opposite it in its triangles (its link) form one
-    // connected path or cycle; each extra connected component is another fan meeting the
-    // first at this vertex only.
-    std::vector<std::uint32_t> link_start(mesh.positions.size() + 1, 0);
-    for (const std::uint32_t t : usable) {
-        for (const std::uint32_t v : mesh.triangles[t]) ++link_start[v + 1];
-    }
+    // Each vertex's link: for every triangle (v, a, b) around it, the edge (a, b) opposite.
+    // The triangle also uses the directed edges v -> a and b -> v, so the link holds every
+    // use of every edge at v, and an undirected edge is counted once, at its lower end, with
+    // no global sort of all edges.
     std::partial_sum(link_start.begin(), link_start.end(), link_start.begin());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> links(link_start.back());
     {
         std::vector<std::uint32_t> fill(link_start.begin(), link_start.end() - 1);
         for (const std::uint32_t t : usable) {
             const Triangle& tri = mesh.triangles[t];
-            for (int k = 0; k < 3; ++k)
-                links[fill[tri[k]]++] = {tri[(k + 1) % 3], tri[(k + 2) % 3]};
+            links[fill[tri[0]]++] = {tri[1], tri[2]};
+            links[fill[tri[1]]++] = {tri[2], tri[0]};
+            links[fill[tri[2]]++] = {tri[0], tri[1]};
         }
     }
-    std::vector<std::uint32_t> neighbours;
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-        const auto begin = links.begin() + link_start[v];
-        const auto end = links.begin() + link_start[v + 1];
+
+    // A vertex is manifold when its link is one connected path or cycle. Per vertex, its
+    // neighbours numbered locally (slot[w] while v is visited), how often the edge to each is
+    // used in each direction, and the link's components by union-find over the local numbers
+    // (links are small: about six neighbours, so this stays in cache without any sort).
+    struct Neighbour {
+        std::uint32_t vertex;
+        std::uint32_t parent;    // union-find over local numbers
+        std::uint32_t outgoing;  // uses as v -> vertex
+        std::uint32_t incoming;  // uses as vertex -> v
+    };
+    constexpr std::uint32_t kNone = ~0u;
+    std::vector<std::uint32_t> slot(vertex_count, kNone);
+    std::uint32_t largest_link = 0;
+    for (std::size_t v = 0; v < vertex_count; ++v)
+        largest_link = std::max(largest_link, link_start[v + 1] - link_start[v]);
+    std::vector<Neighbour> around(2 * std::size_t(largest_link));
+    std::uint32_t count = 0;
+    const auto find = [&](std::uint32_t x) {
+        while (around[x].parent != x) x = around[x].parent = around[around[x].parent].parent;
+        return x;
+    };
+    const auto local = [&](std::uint32_t w) {
+        std::uint32_t& s = slot[w];
+        if (s == kNone) {
+            s = count++;
+            around[s] = {w, s, 0, 0};
+        }
+        return s;
+    };
+    for (std::uint32_t v = 0; v < vertex_count; ++v) {
+        const std::uint32_t begin = link_start[v], end = link_start[v + 1];
         if (begin == end) continue;
-        neighbours.clear();
-        for (auto it = begin; it != end; ++it) {
-            neighbours.push_back(it->first);
-            neighbours.push_back(it->second);
+        count = 0;
+        std::uint32_t joins = 0;
+        for (std::uint32_t k = begin; k < end; ++k) {
+            const std::uint32_t a = local(links[k].first), b = local(links[k].second);
+            ++around[a].outgoing;
+            ++around[b].incoming;
+            const std::uint32_t ra = find(a), rb = find(b);
+            if (ra != rb) {
+                around[ra].parent = rb;
+                ++joins;
+            }
         }
-        std::sort(neighbours.begin(), neighbours.end());
-        neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-        const auto local = [&](std::uint32_t n) {
-            return int(std::lower_bound(neighbours.begin(), neighbours.end(), n) -
-                       neighbours.begin());
-        };
-        DisjointSets sets(neighbours.size());
-        std::size_t components = neighbours.size();
-        for (auto it = begin; it != end; ++it) {
-            if (sets.unite(std::uint32_t(local(it->first)), std::uint32_t(local(it->second))))
-                --components;
+        // Each extra component of the link is another fan meeting the first at v only.
+        if (count - joins > 1) ++result.non_manifold_vertices;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const Neighbour& n = around[i];
+            slot[n.vertex] = kNone;
+            if (n.vertex < v) continue;  // counted at its lower end
+            const std::uint32_t uses = n.outgoing + n.incoming;
+            if (uses == 1) {
+                ++result.boundary_edges;
+            } else if (uses >= 3) {
+                ++result.non_manifold_edges;
+            } else if (n.outgoing == 2 || n.incoming == 2) {
+                ++result.misoriented_edges;
+            }
         }
-        if (components > 1) ++result.non_manifold_vertices;
     }
     return result;
 }

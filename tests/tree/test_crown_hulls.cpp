@@ -3,13 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <random>
+#include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "marching/mesh_checks.h"
 #include "tree/crown_hulls.h"
+#include "tree/crown_merge.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -168,6 +175,109 @@ TEST(CrownHulls, ALowBudgetLodChainMeetsEveryLevelsBudget) {
         EXPECT_LE(levels[i].trunk.triangles.size(), levels[i - 1].trunk.triangles.size());
         EXPECT_LE(levels[i].crown.triangles.size(), levels[i - 1].crown.triangles.size());
     }
+}
+
+}  // namespace
+}  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// crown_bridges as it was before Kruskal took over the search: the growth bisected with
+// count_crown_pieces to 1% of the crown's size, then Kruskal's order over the pairs closer
+// than twice that growth (all pairs tried here, not a grid).
+std::vector<std::pair<std::uint32_t, std::uint32_t>> bisected_bridges(std::span<const Ball> balls,
+                                                                      std::size_t max_pieces) {
+    if (count_crown_pieces(balls, 0.0f) <= std::max<std::size_t>(max_pieces, 1)) return {};
+    glm::vec3 lo(balls[0].center), hi(balls[0].center);
+    for (const Ball& b : balls) {
+        lo = glm::min(lo, b.center);
+        hi = glm::max(hi, b.center);
+    }
+    float low = 0.0f, high = 0.5f * glm::distance(lo, hi) + 1e-3f;
+    const float precision = 0.01f * high;
+    while (high - low > precision) {
+        const float mid = 0.5f * (low + high);
+        (count_crown_pieces(balls, mid) <= max_pieces ? high : low) = mid;
+    }
+    std::vector<std::tuple<float, std::uint32_t, std::uint32_t>> gaps;
+    for (std::uint32_t i = 0; i < balls.size(); ++i)
+        for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
+            const float gap =
+                glm::distance(balls[i].center, balls[j].center) - balls[i].radius - balls[j].radius;
+            if (gap < 2.0f * high) gaps.emplace_back(gap, i, j);
+        }
+    std::sort(gaps.begin(), gaps.end());
+    std::vector<std::uint32_t> parent(balls.size());
+    for (std::uint32_t i = 0; i < balls.size(); ++i) parent[i] = i;
+    const auto find = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x];
+        return x;
+    };
+    std::size_t pieces = balls.size();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges;
+    for (const auto& [gap, i, j] : gaps) {
+        if (pieces <= max_pieces && gap > 0.0f) break;
+        const std::uint32_t a = find(i), b = find(j);
+        if (a == b) continue;
+        parent[a] = b;
+        --pieces;
+        if (gap > 0.0f) bridges.emplace_back(i, j);
+    }
+    return bridges;
+}
+
+// Clusters of spheres, some overlapping, some touching, some alone, far apart or close.
+std::vector<Ball> random_crown(std::mt19937& random) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const int clusters = 1 + int(random() % 12);
+    const float spread = 0.5f + 20.0f * unit(random);
+    std::vector<Ball> balls;
+    for (int c = 0; c < clusters; ++c) {
+        const glm::vec3 centre(spread * unit(random), spread * unit(random), spread * unit(random));
+        const int count = 1 + int(random() % 24);
+        const float size = 0.05f + unit(random);
+        for (int k = 0; k < count; ++k) {
+            const glm::vec3 offset(unit(random) - 0.5f, unit(random) - 0.5f, unit(random) - 0.5f);
+            balls.push_back({centre + 3.0f * size * offset, size * (0.2f + unit(random))});
+            if (random() % 8 == 0)  // a twin touching it: a gap of (about) zero
+                balls.push_back({balls.back().center + glm::vec3(2.0f * balls.back().radius, 0, 0),
+                                 balls.back().radius});
+        }
+    }
+    return balls;
+}
+
+TEST(CrownMerge, BridgesAreThoseOfTheBisectedGrowth) {
+    std::mt19937 random(11);
+    for (int round = 0; round < 60; ++round) {
+        const std::vector<Ball> balls = random_crown(random);
+        for (const std::size_t max_pieces : {0u, 1u, 2u, 4u, 7u, 16u}) {
+            SCOPED_TRACE("round " + std::to_string(round) + ", " + std::to_string(balls.size()) +
+                         " balls, at most " + std::to_string(max_pieces) + " pieces");
+            const auto bridges = crown_bridges(balls, max_pieces);
+            EXPECT_EQ(bridges, bisected_bridges(balls, max_pieces));
+            const std::size_t before = count_crown_pieces(balls, 0.0f);
+            if (before <= std::max<std::size_t>(max_pieces, 1)) {
+                EXPECT_TRUE(bridges.empty());
+                EXPECT_EQ(crown_merge_radius(balls, max_pieces), 0.0f);
+                continue;
+            }
+            if (max_pieces == 0) continue;
+            // Grown by the radius the last pair only touches; grown by a hair more it joins.
+            const float grow = crown_merge_radius(balls, max_pieces);
+            EXPECT_GT(count_crown_pieces(balls, grow), max_pieces);
+            EXPECT_LE(count_crown_pieces(balls, std::nextafter(grow, 1e30f)), max_pieces);
+        }
+    }
+}
+
+TEST(CrownMerge, EmptyAndSingleCrownsNeedNoBridges) {
+    EXPECT_TRUE(crown_bridges({}, 1).empty());
+    EXPECT_EQ(crown_merge_radius({}, 1), 0.0f);
+    const std::vector<Ball> one = {{{0, 0, 0}, 1.0f}};
+    EXPECT_TRUE(crown_bridges(one, 0).empty());
+    EXPECT_EQ(crown_merge_radius(one, 1), 0.0f);
 }
 
 }  // namespace
