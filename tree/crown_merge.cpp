@@ -49,34 +49,37 @@ float reach_all(std::span<const Ball> balls) {
     return 0.5f * glm::distance(lo, hi) + 1e-3f;
 }
 
-// Kruskal's algorithm over the pairs of spheres in order of (gap, i, j), up to the first
-// pair with a positive gap once at most `max_pieces` pieces remain (touching pairs are all
-// joined, as they are one piece anyway).
-struct Forest {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges;  // joins with a positive gap
-    std::size_t apart_pieces = 0;  // pieces the pairs with a negative gap leave
-    bool reached = false;          // whether at most max_pieces pieces remain
-    float critical_gap = 0.0f;     // the gap of the join that got there
-};
+}  // namespace
 
-Forest kruskal(std::span<const Ball> balls, std::size_t max_pieces) {
-    Forest forest;
-    forest.apart_pieces = balls.size();
-    if (balls.empty()) return forest;
-    struct Gap {
-        float gap;
-        std::uint32_t i, j;
-    };
+std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
+    DisjointSets sets(balls.size());
+    std::size_t pieces = balls.size();
+    for_each_close_pair(balls, grow, [&](std::uint32_t i, std::uint32_t j, float) {
+        if (sets.unite(i, j)) --pieces;
+    });
+    return pieces;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> crown_bridges(std::span<const Ball> balls,
+                                                                   std::size_t max_pieces) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges;
+    if (balls.empty()) return bridges;
+    // Kruskal's algorithm over the pairs of spheres in order of (gap, i, j), up to the first
+    // pair with a positive gap once at most `max_pieces` pieces remain (touching pairs are
+    // all joined: they are one piece anyway); the joins with a positive gap are the bridges.
     // The pairs come in bands of gaps, [2 * done, 2 * grow), each sorted alone and the next
     // twice as wide, until the forest gets to max_pieces (or to one piece) or the band
     // reaches every pair: the few pairs below the critical gap are all that is sorted, not
     // every pair within a guessed growth. A pair whose spheres are joined already when its
     // band starts is left out; it would join nothing, so the joins are Kruskal's over all
     // pairs.
+    struct Gap {
+        float gap;
+        std::uint32_t i, j;
+    };
     const float reach = reach_all(balls);
     DisjointSets sets(balls.size());
     std::size_t pieces = balls.size();
-    bool apart_counted = false;
     std::vector<Gap> gaps;
     std::vector<std::uint32_t> piece(balls.size());
     float done = 0.0f;
@@ -95,47 +98,14 @@ Forest kruskal(std::span<const Ball> balls, std::size_t max_pieces) {
             return std::tie(a.gap, a.i, a.j) < std::tie(b.gap, b.i, b.j);
         });
         for (const Gap& g : gaps) {
-            if (!apart_counted && !(g.gap < 0.0f)) {
-                forest.apart_pieces = pieces;
-                apart_counted = true;
-            }
-            if (pieces <= max_pieces && g.gap > 0.0f) return forest;
+            if (pieces <= max_pieces && g.gap > 0.0f) return bridges;
             if (!sets.unite(g.i, g.j)) continue;
             --pieces;
-            if (g.gap > 0.0f) forest.bridges.emplace_back(g.i, g.j);
-            if (pieces == max_pieces) {
-                forest.reached = true;
-                forest.critical_gap = g.gap;
-            }
+            if (g.gap > 0.0f) bridges.emplace_back(g.i, g.j);
         }
-        // Every pair with a negative gap is in the first band.
-        if (!apart_counted) forest.apart_pieces = pieces;
-        apart_counted = true;
-        if (pieces <= std::max<std::size_t>(max_pieces, 1) || grow >= reach) return forest;
+        if (pieces <= std::max<std::size_t>(max_pieces, 1) || grow >= reach) return bridges;
         done = grow;
     }
-}
-
-}  // namespace
-
-std::size_t count_crown_pieces(std::span<const Ball> balls, float grow) {
-    DisjointSets sets(balls.size());
-    std::size_t pieces = balls.size();
-    for_each_close_pair(balls, grow, [&](std::uint32_t i, std::uint32_t j, float) {
-        if (sets.unite(i, j)) --pieces;
-    });
-    return pieces;
-}
-
-float crown_merge_radius(std::span<const Ball> balls, std::size_t max_pieces) {
-    const Forest forest = kruskal(balls, max_pieces);
-    if (forest.apart_pieces <= std::max<std::size_t>(max_pieces, 1)) return 0.0f;
-    return forest.reached ? 0.5f * forest.critical_gap : reach_all(balls);
-}
-
-std::vector<std::pair<std::uint32_t, std::uint32_t>> crown_bridges(std::span<const Ball> balls,
-                                                                   std::size_t max_pieces) {
-    return kruskal(balls, max_pieces).bridges;
 }
 
 }  // namespace sylva

@@ -28,12 +28,6 @@ inline constexpr std::size_t kTrianglesPerMergedPiece = 24;
 // (spheres whose grown balls touch are one piece).
 std::size_t count_crown_pieces(std::span<const Ball> balls, float grow);
 
-// The common growth beyond which the spheres form at most `max_pieces` pieces: half the gap
-// of the pair that joins the last piece too many in Kruskal's order (grown by exactly this
-// much that pair only touches, which count_crown_pieces does not count as joined); 0 when
-// they already form at most max(max_pieces, 1) pieces.
-float crown_merge_radius(std::span<const Ball> balls, std::size_t max_pieces);
-
 // The pairs of spheres (indices into `balls`) to bridge so that the spheres and the bridges
 // form at most `max_pieces` pieces: the shortest gaps first (Kruskal's order, so no bridge
 // is longer than it must be). Empty when the spheres already form few enough pieces.
