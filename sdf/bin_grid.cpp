@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -11,6 +12,58 @@
 #include <utility>
 
 namespace sylva {
+
+namespace {
+
+// Chebyshev (chessboard) distances, in bins, from each bin to the nearest bin that lists
+// boxes (bin b lists boxes when start[b + 1] > start[b]), 0xffff where there is none or it is
+// farther: the shortest paths over the 26-neighbourhood. Two raster passes of the chamfer
+// mask with unit weights give them exactly (Rosenfeld and Pfaltz for the plane, Borgefors in
+// any dimension): forward with the 13 neighbours before a bin, backward with the 13 after. A
+// border of 0xffff around the grid spares the bounds tests.
+std::vector<std::uint16_t> chessboard_distances(const glm::ivec3& dims,
+                                                const std::vector<std::uint32_t>& start) {
+    constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();
+    const std::ptrdiff_t px = dims.x + 2, py = dims.y + 2, pz = dims.z + 2;
+    std::vector<std::uint16_t> padded(static_cast<std::size_t>(px * py * pz), kFar);
+    auto at = [&](int x, int y, int z) { return ((z + 1) * py + (y + 1)) * px + (x + 1); };
+    for (int z = 0; z < dims.z; ++z)
+        for (int y = 0; y < dims.y; ++y)
+            for (int x = 0; x < dims.x; ++x) {
+                const std::size_t b = (static_cast<std::size_t>(z) * dims.y + y) * dims.x + x;
+                if (start[b + 1] > start[b]) padded[static_cast<std::size_t>(at(x, y, z))] = 0;
+            }
+    // Offsets of the 13 neighbours that come before a bin in raster order; the backward pass
+    // uses their negatives.
+    std::ptrdiff_t before[13];
+    int n = 0;
+    for (int dz = -1; dz <= 0; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const std::ptrdiff_t o = (dz * py + dy) * px + dx;
+                if (o < 0) before[n++] = o;
+            }
+    std::uint16_t* v = padded.data();
+    auto relax = [&](std::ptrdiff_t i, std::ptrdiff_t sign) {
+        int m = v[i];  // a neighbour at kFar offers kFar + 1, never taken
+        for (std::ptrdiff_t o : before) m = std::min(m, v[i + sign * o] + 1);
+        v[i] = static_cast<std::uint16_t>(m);
+    };
+    for (int z = 0; z < dims.z; ++z)
+        for (int y = 0; y < dims.y; ++y)
+            for (int x = 0; x < dims.x; ++x) relax(at(x, y, z), 1);
+    for (int z = dims.z - 1; z >= 0; --z)
+        for (int y = dims.y - 1; y >= 0; --y)
+            for (int x = dims.x - 1; x >= 0; --x) relax(at(x, y, z), -1);
+    std::vector<std::uint16_t> out(static_cast<std::size_t>(dims.x) * dims.y * dims.z);
+    std::size_t b = 0;
+    for (int z = 0; z < dims.z; ++z)
+        for (int y = 0; y < dims.y; ++y)
+            for (int x = 0; x < dims.x; ++x) out[b++] = v[at(x, y, z)];
+    return out;
+}
+
+}  // namespace
 
 BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest,
                  const Overlap& overlaps, CancelFlag cancel) {
@@ -71,35 +124,7 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     for (const auto& chunk : listed)
         for (const auto& [bin, box] : chunk) bin_items_[fill[bin]++] = box;
 
-    // Breadth-first over the 26-neighbourhood from every occupied bin: Chebyshev distances.
-    const size_t count = bin_start_.size() - 1;
-    bins_to_nearest_.assign(count, std::numeric_limits<std::uint16_t>::max());
-    std::vector<std::uint32_t> frontier, next;
-    for (size_t b = 0; b < count; ++b)
-        if (bin_start_[b + 1] > bin_start_[b]) {
-            bins_to_nearest_[b] = 0;
-            frontier.push_back(static_cast<std::uint32_t>(b));
-        }
-    for (std::uint16_t level = 1; !frontier.empty() && level < 0xffff; ++level) {
-        next.clear();
-        for (std::uint32_t b : frontier) {
-            int x = static_cast<int>(b % dims_.x), y = static_cast<int>(b / dims_.x % dims_.y),
-                z = static_cast<int>(b / (static_cast<size_t>(dims_.x) * dims_.y));
-            for (int dz = -1; dz <= 1; ++dz)
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        int nx = x + dx, ny = y + dy, nz = z + dz;
-                        if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_.x || ny >= dims_.y ||
-                            nz >= dims_.z)
-                            continue;
-                        size_t n = index(nx, ny, nz);
-                        if (bins_to_nearest_[n] <= level) continue;
-                        bins_to_nearest_[n] = level;
-                        next.push_back(static_cast<std::uint32_t>(n));
-                    }
-        }
-        std::swap(frontier, next);
-    }
+    bins_to_nearest_ = chessboard_distances(dims_, bin_start_);
 }
 
 float BinGrid::empty_distance(const glm::vec3& p) const {
