@@ -61,7 +61,9 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     std::vector<Aabb> boxes;
     boxes.reserve(cones_.size());
     bounds_.reserve(cones_.size());
+    prepared_.reserve(cones_.size());
     for (const CappedCone& c : cones_) {
+        prepared_.push_back(prepare(c));
         bounds_.push_back(
             {0.5f * (c.a + c.b), 0.5f * glm::length(c.b - c.a) + std::max(c.ra, c.rb)});
         float r = std::max(c.ra, c.rb) + margin_;
@@ -72,7 +74,7 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     bins_ = BinGrid(
         boxes, margin_ / 2.0f, 40,
         [&](size_t i, const glm::vec3& centre, float radius) {
-            return distance(cones_[i], centre) < inflation + radius;
+            return distance(prepared_[i], centre) < inflation + radius;
         },
         cancel);
 }
@@ -89,7 +91,7 @@ float ConeField::operator()(const glm::vec3& p) const {
         float reach = d + joint_blend_ + b.radius;
         glm::vec3 offset = p - b.center;
         if (reach > 0.0f && glm::dot(offset, offset) >= reach * reach) continue;
-        float next = distance(cones_[i], p);
+        float next = distance(prepared_[i], p);
         d = joint_blend_ > 0.0f ? polynomial_smooth_min(d, next, joint_blend_) : std::min(d, next);
     }
     return std::min(d, margin_);

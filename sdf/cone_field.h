@@ -52,6 +52,7 @@ class ConeField {
         float radius;
     };
     std::vector<CappedCone> cones_;
+    std::vector<PreparedCone> prepared_;  // cones_, each prepared once for its many samples
     std::vector<Bound> bounds_;
     float margin_;
     float joint_blend_;
