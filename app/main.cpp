@@ -276,27 +276,17 @@ void print_help(std::FILE* to) {
     print_forest_help(to);
 }
 
-// What each part of each group is: "closed", "NOT closed" or its leaf count. The solid
-// parts' checks (the raw marching-cubes meshes are the big ones) run on every core.
-std::vector<std::vector<std::string>> part_states(
-    const std::vector<std::vector<NamedMesh>>& groups) {
-    std::vector<std::pair<std::size_t, std::size_t>> solids;  // (group, part)
-    std::vector<std::vector<std::string>> states(groups.size());
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-        states[g].resize(groups[g].size());
-        for (std::size_t k = 0; k < groups[g].size(); ++k) {
-            const NamedMesh& part = groups[g][k];
-            // Leaves are open by design (and counted); the solid parts must be closed.
-            if (part.closed)
-                solids.emplace_back(g, k);
-            else
-                states[g][k] = std::to_string(count_leaves(*part.mesh)) + " leaves, open by design";
-        }
-    }
-    tbb::parallel_for(std::size_t{0}, solids.size(), [&](std::size_t i) {
-        const auto [g, k] = solids[i];
-        states[g][k] =
-            check_topology(*groups[g][k].mesh).is_closed_manifold() ? "closed" : "NOT closed";
+// What each part is: "closed", "NOT closed" or its leaf count; the solid parts are checked
+// on every core (the raw marching-cubes meshes are big).
+std::vector<std::string> part_states(const std::vector<NamedMesh>& parts) {
+    std::vector<std::string> states(parts.size());
+    tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t k) {
+        const Mesh& mesh = *parts[k].mesh;
+        // Leaves are open by design (and counted); the solid parts must be closed.
+        states[k] = !parts[k].closed
+                        ? std::to_string(count_leaves(mesh)) + " leaves, open by design"
+                    : check_topology(mesh).is_closed_manifold() ? "closed"
+                                                                : "NOT closed";
     });
     return states;
 }
@@ -335,9 +325,8 @@ int run_export(const Options& o) {
 
     // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
     // and a core is often free (the reduction of a big trunk waits for nothing either).
-    std::vector<std::vector<NamedMesh>> groups{
-        tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors)};
-    std::vector<std::vector<std::string>> states;
+    const std::vector<NamedMesh> raw = tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors);
+    std::vector<std::string> raw_states;
     Stopwatch clock;
     FinishedTree finished;
     std::vector<std::filesystem::path> files;
@@ -348,16 +337,12 @@ int run_export(const Options& o) {
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
-        [&] { states = part_states(groups); });
+        [&] { raw_states = part_states(raw); });
     tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
-    for (const ReducedTree& level : finished.levels) {
-        groups.push_back(tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors));
-        states.push_back(part_states({groups.back()}).front());
-    }
     std::printf("  marching cubes:\n");
-    print_parts(groups[0], states[0], "    ");
+    print_parts(raw, raw_states, "    ");
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
         const std::size_t leaves = finished.leaf_budgets[i];
@@ -368,7 +353,9 @@ int run_export(const Options& o) {
                         leaf_budget.c_str());
         else
             std::printf("  reduced (budget %zu + %s):\n", finished.budgets[i], leaf_budget.c_str());
-        print_parts(groups[i + 1], states[i + 1], "    ");
+        const std::vector<NamedMesh> parts =
+            tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors);
+        print_parts(parts, part_states(parts), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),
