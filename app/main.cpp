@@ -76,9 +76,10 @@ Usage:
                    carries at most 800 leaf triangles more), every leaf with --budget 0.
                    Leaves are thinned, not reduced: an even, seeded subset of whole leaves
                    is kept, each grown (up to 2x) so the crown looks as dense
-  --crown-shape S  how a reduced crown is drawn: auto (default: below 400 triangles a crown
-                   whose blobs touch in rings becomes a few convex hulls), blobs (its own
-                   surface, reduced) or hulls (always hulls)
+  --crown-shape S  how a reduced crown is drawn: auto (below 400 triangles a crown whose
+                   blobs touch in rings becomes a few convex hulls), blobs (its own
+                   surface, reduced) or hulls (always hulls); default: the template's
+                   crown_shape (auto in every built-in template)
   --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --format F       obj, glb or ply (default: from the extension of OUT)
@@ -130,7 +131,7 @@ struct Options {
     std::string output;
     MeshOptions mesh;
     std::optional<std::size_t> budget, budget_trunk, budget_crown, budget_leaves;
-    CrownShape crown_shape = CrownShape::Automatic;
+    std::optional<CrownShape> crown_shape;  // unset: the template's
     bool lod = false;
     bool fidelity = false;
     const ExportFormat* format = nullptr;

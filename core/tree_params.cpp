@@ -19,6 +19,7 @@ struct Field {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
+constexpr std::string_view kCrownShapes[] = {"auto", "blobs", "hulls"};
 constexpr std::string_view kEnvelopes[] = {"sphere",   "ellipsoid",  "cone",
                                            "cylinder", "hemisphere", "template"};
 constexpr std::string_view kEnvelopeTemplates[] = {
@@ -128,6 +129,12 @@ const std::vector<Field>& fields() {
           0, 10000000, true},
          nullptr,
          &TreeParams::triangle_budget},
+        {{"crown_shape",
+          "game mesh crown: auto (convex hulls below 400 triangles when blobs touch in rings), "
+          "blobs (its own surface) or hulls",
+          0, 2, true, kCrownShapes},
+         nullptr,
+         &TreeParams::crown_shape},
         // Space colonization (seed 000, chapter 3).
         whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
               &TreeParams::attraction_points),

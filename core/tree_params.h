@@ -35,6 +35,7 @@ struct TreeParams {
     double leaf_size = 0.25;       // leaf length, meters
     int leaf_shape = 0;            // LeafShape
     int triangle_budget = 800;     // export: trunk + crown reduced to this (0 = no reduction)
+    int crown_shape = 0;           // CrownShape: how the game mesh draws the crown
     // Space colonization (growth = "colonization", seed 000 chapter 3); the L-system
     // ignores these.
     int attraction_points = 2000;    // N
@@ -87,6 +88,13 @@ struct TreeParams {
 enum class CrownBlend { Root = 0, Pasko = 1 };
 // Choices of the `leaf_shape` parameter.
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
+// Choices of the `crown_shape` parameter: how a reduced crown is drawn (tree/crown_hulls.h).
+enum class CrownShape {
+    Automatic = 0,  // hulls below kCrownHullBudget trunk + crown triangles when the crown
+                    // has handles (blobs touching in rings), else blobs
+    Blobs = 1,      // the crown's own surface, reduced
+    Hulls = 2,      // the convex hulls of a few clusters of the crown, reduced
+};
 
 // Choices of the `envelope_template` parameter: the built-in templates (by name) whose
 // crown a colonization envelope can be. Core cannot ask the template library, so the names

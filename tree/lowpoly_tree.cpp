@@ -135,7 +135,9 @@ class SampledHausdorff {
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
                           const TreeBudget& budget, const DecimateSettings& settings) {
     const std::size_t hull_count = crown_hull_count(budget);
-    if (hull_count == 0 || (budget.crown_shape == CrownShape::Automatic && genus(hull_source) == 0))
+    const bool automatic =
+        budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
+    if (hull_count == 0 || (automatic && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
     const Mesh hulls = crown_hulls(hull_source, hull_count);
     ReducedTree out = reduce_solids(trunk, hulls, budget, settings);
@@ -152,6 +154,12 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     }
     return out;
+}
+
+// The budget with its crown shape decided: its own, else the tree's (its template's).
+TreeBudget shaped_for(TreeBudget budget, const Tree& tree) {
+    budget.crown_shape = budget.crown_shape.value_or(tree.crown_shape);
+    return budget;
 }
 
 // The tree's trunk and crown without inner shells: hollows are invisible and only cost
@@ -217,9 +225,9 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
     const std::size_t total = budget.trunk || budget.crown
                                   ? budget.trunk.value_or(0) + budget.crown.value_or(0)
                                   : budget.total;
-    const bool hulls = budget.crown_shape == CrownShape::Automatic
-                           ? total > 0 && total < kCrownHullBudget
-                           : budget.crown_shape == CrownShape::Hulls;
+    const CrownShape shape = budget.crown_shape.value_or(CrownShape::Automatic);
+    const bool hulls = shape == CrownShape::Automatic ? total > 0 && total < kCrownHullBudget
+                                                      : shape == CrownShape::Hulls;
     if (!hulls) return 0;
     return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / kTrianglesPerHull);
 }
@@ -227,7 +235,8 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
     const auto [trunk, crown] = solids_to_reduce(tree);
-    ReducedTree out = reduce_shaped(trunk, crown, crown, budget, with_foot(settings, tree.trunk));
+    ReducedTree out = reduce_shaped(trunk, crown, crown, shaped_for(budget, tree),
+                                    with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -263,8 +272,8 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     for (const TreeBudget& budget : budgets.subspan(levels.size())) {
         const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
-        ReducedTree level =
-            reduce_shaped(trunk, crown, finest_crown, budget, with_foot(settings, tree.trunk));
+        ReducedTree level = reduce_shaped(trunk, crown, finest_crown, shaped_for(budget, tree),
+                                          with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;

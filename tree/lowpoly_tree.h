@@ -20,14 +20,6 @@ namespace sylva {
 // chain starts when no budget is given.
 constexpr std::size_t kDefaultTriangleBudget = 800;
 
-// How a reduced crown is drawn (tree/crown_hulls.h).
-enum class CrownShape {
-    Automatic,  // hulls below kCrownHullBudget trunk + crown triangles when the crown has
-                // handles (blobs touching in rings), else blobs
-    Blobs,      // the crown's own surface, reduced
-    Hulls,      // the convex hulls of a few clusters of the crown, reduced
-};
-
 // How many triangles a tree keeps. Trunk + crown (the solids) are decimated to `total`;
 // leaves are not part of `total` but have a share of their own, `leaves`, which by default
 // equals `total`: a default game tree is at most 800 solid + 800 leaf triangles. Leaves are
@@ -45,8 +37,9 @@ struct TreeBudget {
     // Leaf triangles: at most this many (0: no leaves); unset: `total`, and every leaf
     // when `total` is 0 (no reduction).
     std::optional<std::size_t> leaves = std::nullopt;
-    // Whether the crown is reduced as it is or as the hulls of its pieces.
-    CrownShape crown_shape = CrownShape::Automatic;
+    // Whether the crown is reduced as it is or as the hulls of its pieces (CrownShape,
+    // core/tree_params.h); unset: the tree's own (Tree::crown_shape, its template's).
+    std::optional<CrownShape> crown_shape = std::nullopt;
 };
 
 // How many hulls `budget` may draw the crown as (tree/crown_hulls.h): 0 for blobs; with

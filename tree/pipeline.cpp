@@ -336,6 +336,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     GrowthContext growth{options.cancel, &out.times};
     growth.progress = options.growth_progress;
     out.skeleton = grow(tree, growth, &mature);
+    out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};

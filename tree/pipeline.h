@@ -30,6 +30,8 @@ struct Tree {
     std::size_t crown_bridges = 0;
     // Segments a game mesh left out of the trunk because the crown hides them (drop_hidden).
     std::size_t hidden_segments = 0;
+    // The template's crown_shape: how a game mesh draws the crown unless its budget says.
+    CrownShape crown_shape = CrownShape::Automatic;
     std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
 };
 

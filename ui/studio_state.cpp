@@ -306,6 +306,7 @@ bool same_mesh(const Mesh& a, const Mesh& b) {
 std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const Tree& tree,
                                             std::size_t budget) {
     if (!previous.reduced() || !previous.finished.lod || previous.budget != budget ||
+        previous.tree.crown_shape != tree.crown_shape ||
         !same_mesh(previous.tree.trunk, tree.trunk) || !same_mesh(previous.tree.crown, tree.crown))
         return std::nullopt;
     FinishedTree finished = previous.finished;

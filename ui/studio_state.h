@@ -55,8 +55,8 @@ bool same_mesh(const Mesh& a, const Mesh& b);
 
 // The game mesh `previous` shows, made again for `tree` without reducing: its reduced trunk
 // and crown when `tree`'s trunk and crown are the ones it was reduced from (same bytes) and
-// the budget is the same, with `tree`'s leaves thinned per level. Empty (nothing reused)
-// otherwise. What a reduction would give, as the reduction is deterministic.
+// the budget and the crown shape are the same, with `tree`'s leaves thinned per level. Empty
+// (nothing reused) otherwise. What a reduction would give, as the reduction is deterministic.
 std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const Tree& tree,
                                             std::size_t budget);
 

@@ -322,6 +322,22 @@ TEST_F(Cli, CrownShapeHullsAndAWrongName) {
     const std::string hull_text((std::istreambuf_iterator<char>(a)), {});
     const std::string blob_text((std::istreambuf_iterator<char>(b)), {});
     EXPECT_NE(hull_text, blob_text) << "the crown shape changed nothing";
+    // The template's crown_shape is the default; the option overrides it.
+    const Result by_template =
+        run("export -t honda --budget 200 --set crown_shape=hulls -o " + path("template.obj"));
+    EXPECT_EQ(by_template.code, 0) << by_template.output;
+    const Result overridden =
+        run("export -t honda --budget 200 --set crown_shape=hulls "
+            "--crown-shape blobs -o " +
+            path("overridden.obj"));
+    EXPECT_EQ(overridden.code, 0) << overridden.output;
+    std::ifstream t(path("template.obj")), o(path("overridden.obj"));
+    const std::string template_text((std::istreambuf_iterator<char>(t)), {});
+    const std::string overridden_text((std::istreambuf_iterator<char>(o)), {});
+    // The OBJ names its .mtl file: compare past that line.
+    const auto body = [](const std::string& text) { return text.substr(text.find("\no ")); };
+    EXPECT_EQ(body(template_text), body(hull_text));
+    EXPECT_EQ(body(overridden_text), body(blob_text));
     const Result wrong = run("export --crown-shape cubes -o " + path("x.obj"));
     EXPECT_NE(wrong.code, 0);
     EXPECT_NE(wrong.output.find("--crown-shape expects auto, blobs or hulls"), std::string::npos)

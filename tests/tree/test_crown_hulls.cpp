@@ -154,6 +154,34 @@ TEST(CrownHulls, ACrownWithoutHandlesKeepsItsOwnSurface) {
     EXPECT_EQ(automatic.crown.positions, reduce_tree(tree, budget).crown.positions);
 }
 
+// The template's crown_shape draws the game mesh's crown (the studio's and every export's
+// choice) unless the budget itself says: a pine asking for hulls at 800 (where the automatic
+// mode keeps the blobs) gets what an explicit Hulls budget gives, and an explicit Blobs
+// budget overrides the template.
+TEST(CrownHulls, TheTemplatesCrownShapeUnlessTheBudgetSays) {
+    TreeTemplate pine = load_template("pine");
+    MeshOptions options;
+    options.budget = 800;
+    const Tree automatic = generate_tree(pine, options);
+    EXPECT_EQ(automatic.crown_shape, CrownShape::Automatic);
+    set_param(pine.params, "crown_shape", "hulls");
+    const Tree hulls = generate_tree(pine, options);
+    EXPECT_EQ(hulls.crown_shape, CrownShape::Hulls);
+    TreeBudget budget;
+    budget.total = 800;
+    const ReducedTree by_template = reduce_tree(hulls, budget);
+    const ReducedTree blobs = reduce_tree(automatic, budget);
+    EXPECT_NE(by_template.crown.positions, blobs.crown.positions);
+    budget.crown_shape = CrownShape::Hulls;
+    EXPECT_EQ(by_template.crown.positions, reduce_tree(automatic, budget).crown.positions);
+    budget.crown_shape = CrownShape::Blobs;
+    EXPECT_EQ(blobs.crown.positions, reduce_tree(hulls, budget).crown.positions);
+    // The LOD chain too: every level's crown from the template's hulls.
+    budget.crown_shape = std::nullopt;
+    const std::vector<TreeBudget> budgets = lod_budgets(budget, 2);
+    EXPECT_EQ(make_lod_chain(hulls, budgets).front().crown.positions, by_template.crown.positions);
+}
+
 // A LOD chain through the hull budgets: every level within its budget (a level's hulls are
 // made from the finest crown, as many as its budget buys, not from the level before, whose
 // pieces a smaller budget could not draw), per-part counts never rising, every part sound.

@@ -353,6 +353,20 @@ TEST(StudioState, ALeafEditKeepsTheReductionAndThinsTheNewLeaves) {
         EXPECT_TRUE(same_mesh(fresh.levels[i].leaves, leafier->finished.levels[i].leaves)) << i;
     }
 
+    // The crown shape (a reduction setting of the template): the same meshes, reduced
+    // again, to what an export of the template writes (hulls: the small tree's crown has
+    // no handle, so the automatic choice was its own surface).
+    state.tree_template.params.crown_shape = static_cast<int>(CrownShape::Hulls);
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_FALSE(state.tree->reduction_reused);
+    EXPECT_TRUE(same_mesh(state.tree->tree.crown, leafier->tree.crown));
+    EXPECT_FALSE(
+        same_mesh(state.tree->finished.levels[0].crown, leafier->finished.levels[0].crown));
+    finish.budget.crown_shape = CrownShape::Hulls;
+    EXPECT_TRUE(same_mesh(finish_tree(leafier->tree, finish).levels[0].crown,
+                          state.tree->finished.levels[0].crown));
+
     // A shape edit meshes another trunk: reduced again.
     state.tree_template.params.tropism += 0.2;
     start_generation(state);
@@ -370,6 +384,9 @@ TEST(StudioState, AReductionIsReusedOnlyForTheSameMeshesAndBudget) {
     Tree moved = shown.tree;
     moved.crown.positions[0].x += 0.01f;
     EXPECT_FALSE(reuse_reduction(shown, moved, 300));
+    Tree reshaped = shown.tree;  // the same meshes, the crown drawn another way
+    reshaped.crown_shape = CrownShape::Blobs;
+    EXPECT_FALSE(reuse_reduction(shown, reshaped, 300));
     // The marching-cubes meshes alone (low poly was off): nothing to reuse.
     GeneratedTree raw;
     raw.tree = shown.tree;
