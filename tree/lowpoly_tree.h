@@ -43,7 +43,7 @@ struct TreeBudget {
 };
 
 // How many hulls `budget` may draw the crown as (tree/crown_hulls.h): 0 for blobs; with
-// CrownShape::Hulls, or Automatic and a trunk + crown budget (total, or the parts' sum)
+// CrownShape::Hulls, or Automatic (or unset) and a trunk + crown budget (total, or the parts' sum)
 // above 0 and below kCrownHullBudget, one per kTrianglesPerHull of that budget (8 at 200).
 // reduce_tree() then takes these or half as many again, whichever keeps closer to the
 // crown, and in the automatic mode only for a crown with handles.
