@@ -40,16 +40,6 @@ float root_smooth_min(float a, float b, float k) {
     return 0.5f * (a + b - std::sqrt(x * x + k * k));
 }
 
-float local_root_smooth_min(float a, float b, float k) {
-    float x = std::abs(a - b);
-    if (x >= 4.0f * k) return std::min(a, b);
-    // Smoothstep from 1 at 2k to 0 at 4k: its slope (at most 0.75 / k) keeps the blend
-    // 1-Lipschitz (d/dx sqrt(x^2 + w^2) = (x + w w') / sqrt(...) stays within [-1, 1]).
-    float t = std::clamp((x - 2.0f * k) / (2.0f * k), 0.0f, 1.0f);
-    float w = k * (1.0f - t * t * (3.0f - 2.0f * t));
-    return 0.5f * (a + b - std::sqrt(x * x + w * w));
-}
-
 float pasko_savchenko_union(float a, float b, float alpha) {
     return (a + b - std::sqrt(std::max(a * a + b * b - 2.0f * alpha * a * b, 0.0f))) /
            (1.0f + alpha);
@@ -83,41 +73,14 @@ float SphereField::operator()(const glm::vec3& p) const {
     }
     float d = margin_;
     float nearest = margin_;
-    if (!(blend_ > 0.0f)) {
-        for (std::uint32_t i : near) {
-            const Ball& ball = balls_[i];
-            glm::vec3 offset = p - ball.center;
-            float reach = std::max(d + 4.0f * blend_, nearest) + ball.radius;
-            if (reach > 0.0f && glm::dot(offset, offset) >= reach * reach) continue;
-            float next = std::sqrt(glm::dot(offset, offset)) - ball.radius;
-            nearest = std::min(nearest, next);
-            d = std::min(d, next);
-        }
-        return std::min(std::max(d, nearest - 0.5f * blend_), margin_);
-    }
-    // local_root_smooth_min inlined, with what depends on k alone taken out of the loop (the
-    // products by 2 and 4 are exact) and the fade skipped below 2 k, where it is k exactly:
-    // the same operations on the same values, so the same bits.
-    const float k = blend_, two_k = 2.0f * k, four_k = 4.0f * k, kk = k * k;
     for (std::uint32_t i : near) {
         const Ball& ball = balls_[i];
         glm::vec3 offset = p - ball.center;
-        float reach = std::max(d + four_k, nearest) + ball.radius;
+        float reach = std::max(d + 4.0f * blend_, nearest) + ball.radius;
         if (reach > 0.0f && glm::dot(offset, offset) >= reach * reach) continue;
         float next = std::sqrt(glm::dot(offset, offset)) - ball.radius;
         nearest = std::min(nearest, next);
-        float x = std::abs(d - next);
-        if (x >= four_k) {
-            d = std::min(d, next);
-            continue;
-        }
-        float ww = kk;
-        if (!(x <= two_k)) {
-            float t = std::clamp((x - two_k) / two_k, 0.0f, 1.0f);
-            float w = k * (1.0f - t * t * (3.0f - 2.0f * t));
-            ww = w * w;
-        }
-        d = 0.5f * (d + next - std::sqrt(x * x + ww));
+        d = blend_ > 0.0f ? local_root_smooth_min(d, next, blend_) : std::min(d, next);
     }
     return std::min(std::max(d, nearest - 0.5f * blend_), margin_);
 }
