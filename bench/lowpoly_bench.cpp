@@ -18,11 +18,16 @@
 //   --where  also where each direction's largest distance is, and the triangles each part
 //            kept: to find what a budget loses
 //   --fidelity-only  skip the marching-cubes match and the speed run (MC columns show 0)
+//   --heap-only  collapses one at a time from the heap all the way (DecimateSettings::
+//            fast_passes off: the reducer before passes), to compare in one run with
+//   --compare-heap  a second line per template: the heap-only reduction's ms, mean, max and
+//            Hausdorff distance beside the default's
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -93,7 +98,8 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 int main(int argc, char** argv) {
     std::size_t budget = 800;
     int reference_resolution = 200;
-    bool where = false, fidelity_only = false;
+    bool where = false, fidelity_only = false, compare_heap = false;
+    DecimateSettings decimate;
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -105,6 +111,10 @@ int main(int argc, char** argv) {
             where = true;
         else if (arg == "--fidelity-only")
             fidelity_only = true;
+        else if (arg == "--heap-only")
+            decimate.fast_passes = false;
+        else if (arg == "--compare-heap")
+            compare_heap = true;
         else
             names.push_back(arg);
     }
@@ -125,15 +135,18 @@ int main(int argc, char** argv) {
         TreeBudget b;
         b.total = budget;
         const auto start = std::chrono::steady_clock::now();
-        const ReducedTree reduced = reduce_tree(tree, b);
+        const ReducedTree reduced = reduce_tree(tree, b, decimate);
         const double reduce_ms = ms_since(start);
         const Mesh reference = reference_surface(tmpl, reference_resolution);
         const Fidelity f = measure_tree_fidelity(reduced.trunk, reduced.crown, reference);
         // The other way: how far the fine surface strays from the reduced one (a branch
         // the reduction dropped shows here); the larger max of both is the Hausdorff distance.
         const Mesh* reduced_parts[] = {&reduced.trunk, &reduced.crown};
-        const Fidelity back = measure_fidelity(reference, merge_meshes(reduced_parts));
-        const double hausdorff = std::max(f.max_percent, back.max_percent);
+        auto hausdorff_of = [&reference](const Fidelity& there, std::span<const Mesh* const> parts) {
+            return std::max(there.max_percent,
+                            measure_fidelity(reference, merge_meshes(parts)).max_percent);
+        };
+        const double hausdorff = hausdorff_of(f, reduced_parts);
         const PlainMatch plain =
             fidelity_only ? PlainMatch{}
                           : plain_match(tmpl, reference, f.mean_percent, reference_resolution);
@@ -148,6 +161,22 @@ int main(int argc, char** argv) {
                     reduced.triangles, reduced.handles_cut, reduce_ms, is_closed ? "yes" : "NO",
                     f.mean_percent, f.max_percent, hausdorff, plain.resolution, plain.triangles,
                     ratio, reduced.within_budget ? "" : reduced.note.c_str());
+        if (compare_heap) {
+            DecimateSettings heap = decimate;
+            heap.fast_passes = false;
+            const auto heap_start = std::chrono::steady_clock::now();
+            const ReducedTree h = reduce_tree(tree, b, heap);
+            const double heap_ms = ms_since(heap_start);
+            const Fidelity hf = measure_tree_fidelity(h.trunk, h.crown, reference);
+            const Mesh* heap_parts[] = {&h.trunk, &h.crown};
+            std::printf("%-9s %7s %5zu %4d %5.0f %6s %6.3f %6.3f %6.2f | heap only: %.2fx the "
+                        "time, mean %+.1f%%\n",
+                        "  heap", "", h.triangles, h.handles_cut, heap_ms,
+                        closed(h.trunk) && closed(h.crown) ? "yes" : "NO", hf.mean_percent,
+                        hf.max_percent, hausdorff_of(hf, heap_parts),
+                        heap_ms / std::max(reduce_ms, 1e-3),
+                        100.0 * (f.mean_percent / std::max(hf.mean_percent, 1e-12) - 1.0));
+        }
         if (where) {
             std::printf("    trunk %zu -> %zu, crown %zu -> %zu triangles; %zu crown bridges\n",
                         tree.trunk.triangles.size(), reduced.trunk.triangles.size(),
@@ -178,7 +207,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < 5; ++i) {
         const auto start = std::chrono::steady_clock::now();
         const std::clock_t cpu = std::clock();
-        r = reduce_tree(tree, b);
+        r = reduce_tree(tree, b, decimate);
         best_ms = std::min(best_ms, ms_since(start));
         best_cpu_ms = std::min(best_cpu_ms,
                                1000.0 * static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC);

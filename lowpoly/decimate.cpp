@@ -124,6 +124,7 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     cs.foot_height = settings.foot_height;
     cs.min_foot_vertices = kMinFootVertices;
     cs.lazy_legality = settings.lazy_legality;
+    cs.passes = settings.fast_passes;
     const std::size_t alone = std::max(target, snapshot_at);
     const std::size_t first = meshes.empty() ? 0 : meshes[0].triangles();
     const std::size_t expected = first > alone ? (first - alone) / 2 : 0;
@@ -157,11 +158,11 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     throw_if_cancelled(settings.cancel);
     Reduction out;
     if (snapshot_at > target) {
-        collapse_together(meshes, snapshot_at, settings.cancel);
+        collapse_together(meshes, snapshot_at, settings.cancel, settings.part_floor);
         throw_if_cancelled(settings.cancel);
         out.snapshot = extract(meshes);
     }
-    collapse_together(meshes, target, settings.cancel);
+    collapse_together(meshes, target, settings.cancel, settings.part_floor);
     throw_if_cancelled(settings.cancel);
     if (settings.relocate_vertices)
         tbb::parallel_for(std::size_t{0}, meshes.size(),

@@ -36,6 +36,9 @@ struct CollapseSettings {
     std::size_t min_foot_vertices = 6;
     // See DecimateSettings::lazy_legality.
     bool lazy_legality = true;
+    // See DecimateSettings::fast_passes: collapse_to() makes the bulk of its collapses in
+    // passes (collapse_in_passes()).
+    bool passes = true;
 };
 
 class CollapseMesh {
@@ -50,14 +53,20 @@ class CollapseMesh {
     // About where collapses stop: 4 triangles per closed piece and 12 per handle.
     std::size_t triangle_floor() const;
 
-    // Quadrics, pieces, the heap: call once before collapse_to().
+    // Quadrics, pieces, volumes: call once before collapse_to() (which fills the heap).
     void start(const CollapseSettings& settings, CancelFlag cancel);
     // Collapses the cheapest legal edges until at most `max_triangles` are left or no
-    // collapse is legal; may be called again with a smaller count. Calls `step` (if set)
-    // every `interval` collapses with the number done so far; stops early when it returns
-    // false. Throws Cancelled when `cancel` is set while the heap is built.
+    // collapse is legal; may be called again with a smaller count. The first call after
+    // start() collapses in passes (collapse_in_passes(), with CollapseSettings::passes) down
+    // to twice `max_triangles` or a few thousand triangles, then one at a time from the heap.
+    // Calls `step` (if set) every `interval` collapses with the number done so far; stops
+    // early when it returns false. Throws Cancelled when `cancel` is set while the heap is
+    // built.
     void collapse_to(std::size_t max_triangles, std::size_t interval = 0,
                      const std::function<bool(std::size_t)>& step = nullptr);
+    // Files every vertex in the heap unless done since start() (collapse_to() and
+    // collapse_together() call it; front_key() and step() need it).
+    void prepare_heap();
     // The error of the cheapest collapse waiting (+infinity when none is).
     float front_key() const;
     // One turn of collapse_to() for several meshes reduced as one (collapse_together()):
@@ -85,6 +94,17 @@ class CollapseMesh {
     // The next halfedge out of the same vertex (around it, as OpenMesh turns).
     std::uint32_t turn(std::uint32_t h) const { return next(opposite_[h]); }
 
+    // The bulk of a reduction towards `until` triangles, as meshoptimizer's simplifier orders
+    // it: each pass files every vertex by its cheapest collapse once, sorts them, and makes
+    // those collapses in that order (with the same legality tests as one at a time) up to a
+    // little above the error of the last one the pass wants, each vertex at most once (a
+    // collapse locks the vertex it keeps, whose errors changed). No heap updates: about
+    // half the time per collapse of the heap, which then orders the last collapses
+    // exactly. Returns false when `step` asked to stop.
+    bool collapse_in_passes(std::size_t until, std::size_t interval,
+                            const std::function<bool(std::size_t)>& step);
+    // Every vertex filed by its cheapest collapse, then the heap made in one pass (Floyd's).
+    void fill_heap();
     void update_normal(std::uint32_t face);
     bool is_foot(std::uint32_t v) const { return position_[v].y <= foot_height_; }
     // The link condition and no tetrahedron collapse (closed meshes).
@@ -106,7 +126,10 @@ class CollapseMesh {
     void queue_vertex(std::uint32_t v, bool place = true);
     // v's cheapest legal collapse (kNone if none), its error and volume change.
     std::uint32_t best_legal(std::uint32_t v, float* best, double* volume_change) const;
+    // Collapses h (v0 into v1) and leaves v0's old neighbours in support_.
     void collapse(std::uint32_t h, double volume_change);
+    // After collapse(): v0 out of the heap, its old neighbours filed again.
+    void requeue_after(std::uint32_t v0);
 
     // Heap of vertices by priority_ (smallest first); heap_position_ is kNone when out.
     void heap_up(std::size_t i);
@@ -128,6 +151,8 @@ class CollapseMesh {
     float foot_height_ = -std::numeric_limits<float>::infinity();
     std::size_t min_foot_vertices_ = 6;
     bool lazy_ = true;
+    bool passes_ = true;
+    bool heap_filled_ = false;  // since start(): passes come before the heap
     CancelFlag cancel_ = nullptr;
     std::vector<glm::dvec3> normal_;  // per face, unit (or zero)
     std::vector<Quadric> quadric_;    // per vertex
@@ -156,8 +181,9 @@ class CollapseMesh {
 // collapse in one changes another. Reducing each mesh alone first (in parallel) to at most
 // `max_triangles`, then together, gives nearly that order too: a mesh's own collapses come in the
 // same order, except where a collapse found illegal at the front is weighed against the other
-// meshes' fronts. Returns early once `cancel` is set (polled every 256 steps).
+// meshes' fronts. A mesh stops collapsing where one more collapse would take it below
+// `mesh_floor` triangles. Returns early once `cancel` is set (polled every 256 steps).
 void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
-                       CancelFlag cancel = nullptr);
+                       CancelFlag cancel = nullptr, std::size_t mesh_floor = 0);
 
 }  // namespace sylva

@@ -71,6 +71,10 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
     } else {
         DecimateSettings s = settings;
         s.max_triangles = budget.total;
+        // The shared budget follows the quadric error, which at small budgets would starve a
+        // part down to a token (a four-triangle trunk beside a 90-triangle crown): each part
+        // that has more keeps at least a quarter of the budget.
+        s.part_floor = budget.total / 4;
         const Mesh* parts[] = {&trunk, &crown};
         DecimateResult r = decimate(parts, s);
         out.trunk = std::move(r.parts[0]);
@@ -79,18 +83,6 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
         out.backoffs = r.backoffs;
         out.handles_cut = r.handles_cut;
         out.note = r.note;
-        // The shared budget follows the quadric error, which at small budgets can starve a
-        // part down to a token (a four-triangle trunk beside a 90-triangle crown). Each part
-        // that had more keeps at least a quarter of the budget.
-        const std::size_t floor = budget.total / 4;
-        auto starved = [floor](const Mesh& input, const Mesh& reduced) {
-            return input.triangles.size() > floor && reduced.triangles.size() < floor;
-        };
-        const bool trunk_starved = starved(trunk, out.trunk);
-        const bool crown_starved = starved(crown, out.crown);
-        if (trunk_starved != crown_starved)
-            out = reduce_parts(trunk, crown, trunk_starved ? floor : budget.total - floor,
-                               crown_starved ? floor : budget.total - floor, settings);
     }
     out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     return out;
