@@ -346,3 +346,38 @@ TEST(QuadricCollapse, MeshesCollapsedTogetherShareTheBudgetAsOneMesh) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// A floor per mesh in the shared order (DecimateSettings::part_floor): the mesh whose
+// collapses are cheapest stops at the floor and the other gives up the rest of the budget.
+TEST(QuadricCollapse, AMeshAtItsFloorStopsAndTheOthersTakeTheRest) {
+    const Mesh ball = sphere(24), rods = lattice(3, 40);
+    CollapseSettings settings;
+    settings.min_twice_area = 1e-12;
+    auto reduce = [&](std::size_t floor) {
+        std::vector<CollapseMesh> meshes(2);
+        const Mesh* only_ball[] = {&ball};
+        const Mesh* only_rods[] = {&rods};
+        EXPECT_TRUE(meshes[0].build(only_ball));
+        EXPECT_TRUE(meshes[1].build(only_rods));
+        for (CollapseMesh& m : meshes) m.start(settings, nullptr);
+        collapse_together(meshes, 300, nullptr, floor);
+        return std::pair(meshes[0].extract().front(), meshes[1].extract().front());
+    };
+    const auto [free_ball, free_rods] = reduce(0);
+    // Without a floor the smooth ball gives up more than the rods.
+    ASSERT_LT(free_ball.triangles.size(), 150u);
+    const auto [ball_kept, rods_kept] = reduce(150);
+    EXPECT_GE(ball_kept.triangles.size(), 150u);
+    EXPECT_LE(ball_kept.triangles.size() + rods_kept.triangles.size(), 300u);
+    EXPECT_LT(rods_kept.triangles.size(), free_rods.triangles.size());
+    for (const Mesh* m : {&ball_kept, &rods_kept}) {
+        EXPECT_TRUE(check_topology(*m).is_closed_manifold());
+        EXPECT_TRUE(all_outward(*m));
+    }
+}
+
+}  // namespace
+}  // namespace sylva
