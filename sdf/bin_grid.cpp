@@ -97,8 +97,9 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     };
     // Each box's bins, tested once (the overlap test is a primitive's distance per bin; the
     // boxes are tested in parallel, in chunks kept in box order), then a counting sort into
-    // a compact CSR layout with items in box order.
-    constexpr std::size_t kChunk = 256;
+    // a compact CSR layout with items in box order. Small chunks: a crown sphere covers
+    // hundreds of bins, so an oak's 128 spheres are a few milliseconds of tests.
+    constexpr std::size_t kChunk = 8;
     const std::size_t chunks = (boxes.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> listed(chunks);  // bin, box
     tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {

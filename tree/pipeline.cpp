@@ -1,5 +1,7 @@
 #include "tree/pipeline.h"
 
+#include <oneapi/tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -263,13 +265,20 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const Fiel
     fields.trunk_box.max += glm::vec3(joint_blend);
     fields.trunk_cell = fit_to_cells(fields.trunk_box, cells.trunk, p.trunk_resolution);
     throw_if_cancelled(cancel);
-    if (with_trunk_field)
-        fields.trunk = trunk_field(skeleton.segments, fields.trunk_cell, joint_blend, cancel);
+    // The two fields share nothing: each is built beside the other (their bins are mostly
+    // serial work).
+    tbb::parallel_invoke(
+        [&] {
+            if (with_trunk_field)
+                fields.trunk =
+                    trunk_field(skeleton.segments, fields.trunk_cell, joint_blend, cancel);
+        },
+        [&] {
+            std::vector<Ball> balls = crown_spheres(skeleton, p);
+            if (!balls.empty() && p.sphere_diameter > 0.0)
+                add_crown_field(fields, std::move(balls), p, cells.crown);
+        });
     throw_if_cancelled(cancel);
-
-    std::vector<Ball> balls = crown_spheres(skeleton, p);
-    if (!balls.empty() && p.sphere_diameter > 0.0)
-        add_crown_field(fields, std::move(balls), p, cells.crown);
     return fields;
 }
 
