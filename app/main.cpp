@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "core/large_pages.h"
 #include "core/signal_cleanup.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
@@ -428,6 +430,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) use_large_pages();  // core/large_pages.h
     // SIGINT/SIGTERM during a write remove the export's temporaries before the process ends.
     install_signal_cleanup();
     try {

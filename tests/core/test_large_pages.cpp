@@ -1,0 +1,49 @@
+// core/large_pages.h: the heap grown once and advised for huge pages, and later allocations
+// (large ones too, which glibc would map apart) served from that reserve.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/large_pages.h"
+
+#if defined(__linux__) && defined(__GLIBC__)
+#include <unistd.h>
+#endif
+
+namespace sylva {
+namespace {
+
+#if defined(__linux__) && defined(__GLIBC__)
+bool huge_pages_offered() {
+    std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
+    std::string modes;
+    std::getline(in, modes);
+    return !modes.empty() && modes.find("[never]") == std::string::npos;
+}
+
+std::uintptr_t heap_top() {
+    return reinterpret_cast<std::uintptr_t>(sbrk(0));
+}
+
+TEST(LargePages, TheHeapIsAdvisedOnceAndServesLaterAllocations) {
+    if (!huge_pages_offered()) GTEST_SKIP() << "this kernel offers no transparent huge pages";
+    const std::uintptr_t before = heap_top();
+    const std::size_t advised = use_large_pages(std::size_t{64} << 20);
+    const std::uintptr_t top = heap_top();
+    EXPECT_GE(advised, std::size_t{60} << 20);  // 64 MB, less what aligning to 2 MB cuts
+    EXPECT_GE(top - before, advised);
+    // 16 MB: glibc maps that apart by default; here it comes from the heap (which it may
+    // start in, just below the old top) and its reserve.
+    std::vector<char> block(std::size_t{16} << 20, 1);
+    const auto at = reinterpret_cast<std::uintptr_t>(block.data());
+    EXPECT_GT(at + block.size(), before + (std::size_t{8} << 20));
+    EXPECT_LT(at + block.size(), top);
+    EXPECT_EQ(heap_top(), top) << "the heap grew instead of using its reserve";
+}
+#endif
+
+}  // namespace
+}  // namespace sylva
