@@ -142,7 +142,8 @@ int main(int argc, char** argv) {
         // The other way: how far the fine surface strays from the reduced one (a branch
         // the reduction dropped shows here); the larger max of both is the Hausdorff distance.
         const Mesh* reduced_parts[] = {&reduced.trunk, &reduced.crown};
-        auto hausdorff_of = [&reference](const Fidelity& there, std::span<const Mesh* const> parts) {
+        auto hausdorff_of = [&reference](const Fidelity& there,
+                                         std::span<const Mesh* const> parts) {
             return std::max(there.max_percent,
                             measure_fidelity(reference, merge_meshes(parts)).max_percent);
         };
@@ -169,13 +170,13 @@ int main(int argc, char** argv) {
             const double heap_ms = ms_since(heap_start);
             const Fidelity hf = measure_tree_fidelity(h.trunk, h.crown, reference);
             const Mesh* heap_parts[] = {&h.trunk, &h.crown};
-            std::printf("%-9s %7s %5zu %4d %5.0f %6s %6.3f %6.3f %6.2f | heap only: %.2fx the "
-                        "time, mean %+.1f%%\n",
-                        "  heap", "", h.triangles, h.handles_cut, heap_ms,
-                        closed(h.trunk) && closed(h.crown) ? "yes" : "NO", hf.mean_percent,
-                        hf.max_percent, hausdorff_of(hf, heap_parts),
-                        heap_ms / std::max(reduce_ms, 1e-3),
-                        100.0 * (f.mean_percent / std::max(hf.mean_percent, 1e-12) - 1.0));
+            std::printf(
+                "%-9s %7s %5zu %4d %5.0f %6s %6.3f %6.3f %6.2f | heap only: %.2fx the "
+                "time, mean %+.1f%%\n",
+                "  heap", "", h.triangles, h.handles_cut, heap_ms,
+                closed(h.trunk) && closed(h.crown) ? "yes" : "NO", hf.mean_percent, hf.max_percent,
+                hausdorff_of(hf, heap_parts), heap_ms / std::max(reduce_ms, 1e-3),
+                100.0 * (f.mean_percent / std::max(hf.mean_percent, 1e-12) - 1.0));
         }
         if (where) {
             std::printf("    trunk %zu -> %zu, crown %zu -> %zu triangles; %zu crown bridges\n",

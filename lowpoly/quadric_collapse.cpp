@@ -497,8 +497,7 @@ bool CollapseMesh::collapse_in_passes(std::size_t until, std::size_t interval,
             collapse(h, change);
             ++made;
             ++collapses_;
-            if (step_done && interval > 0 && collapses_ % interval == 0 &&
-                !step_done(collapses_))
+            if (step_done && interval > 0 && collapses_ % interval == 0 && !step_done(collapses_))
                 return false;
         }
         if (made == 0) break;
@@ -523,8 +522,8 @@ void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
     }
 }
 
-void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
-                       CancelFlag cancel, std::size_t mesh_floor) {
+void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles, CancelFlag cancel,
+                       std::size_t mesh_floor) {
     std::size_t triangles = 0;
     for (CollapseMesh& m : meshes) {
         m.prepare_heap();
