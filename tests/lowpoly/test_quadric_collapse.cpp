@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <initializer_list>
 
 #include "core/errors.h"
 #include "lowpoly/decimate.h"
@@ -311,6 +312,19 @@ TEST(HandleCutting, DecimationBelowTheHandleFloorOfALattice) {
 namespace sylva {
 namespace {
 
+// Each mesh in a CollapseMesh of its own, started.
+std::vector<CollapseMesh> started_apart(std::initializer_list<const Mesh*> meshes,
+                                        const CollapseSettings& settings) {
+    std::vector<CollapseMesh> apart(meshes.size());
+    std::size_t k = 0;
+    for (const Mesh* m : meshes) {
+        const Mesh* only[] = {m};
+        EXPECT_TRUE(apart[k].build(only));
+        apart[k++].start(settings, nullptr);
+    }
+    return apart;
+}
+
 // Parts reduced in meshes of their own but with one order of collapses (collapse_together)
 // share the budget as one mesh of both parts does: the same triangles in all, split between
 // the parts alike (equal errors, of which a marching-cubes sphere has many, may go in another
@@ -326,12 +340,7 @@ TEST(QuadricCollapse, MeshesCollapsedTogetherShareTheBudgetAsOneMesh) {
     joint.collapse_to(300);
     const std::vector<Mesh> expected = joint.extract();
 
-    std::vector<CollapseMesh> apart(2);
-    const Mesh* only_a[] = {&a};
-    const Mesh* only_b[] = {&b};
-    ASSERT_TRUE(apart[0].build(only_a));
-    ASSERT_TRUE(apart[1].build(only_b));
-    for (CollapseMesh& m : apart) m.start(settings, nullptr);
+    std::vector<CollapseMesh> apart = started_apart({&a, &b}, settings);
     collapse_together(apart, 300);
     EXPECT_EQ(apart[0].triangles() + apart[1].triangles(), joint.triangles());
     for (std::size_t k = 0; k < 2; ++k) {
@@ -344,12 +353,6 @@ TEST(QuadricCollapse, MeshesCollapsedTogetherShareTheBudgetAsOneMesh) {
     }
 }
 
-}  // namespace
-}  // namespace sylva
-
-namespace sylva {
-namespace {
-
 // A floor per mesh in the shared order (DecimateSettings::part_floor): the mesh whose
 // collapses are cheapest stops at the floor and the other gives up the rest of the budget.
 TEST(QuadricCollapse, AMeshAtItsFloorStopsAndTheOthersTakeTheRest) {
@@ -357,12 +360,7 @@ TEST(QuadricCollapse, AMeshAtItsFloorStopsAndTheOthersTakeTheRest) {
     CollapseSettings settings;
     settings.min_twice_area = 1e-12;
     auto reduce = [&](std::size_t floor) {
-        std::vector<CollapseMesh> meshes(2);
-        const Mesh* only_ball[] = {&ball};
-        const Mesh* only_rods[] = {&rods};
-        EXPECT_TRUE(meshes[0].build(only_ball));
-        EXPECT_TRUE(meshes[1].build(only_rods));
-        for (CollapseMesh& m : meshes) m.start(settings, nullptr);
+        std::vector<CollapseMesh> meshes = started_apart({&ball, &rods}, settings);
         collapse_together(meshes, 300, nullptr, floor);
         return std::pair(meshes[0].extract().front(), meshes[1].extract().front());
     };
