@@ -1,5 +1,6 @@
 #include "core/large_pages.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 
@@ -11,14 +12,22 @@
 
 namespace sylva {
 
+void keep_freed_memory(std::size_t keep) {
+#if defined(__linux__) && defined(__GLIBC__)
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
+    mallopt(M_TRIM_THRESHOLD, static_cast<int>(std::min<std::size_t>(keep, 1u << 30)));
+#else
+    (void)keep;
+#endif
+}
+
 std::size_t use_large_pages(std::size_t reserve) {
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
     constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
     // One arena: worker threads allocate from the same (advised) heap; glibc's per-thread
     // caches keep small allocations off its lock.
     mallopt(M_ARENA_MAX, 1);
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    keep_freed_memory(std::size_t{1} << 30);
     const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
     // Grows the heap by `reserve` (an allocation above what its top holds, returned at once:
     // the top stays, since nothing is trimmed).

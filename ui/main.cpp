@@ -4,6 +4,7 @@
 
 #include "core/color_variation.h"
 #include "core/errors.h"
+#include "core/large_pages.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/backdrop.h"
@@ -594,6 +595,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) sylva::keep_freed_memory();  // core/large_pages.h
     StudioOptions options;
     try {
         options = parse_studio_options(argc, argv);

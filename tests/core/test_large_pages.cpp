@@ -1,5 +1,6 @@
-// core/large_pages.h: the heap grown once and advised for huge pages, and later allocations
-// (large ones too, which glibc would map apart) served from that reserve.
+// core/large_pages.h: freed memory kept for the next allocation; the heap grown once and
+// advised for huge pages, and later allocations (large ones too, which glibc would map apart)
+// served from that reserve.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -26,6 +27,22 @@ bool huge_pages_offered() {
 
 std::uintptr_t heap_top() {
     return reinterpret_cast<std::uintptr_t>(sbrk(0));
+}
+
+TEST(LargePages, FreedMemoryIsKeptForTheNextTree) {
+    keep_freed_memory();
+    constexpr std::size_t kSize = std::size_t{16} << 20;  // glibc maps that apart by default
+    auto* block = new char[kSize];
+    block[0] = 1;
+    const auto first = reinterpret_cast<std::uintptr_t>(block);
+    delete[] block;
+    // It came from the heap, which kept it after the free...
+    EXPECT_LE(first + kSize, heap_top());
+    // ...and gives it to the next allocation of its size.
+    auto* again = new char[kSize];
+    again[0] = 1;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(again), first);
+    delete[] again;
 }
 
 TEST(LargePages, TheHeapIsAdvisedOnceAndServesLaterAllocations) {
