@@ -17,7 +17,19 @@
 namespace sylva {
 namespace {
 
-#if defined(__linux__) && defined(__GLIBC__)
+// glibc's malloc is the one these settings are for; a sanitizer brings its own.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SYLVA_GLIBC_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define SYLVA_GLIBC_MALLOC 0
+#endif
+#endif
+#ifndef SYLVA_GLIBC_MALLOC
+#define SYLVA_GLIBC_MALLOC 1
+#endif
+
+#if defined(__linux__) && defined(__GLIBC__) && SYLVA_GLIBC_MALLOC
 bool huge_pages_offered() {
     std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
     std::string modes;
