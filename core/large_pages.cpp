@@ -28,6 +28,8 @@ std::size_t use_large_pages(std::size_t reserve) {
     // caches keep small allocations off its lock.
     mallopt(M_ARENA_MAX, 1);
     keep_freed_memory(std::size_t{1} << 30);
+    // A free top would serve the allocation below without growing the heap.
+    malloc_trim(0);
     const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
     // Grows the heap by `reserve` (an allocation above what its top holds, returned at once:
     // the top stays, since nothing is trimmed).
