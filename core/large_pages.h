@@ -4,9 +4,9 @@
 // Sylva allocates its meshes fresh for every tree. On the virtual machines it is measured on
 // (2 cores), a first touch of a 4 KB page costs about 11 us, so a default export's 2,400
 // page faults were a third of its time (oak: 60 ms, 26 of them in the kernel). With the heap
-// on huge pages, one fault maps 2 MB: 2,400 -> about 700 faults on the oak, 6,400 -> 500 on
-// the ternary (measured with /usr/bin/time -f %R). Desktop kernels fault faster, but fewer
-// faults never cost.
+// on huge pages, one fault maps 2 MB: 2,400 -> about 850 faults on the oak, 6,300 -> about
+// 1,000 on the ternary (/usr/bin/time -f %R; the rest are the process's start and its
+// threads). Desktop kernels fault faster, but fewer faults never cost.
 #pragma once
 
 #include <cstddef>
