@@ -170,20 +170,23 @@ struct BridgedCrown {
     bool is_distance_bound() const { return crown.is_distance_bound(); }
 };
 
-// A game mesh needs no branch the crown hides (drop_hidden): such segments, every point of
-// the cone at least its radius inside the crown (sampled along the axis at most half a
-// radius apart), are left out of the trunk's field. They are most of a dense crown's
-// twigs, and where twigs cross they make the handles that cost a reduction most of its
-// time.
+// A game mesh needs no branch the crown hides (drop_hidden): such segments are left out of
+// the trunk's field. A branch is hidden when every point of its axis (sampled at most half
+// a radius apart) lies at least its radius inside the crown; a twig thinner than half a
+// cell (drawn a cell wide) when its axis lies inside the crown. They are most of a dense
+// crown's twigs, and where twigs cross they make the handles that cost a reduction most of
+// its time (willow at 800: its raw trunk 45k -> 34k triangles, the fidelity better both
+// ways, README "Meshed for the budget").
 std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereField& crown,
-                                      float min_radius) {
+                                      float cell) {
     std::vector<Segment> visible;
     for (const Segment& s : skeleton.segments) {
-        const float r = std::max({s.ra, s.rb, min_radius});
+        const float r = std::max({s.ra, s.rb, kMinRadiusInCells * cell});
+        const float depth = std::max(s.ra, s.rb) < 0.5f * cell ? 0.0f : r;
         const int samples = 2 + static_cast<int>(glm::distance(s.a, s.b) / (0.5f * r));
         bool hidden = true;
         for (int k = 0; k <= samples && hidden; ++k)
-            hidden = crown(glm::mix(s.a, s.b, static_cast<float>(k) / samples)) < -r;
+            hidden = crown(glm::mix(s.a, s.b, static_cast<float>(k) / samples)) < -depth;
         if (!hidden) visible.push_back(s);
     }
     return visible;
@@ -368,7 +371,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     if (drop_hidden && fields.crown) {
         Skeleton shown;
         const float cell = cell_size(fields.trunk_box, p.trunk_resolution);
-        shown.segments = visible_segments(out.skeleton, *fields.crown, kMinRadiusInCells * cell);
+        shown.segments = visible_segments(out.skeleton, *fields.crown, cell);
         out.hidden_segments = out.skeleton.segments.size() - shown.segments.size();
         if (!shown.segments.empty() && out.hidden_segments > 0) {
             trunk_box = skeleton_bounds(shown);

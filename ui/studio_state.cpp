@@ -153,7 +153,8 @@ GenerationJob launch(GenerationJob job) {
         } catch (...) {
             promise.set_exception(std::current_exception());
         }
-        if (progress->wake) progress->wake();
+        if (progress->wake && (!progress->cancel || progress->wake_when_cancelled))
+            progress->wake();
     });
     return job;
 }
@@ -513,7 +514,17 @@ void start_generation(StudioState& state) {
     // (poll_jobs starts it), so a slider drag keeps at most three workers alive.
     constexpr std::size_t kMaxStale = 2;
     state.generate_wanted = state.stale.size() >= kMaxStale;
-    if (state.generate_wanted) return;
+    if (state.generate_wanted) {
+        // One may have ended before it was asked to wake the UI: poll_jobs starts the new
+        // job at the next frame.
+        bool ended = false;
+        for (GenerationJob& stale : state.stale) {
+            stale.progress->wake_when_cancelled = true;
+            ended |= ready(stale.result);
+        }
+        if (ended && state.wake) state.wake();
+        return;
+    }
 
     state.job_estimate = cost;
     GenerationJob job;

@@ -103,6 +103,9 @@ struct JobProgress {
     // Called by the worker when it has something to show (a draft, its result): main wakes
     // its event loop with it, which waits while only workers run.
     std::function<void()> wake;
+    // A cancelled job ends without waking the UI (a frame drawn for nothing takes the
+    // cores from the job that replaced it), unless a newer job waits for it to end.
+    std::atomic<bool> wake_when_cancelled{false};
 };
 
 // A generation on a worker thread. Cancelling only asks; the job is kept until its future is

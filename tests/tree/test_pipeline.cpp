@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <glm/vector_relational.hpp>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -86,6 +88,59 @@ TEST(Pipeline, TheMeshHugsTheSkeleton) {
         EXPECT_TRUE(glm::all(glm::lessThanEqual(p, box.max + glm::vec3(2 * cell))));
     }
     EXPECT_NEAR(lowest, tree.skeleton.segments.front().a.y, cell);  // the trunk's base
+}
+
+// A game mesh's trunk leaves out what the crown hides (drop_hidden, the willow's default):
+// every part of the full trunk that shows outside the crown's spheres (the trunk and the
+// main branches) is still there, within two cells, and the hidden twigs are gone (fewer raw
+// triangles for the reduction). Checked to fail when branches under 1.5 cells are dropped.
+TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
+    TreeTemplate willow = load_template("willow");
+    ASSERT_EQ(willow.params.drop_hidden, 1);
+    MeshOptions game;
+    game.budget = 800;
+    const Tree kept = generate_tree(willow, game);
+    willow.params.drop_hidden = 0;
+    const Tree full = generate_tree(willow, game);
+    EXPECT_GT(kept.hidden_segments, 0u);
+    EXPECT_LT(kept.trunk.triangles.size(), 0.85 * full.trunk.triangles.size());
+
+    const Box box = skeleton_bounds(full.skeleton);
+    const glm::vec3 extent = box.max - box.min;
+    const float cell = std::max({extent.x, extent.y, extent.z}) /
+                       static_cast<float>(willow.params.trunk_resolution);
+    // The kept trunk's vertices by buckets two cells wide.
+    const float bucket = 2.0f * cell;
+    auto key = [bucket](const glm::vec3& p, int dx, int dy, int dz) {
+        const glm::ivec3 k = glm::ivec3(glm::floor(p / bucket)) + glm::ivec3(dx, dy, dz);
+        return (std::int64_t(k.x) * 73856093) ^ (std::int64_t(k.y) * 19349663) ^
+               (std::int64_t(k.z) * 83492791);
+    };
+    std::unordered_multimap<std::int64_t, glm::vec3> buckets;
+    for (const glm::vec3& p : kept.trunk.positions) buckets.emplace(key(p, 0, 0, 0), p);
+    auto near_kept = [&](const glm::vec3& p) {
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const auto [first, last] = buckets.equal_range(key(p, dx, dy, dz));
+                    for (auto it = first; it != last; ++it)
+                        if (glm::distance(it->second, p) <= bucket) return true;
+                }
+        return false;
+    };
+    const std::vector<Ball> crown = crown_spheres(full.skeleton, willow.params);
+    const float margin = static_cast<float>(willow.params.crown_fusion) + 1.0f * cell;
+    std::size_t shown = 0, lost = 0;
+    for (const glm::vec3& p : full.trunk.positions) {
+        const bool in_crown = std::any_of(crown.begin(), crown.end(), [&](const Ball& b) {
+            return glm::distance(p, b.center) < b.radius + margin;
+        });
+        if (in_crown) continue;
+        ++shown;
+        if (!near_kept(p)) ++lost;
+    }
+    EXPECT_GT(shown, 300u);  // the test sees the trunk and the main branches
+    EXPECT_EQ(lost, 0u) << "of " << shown << " trunk vertices outside the crown";
 }
 
 TEST(Pipeline, SameInputsGiveTheSameBytes) {

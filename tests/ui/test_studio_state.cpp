@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -438,6 +439,42 @@ TEST(StudioState, ANewerEditCancelsTheStaleJobWithoutBlocking) {
     EXPECT_TRUE(state.error.empty()) << state.error;  // a cancel is not an error
     // The tree on screen is the last edit's, not the cancelled big one's.
     EXPECT_EQ(state.shown_template.params.trunk_resolution, 24);
+}
+
+// A frame drawn for a job nobody waits for takes the cores from the one that replaced it
+// (a software renderer's frame costs 30-80 ms of both): a cancelled job ends without waking
+// the UI, unless the newest edit waits for it to end (two already winding down).
+TEST(StudioState, ACancelledJobWakesTheUiOnlyWhenANewerJobWaitsForIt) {
+    std::atomic<int> cancelled_wakes{0}, newer_wakes{0};
+    StudioState state = state_with(load_template("default"));
+    state.wake = [&cancelled_wakes] { ++cancelled_wakes; };
+    state.tree_template.params.trunk_resolution = 1200;  // seconds of meshing
+    start_generation(state);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    state.wake = [&newer_wakes] { ++newer_wakes; };
+    state.tree_template.params.trunk_resolution = 24;
+    start_generation(state);
+    ASSERT_EQ(state.stale.size(), 1u);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_EQ(cancelled_wakes, 0);  // its end drew no frame
+    EXPECT_GE(newer_wakes, 1);      // the job that replaced it woke the UI for its tree
+
+    // Two jobs winding down: the third edit waits for them (poll_jobs starts it), and
+    // their ends wake the UI so it does not wait for a timeout.
+    state.wake = [&cancelled_wakes] { ++cancelled_wakes; };
+    for (int resolution : {1200, 1100}) {
+        state.tree_template.params.trunk_resolution = resolution;
+        start_generation(state);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    state.tree_template.params.trunk_resolution = 26;
+    start_generation(state);
+    ASSERT_EQ(state.stale.size(), 2u);
+    ASSERT_TRUE(state.generate_wanted);
+    for (GenerationJob& job : state.stale) job.result.wait();
+    EXPECT_GE(cancelled_wakes, 1);
+    ASSERT_TRUE(wait_for_generations(state));
+    EXPECT_EQ(state.shown_template.params.trunk_resolution, 26);
 }
 
 TEST(StudioState, UndoAndRedoStepThroughCommittedEdits) {
