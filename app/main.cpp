@@ -102,7 +102,8 @@ Usage:
                    the whole tree's colours per seed); darkening toward the crown's middle
   --ply-ascii      write PLY as text instead of binary
   --fidelity       also report the distance of the reduced trunk + crown to the
-                   resolution-200 surface, in percent of the tree's height
+                   resolution-200 surface and back (what the game mesh lost), in
+                   percent of the tree's height
   -o PATH          output file. All files of an export (an .obj and its .mtl, every LOD)
                    are written to a temporary folder beside it and moved into place only
                    when all succeeded: on an error or SIGINT/SIGTERM nothing new is left
@@ -374,6 +375,9 @@ int run_export(const Options& o) {
             "  fidelity to the resolution-200 surface: mean %.3f %% max %.3f %% of the "
             "height %.2f m (%zu samples)\n",
             f.mean_percent, f.max_percent, f.height, f.samples);
+        const Fidelity b = measure_tree_loss(solids.trunk, solids.crown, reference, f.height);
+        std::printf("  and back, from that surface: mean %.3f %% max %.3f %%\n", b.mean_percent,
+                    b.max_percent);
     }
     return kOk;
 }

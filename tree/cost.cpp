@@ -59,7 +59,7 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
     cost.bytes = kBaseBytes + kBytesPerModule * cost.modules + kBytesPerSegment * cost.segments;
     cost.seconds = kSecondsPerModule * cost.modules + kSecondsPerSegment * cost.segments;
     if (mesh) {
-        const double trunk = tree.params.trunk_resolution;
+        const double trunk = trunk_resolution_for_budget(tree.params, budget);
         const double crown = crown_resolution_for_budget(tree.params.crown_resolution, budget);
         const double squared = trunk * trunk + crown * crown;
         cost.cells = trunk * trunk * trunk + crown * crown * crown;

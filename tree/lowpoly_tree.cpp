@@ -292,4 +292,12 @@ Fidelity measure_tree_fidelity(const Mesh& trunk, const Mesh& crown, const Mesh&
     return measure_fidelity(merge_meshes(parts), reference, settings);
 }
 
+Fidelity measure_tree_loss(const Mesh& trunk, const Mesh& crown, const Mesh& reference,
+                           double height) {
+    const Mesh* parts[] = {&trunk, &crown};
+    FidelitySettings settings;
+    settings.height = height;
+    return measure_fidelity(reference, merge_meshes(parts), settings);
+}
+
 }  // namespace sylva

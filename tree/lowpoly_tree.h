@@ -106,4 +106,10 @@ Mesh reference_surface(const TreeTemplate& tree, int resolution = 200,
 Fidelity measure_tree_fidelity(const Mesh& trunk, const Mesh& crown, const Mesh& reference,
                                const FidelitySettings& settings = {});
 
+// The other way round, from `reference` to trunk + crown: what the game mesh lost (a dropped
+// branch; twigs hidden inside the crown count too, at the depth they lie), in percent of
+// `height` (the forward measure's).
+Fidelity measure_tree_loss(const Mesh& trunk, const Mesh& crown, const Mesh& reference,
+                           double height);
+
 }  // namespace sylva

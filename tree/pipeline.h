@@ -62,6 +62,12 @@ struct MeshOptions {
 // since thin branches need it.
 int crown_resolution_for_budget(int resolution, std::size_t budget);
 
+// The trunk's resolution for a game mesh of `budget` triangles: the template's, unless the
+// crown hides most of the trunk (drop_hidden, with a crown): then one the budget can show,
+// 1.25 times the crown's (30 at 200, 60 at 800, 117 at 3000), since such a trunk ends
+// near its floor of a quarter of the budget (elm, fir, maple, spruce, willow).
+int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget);
+
 // Runs the whole pipeline on a template (its params as the caller set them).
 // Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options = {});

@@ -153,6 +153,9 @@ GenerationJob launch(GenerationJob job) {
         } catch (...) {
             promise.set_exception(std::current_exception());
         }
+        // The fence pairs with start_generation's: either it sees this job ended or this
+        // job sees that it was asked to wake the UI.
+        std::atomic_thread_fence(std::memory_order_seq_cst);
         if (progress->wake && (!progress->cancel || progress->wake_when_cancelled))
             progress->wake();
     });
@@ -517,11 +520,10 @@ void start_generation(StudioState& state) {
     if (state.generate_wanted) {
         // One may have ended before it was asked to wake the UI: poll_jobs starts the new
         // job at the next frame.
+        for (GenerationJob& stale : state.stale) stale.progress->wake_when_cancelled = true;
+        std::atomic_thread_fence(std::memory_order_seq_cst);
         bool ended = false;
-        for (GenerationJob& stale : state.stale) {
-            stale.progress->wake_when_cancelled = true;
-            ended |= ready(stale.result);
-        }
+        for (GenerationJob& stale : state.stale) ended |= ready(stale.result);
         if (ended && state.wake) state.wake();
         return;
     }

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "export/export_tree.h"
+#include "lowpoly/merge_meshes.h"
 #include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
@@ -122,6 +123,22 @@ TEST(TreeReduction, FidelityGrowsWithReduction) {
     }
     // A game budget stays close to the surface it came from.
     EXPECT_LT(at_game_budget, 1.0);
+}
+
+// The forward measure sees only where the game mesh strays; the loss (the other way round)
+// sees a part it dropped: a tree without its crown is all on the full surface, yet the
+// crown's surface is far from it.
+TEST(TreeReduction, TheLossSeesWhatTheGameMeshDropped) {
+    const Tree& tree = coarse_tree();
+    const Mesh* parts[] = {&tree.trunk, &tree.crown};
+    const Mesh reference = merge_meshes(parts);
+    const Mesh none;
+    const Fidelity kept = measure_tree_fidelity(tree.trunk, none, reference);
+    EXPECT_LT(kept.mean_percent, 1e-4);
+    const Fidelity lost = measure_tree_loss(tree.trunk, none, reference, kept.height);
+    EXPECT_GT(lost.mean_percent, 1.0);
+    EXPECT_LT(measure_tree_loss(tree.trunk, tree.crown, reference, kept.height).mean_percent,
+              1e-4);
 }
 
 TEST(TreeReduction, ReferenceSurfaceIsFinerAndClosed) {
