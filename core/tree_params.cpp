@@ -111,8 +111,9 @@ const std::vector<Field>& fields() {
          nullptr,
          &TreeParams::crown_merge},
         {{"drop_hidden",
-          "1: the game mesh leaves out branches hidden inside the crown (2-3x faster on dense "
-          "trees); 0: keeps them",
+          "1: the crown hides most of the trunk: the game mesh leaves out the branches and "
+          "twigs it hides and meshes the trunk at the budget's resolution (2-5x fewer raw "
+          "triangles); 0: keeps them all at trunk_resolution",
           0, 1, true},
          nullptr,
          &TreeParams::drop_hidden},

@@ -30,7 +30,7 @@ struct TreeParams {
     int crown_blend = 0;           // CrownBlend: how crown spheres fuse
     int crown_mesh = 1;            // 1: mesh the crown; 0: leaves only (seed 001, B.6)
     int crown_merge = 1;           // 1: low budgets merge crown blobs (tree/crown_merge.h)
-    int drop_hidden = 0;           // 1: game meshes leave out branches the crown hides
+    int drop_hidden = 0;           // 1: game meshes leave out what the crown hides (pipeline.h)
     double leaf_density = 60.0;    // leaves per cubic meter of crown
     double leaf_size = 0.25;       // leaf length, meters
     int leaf_shape = 0;            // LeafShape

@@ -137,8 +137,7 @@ TEST(TreeReduction, TheLossSeesWhatTheGameMeshDropped) {
     EXPECT_LT(kept.mean_percent, 1e-4);
     const Fidelity lost = measure_tree_loss(tree.trunk, none, reference, kept.height);
     EXPECT_GT(lost.mean_percent, 1.0);
-    EXPECT_LT(measure_tree_loss(tree.trunk, tree.crown, reference, kept.height).mean_percent,
-              1e-4);
+    EXPECT_LT(measure_tree_loss(tree.trunk, tree.crown, reference, kept.height).mean_percent, 1e-4);
 }
 
 TEST(TreeReduction, ReferenceSurfaceIsFinerAndClosed) {
