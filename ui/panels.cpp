@@ -317,7 +317,8 @@ void parameter_section(StudioState& state) {
         const bool changed = parameter_widget(info, value, range);
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            const std::string help(info.help);
+            std::string help(info.help);
+            help += budget_resolution_note(params, info.key);
             if (disabled)
                 ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
                                   unread->second.c_str());

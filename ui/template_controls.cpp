@@ -12,6 +12,7 @@
 
 #include "colonization/colonization_growth.h"
 #include "core/tree_params.h"
+#include "tree/pipeline.h"
 #include "tree/template_crown.h"
 
 namespace sylva::studio {
@@ -461,6 +462,22 @@ SliderRange slider_range(std::string_view key, double value) {
         max = std::min(info->max, info->integer ? std::ceil(value * 1.5) : value * 1.5);
     if (value < min) min = std::max(info->min, value < 0 ? value * 1.5 : info->min);
     return {min, max};
+}
+
+std::string budget_resolution_note(const TreeParams& params, std::string_view key) {
+    const auto budget = static_cast<std::size_t>(std::max(params.triangle_budget, 0));
+    int used = 0, set = 0;
+    if (key == "trunk_resolution") {
+        used = trunk_resolution_for_budget(params, budget);
+        set = params.trunk_resolution;
+    } else if (key == "crown_resolution") {
+        used = crown_resolution_for_budget(params.crown_resolution, budget);
+        set = params.crown_resolution;
+    }
+    if (used >= set) return "";
+    return "\nmeshed at " + std::to_string(used) + " for the budget of " + std::to_string(budget) +
+           " triangles (what it can show" +
+           (key == "trunk_resolution" ? ", since drop_hidden is on)" : ")");
 }
 
 }  // namespace sylva::studio

@@ -55,4 +55,9 @@ struct SliderRange {
 };
 SliderRange slider_range(std::string_view key, double value);
 
+// The tooltip's line for trunk_resolution / crown_resolution when a tree with a budget is
+// meshed below the slider's value (tree/pipeline.h: what the budget can show): "\nmeshed at
+// 60 for the budget of 800 triangles (...)", or "" (other keys, or the slider's value used).
+std::string budget_resolution_note(const TreeParams& params, std::string_view key);
+
 }  // namespace sylva::studio
