@@ -50,7 +50,8 @@ struct MeshOptions {
     // Cancelled.
     CancelFlag cancel = nullptr;
     // The trunk + crown triangles the meshes will be reduced to (0: not reduced). It sets
-    // the crown's resolution (crown_resolution_for_budget), and a low budget merges a
+    // the crown's resolution (crown_resolution_for_budget) and, with drop_hidden, the
+    // trunk's (trunk_resolution_for_budget), and a low budget merges a
     // many-blob crown into a few pieces (crown_merge.h).
     std::size_t budget = 0;
 };
@@ -59,7 +60,7 @@ struct MeshOptions {
 // triangles: the template's, or less when the budget cannot show more (24 at 200, 48 at
 // 800, 93 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
 // coarse grid already draws as well as a small budget can; the trunk keeps its resolution,
-// since thin branches need it.
+// since thin branches need it (unless the crown hides it: trunk_resolution_for_budget).
 int crown_resolution_for_budget(int resolution, std::size_t budget);
 
 // The trunk's resolution for a game mesh of `budget` triangles: the template's, unless the

@@ -302,11 +302,9 @@ void parameter_section(StudioState& state) {
     if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
     tooltip("a new random seed");
     // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
-    auto inert = inert_params(t);
-    // These shape only the game mesh, which the full-detail view does not show.
-    if (!state.view.low_poly)
-        for (const char* key : {"crown_merge", "drop_hidden"})
-            inert.emplace(key, "it acts on the game mesh only: switch the low-poly view on");
+    // (crown_merge and drop_hidden act in the full-detail view too: it is meshed for the
+    // template's budget, as the game mesh is.)
+    const auto inert = inert_params(t);
     auto row = [&](const ParamInfo& info) {
         double value = *get_param(params, info.key);
         const auto unread = inert.find(info.key);
