@@ -472,6 +472,10 @@ TEST(StudioState, ACancelledJobWakesTheUiOnlyWhenANewerJobWaitsForIt) {
     ASSERT_EQ(state.stale.size(), 2u);
     ASSERT_TRUE(state.generate_wanted);
     for (GenerationJob& job : state.stale) job.result.wait();
+    // The worker wakes the UI just after its result is set.
+    const Clock::time_point end = Clock::now() + std::chrono::seconds(5);
+    while (cancelled_wakes == 0 && Clock::now() < end)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
     EXPECT_GE(cancelled_wakes, 1);
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_EQ(state.shown_template.params.trunk_resolution, 26);
