@@ -27,7 +27,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -141,13 +140,13 @@ int main(int argc, char** argv) {
         const Fidelity f = measure_tree_fidelity(reduced.trunk, reduced.crown, reference);
         // The other way: how far the fine surface strays from the reduced one (a branch
         // the reduction dropped shows here); the larger max of both is the Hausdorff distance.
-        const Mesh* reduced_parts[] = {&reduced.trunk, &reduced.crown};
-        auto hausdorff_of = [&reference](const Fidelity& there,
-                                         std::span<const Mesh* const> parts) {
-            return std::max(there.max_percent,
-                            measure_fidelity(reference, merge_meshes(parts)).max_percent);
+        auto hausdorff_of = [&reference](const Fidelity& there, const ReducedTree& r) {
+            return std::max(
+                there.max_percent,
+                measure_tree_loss(r.trunk, r.crown, reference, there.height).max_percent);
         };
-        const double hausdorff = hausdorff_of(f, reduced_parts);
+        const Mesh* reduced_parts[] = {&reduced.trunk, &reduced.crown};
+        const double hausdorff = hausdorff_of(f, reduced);
         const PlainMatch plain =
             fidelity_only ? PlainMatch{}
                           : plain_match(tmpl, reference, f.mean_percent, reference_resolution);
@@ -169,13 +168,12 @@ int main(int argc, char** argv) {
             const ReducedTree h = reduce_tree(tree, b, heap);
             const double heap_ms = ms_since(heap_start);
             const Fidelity hf = measure_tree_fidelity(h.trunk, h.crown, reference);
-            const Mesh* heap_parts[] = {&h.trunk, &h.crown};
             std::printf(
                 "%-9s %7s %5zu %4d %5.0f %6s %6.3f %6.3f %6.2f | heap only: %.2fx the "
                 "time, mean %+.1f%%\n",
                 "  heap", "", h.triangles, h.handles_cut, heap_ms,
                 closed(h.trunk) && closed(h.crown) ? "yes" : "NO", hf.mean_percent, hf.max_percent,
-                hausdorff_of(hf, heap_parts), heap_ms / std::max(reduce_ms, 1e-3),
+                hausdorff_of(hf, h), heap_ms / std::max(reduce_ms, 1e-3),
                 100.0 * (f.mean_percent / std::max(hf.mean_percent, 1e-12) - 1.0));
         }
         if (where) {
