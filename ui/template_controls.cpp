@@ -467,17 +467,21 @@ SliderRange slider_range(std::string_view key, double value) {
 std::string budget_resolution_note(const TreeParams& params, std::string_view key) {
     const auto budget = static_cast<std::size_t>(std::max(params.triangle_budget, 0));
     int used = 0, set = 0;
+    std::string why = "what it can show";
     if (key == "trunk_resolution") {
         used = trunk_resolution_for_budget(params, budget);
         set = params.trunk_resolution;
+        TreeParams shown = params;  // every branch meshed
+        shown.drop_hidden = 0;
+        why += used < trunk_resolution_for_budget(shown, budget) ? ", since drop_hidden is on"
+                                                                 : ", below 800 triangles";
     } else if (key == "crown_resolution") {
         used = crown_resolution_for_budget(params.crown_resolution, budget);
         set = params.crown_resolution;
     }
     if (used >= set) return "";
     return "\nmeshed at " + std::to_string(used) + " for the budget of " + std::to_string(budget) +
-           " triangles (what it can show" +
-           (key == "trunk_resolution" ? ", since drop_hidden is on)" : ")");
+           " triangles (" + why + ")";
 }
 
 }  // namespace sylva::studio
