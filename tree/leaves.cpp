@@ -1,13 +1,18 @@
 #include "tree/leaves.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <numbers>
+#include <vector>
 
 #include "core/random.h"
+#include "lowpoly/merge_meshes.h"
 
 namespace sylva {
 
@@ -73,11 +78,10 @@ void add_polygon_leaves(Mesh& leaves, const std::vector<std::vector<glm::vec3>>&
 
 Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const Box& box,
                     const LeafSettings& settings) {
-    Mesh mesh;
-    if (!(settings.density > 0.0) || !(settings.size > 0.0)) return mesh;
+    if (!(settings.density > 0.0) || !(settings.size > 0.0)) return {};
     glm::vec3 extent = box.max - box.min;
     double volume = double(extent.x) * extent.y * extent.z;
-    if (!(volume > 0.0)) return mesh;
+    if (!(volume > 0.0)) return {};
     // One candidate point per grid cell; the box's volume bounds the crown's, so a grid of
     // at most max_leaves cells keeps the count below the cap.
     double cell_volume = std::max(1.0 / settings.density, volume / double(settings.max_leaves));
@@ -95,19 +99,31 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
     }
     const glm::ivec3 cells(cells_f);
 
-    Random random(settings.seed ^ 0x1eaf5eedULL);
+    // The slices of the grid on a core each (the crown's field is the cost), each with the
+    // random numbers it would draw in one pass over the grid: the same leaves in the same
+    // order whatever the thread count.
     const std::vector<glm::vec2>& outline = leaf_outline(settings.shape);
-    for (int k = 0; k < cells.z; ++k)
+    constexpr std::size_t kDrawsPerCell = 7;
+    std::vector<Mesh> slices(static_cast<std::size_t>(cells.z));
+    tbb::parallel_for(0, cells.z, [&](int k) {
+        Mesh& slice = slices[static_cast<std::size_t>(k)];
+        Random random(settings.seed ^ 0x1eaf5eedULL);
+        random.discard(kDrawsPerCell * static_cast<std::uint64_t>(k) *
+                       static_cast<std::uint64_t>(cells.x) * static_cast<std::uint64_t>(cells.y));
         for (int j = 0; j < cells.y; ++j) {
-            throw_if_cancelled(settings.cancel);
+            if (is_cancelled(settings.cancel)) return;
             for (int i = 0; i < cells.x; ++i) {
                 // Draw every number whether or not the leaf lands, so one leaf's fate never
                 // shifts the next one's randomness.
-                glm::vec3 jitter(random.uniform(), random.uniform(), random.uniform());
-                double yaw = random.uniform() * 2.0 * std::numbers::pi;
-                double tilt = (random.uniform() - 0.5) * std::numbers::pi * 0.6;  // +-54 degrees
-                double roll = (random.uniform() - 0.5) * std::numbers::pi * 0.5;
-                float scale = static_cast<float>(0.8 + 0.4 * random.uniform());
+                std::array<double, kDrawsPerCell> u;
+                for (double& x : u) x = random.uniform();
+                // z, y, x: the order GCC drew them in when they were three uniform() calls
+                // as the vector's arguments (kept: the same seed keeps its leaves).
+                glm::vec3 jitter(u[2], u[1], u[0]);
+                double yaw = u[3] * 2.0 * std::numbers::pi;
+                double tilt = (u[4] - 0.5) * std::numbers::pi * 0.6;  // +-54 degrees
+                double roll = (u[5] - 0.5) * std::numbers::pi * 0.5;
+                float scale = static_cast<float>(0.8 + 0.4 * u[6]);
                 glm::vec3 p = box.min + (glm::vec3(i, j, k) + jitter) * spacing;
                 if (!(inside(p) < 0.0f)) continue;
                 glm::vec3 along(std::cos(yaw) * std::cos(tilt), std::sin(tilt),
@@ -115,10 +131,15 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
                 glm::vec3 side = glm::normalize(glm::cross(glm::vec3(0, 1, 0), along));
                 glm::vec3 normal = glm::cross(along, side);
                 glm::vec3 across = side * float(std::cos(roll)) + normal * float(std::sin(roll));
-                add_leaf(mesh, outline, p, along, across,
+                add_leaf(slice, outline, p, along, across,
                          static_cast<float>(settings.size) * scale);
             }
         }
+    });
+    throw_if_cancelled(settings.cancel);
+    std::vector<const Mesh*> parts;
+    for (const Mesh& slice : slices) parts.push_back(&slice);
+    Mesh mesh = merge_meshes(parts);
     return mesh;
 }
 

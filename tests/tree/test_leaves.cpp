@@ -1,6 +1,7 @@
 // Leaves: placed only inside the crown, as many as the density asks, the same for the same
 // seed, each leaf written once (one-sided: the material shows the back).
 #include <gtest/gtest.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -9,6 +10,7 @@
 #include <numbers>
 #include <set>
 
+#include "core/random.h"
 #include "marching/mesh_checks.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
@@ -100,6 +102,26 @@ TEST(Leaves, SameSeedSameLeavesOtherSeedOtherLeaves) {
     Mesh c = scatter_leaves(ball, kBox, s);
     EXPECT_EQ(a.positions, b.positions);
     EXPECT_NE(a.positions, c.positions);
+}
+
+// The grid's slices are scattered on a core each, each slice skipping the random numbers
+// the slices before it draw: one thread or many, the same leaves in the same order.
+TEST(Leaves, TheSameLeavesOnOneCoreAsOnMany) {
+    Random drawn(7), skipped(7);
+    for (int i = 0; i < 1000; ++i) drawn.next();
+    skipped.discard(1000);
+    EXPECT_EQ(drawn.next(), skipped.next());
+
+    LeafSettings s;
+    s.density = 20;
+    s.shape = LeafShape::Oak;
+    const Mesh many = scatter_leaves(ball, kBox, s);
+    Mesh one;
+    tbb::task_arena single(1);
+    single.execute([&] { one = scatter_leaves(ball, kBox, s); });
+    ASSERT_GT(many.triangles.size(), 100u);
+    EXPECT_EQ(one.positions, many.positions);
+    EXPECT_EQ(one.triangles, many.triangles);
 }
 
 TEST(Leaves, EveryShapeAndTheCapHold) {
