@@ -139,8 +139,7 @@ Mesh scatter_leaves(const std::function<float(const glm::vec3&)>& inside, const 
     throw_if_cancelled(settings.cancel);
     std::vector<const Mesh*> parts;
     for (const Mesh& slice : slices) parts.push_back(&slice);
-    Mesh mesh = merge_meshes(parts);
-    return mesh;
+    return merge_meshes(parts);
 }
 
 }  // namespace sylva
