@@ -59,10 +59,6 @@ std::optional<ConeField> trunk_field(std::span<const Segment> segments, float ce
 // needs to skip empty blocks: |f(centre)| above a block's half-diagonal proves it empty.
 constexpr float kFieldMarginInCells = 3.0f;
 
-// The budget a template's trunk_resolution is made for: a smaller budget meshes the trunk
-// coarser (trunk_resolution_for_budget).
-constexpr double kDetailBudget = 800.0;
-
 float cell_size(const Box& box, int resolution) {
     glm::vec3 extent = box.max - box.min;
     return std::max({extent.x, extent.y, extent.z}) / static_cast<float>(resolution);
@@ -218,37 +214,45 @@ void check_extent(const Skeleton& skeleton) {
     }
 }
 
-}  // namespace
-
-int crown_resolution_for_budget(int resolution, std::size_t budget) {
-    if (budget == 0) return resolution;
-    // The crown's share (half) of the budget needs about sqrt(share) vertices along the
-    // crown; 2.4 times that many cells keeps fidelity (measured: within 4% of the template's
-    // resolution at 800 on every template, bench/lowpoly_bench) at a fraction of the cost.
-    const double cells = 2.4 * std::sqrt(static_cast<double>(budget) / 2.0);
+// `cells` rounded up, at least 24 (a coarser grid breaks thin parts apart) and at most
+// `resolution`: what a budget meshes at instead of the template's resolution.
+int capped(int resolution, double cells) {
     return std::min(resolution, std::max(24, static_cast<int>(std::ceil(cells))));
 }
 
+// The crown's cells for `budget` triangles: its share (half) needs about sqrt(share)
+// vertices along the crown, and 2.4 times that many cells keeps fidelity.
+double crown_cells(std::size_t budget) {
+    return 2.4 * std::sqrt(static_cast<double>(budget) / 2.0);
+}
+
+}  // namespace
+
+int crown_resolution_for_budget(int resolution, std::size_t budget) {
+    // Measured: within 4% of the template's resolution at 800 on every template
+    // (bench/lowpoly_bench) at a fraction of the cost.
+    return budget == 0 ? resolution : capped(resolution, crown_cells(budget));
+}
+
 int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget) {
-    if (budget == 0) return params.trunk_resolution;
     int resolution = params.trunk_resolution;
+    if (budget == 0) return resolution;
     // Below 800 triangles the template's resolution draws detail no budget keeps: the cells
     // grow with the budget's square root (twice as wide at 200). Measured at 200 on every
     // template against the template's resolution (sylva-bench-lowpoly --budget 200): the
     // Hausdorff distance at most 15% of the height and at most 0.7 points higher (ternary
     // 14.5 -> 12.4%), the mean error at most 0.31 points higher (the palm's smooth trunk).
-    if (budget < kDetailBudget) {
-        const double scale = std::sqrt(static_cast<double>(budget) / kDetailBudget);
-        resolution = std::max(24, static_cast<int>(std::ceil(scale * resolution)));
-    }
+    if (budget < kTrunkDetailBudget)
+        resolution = capped(resolution, std::sqrt(static_cast<double>(budget) /
+                                                  static_cast<double>(kTrunkDetailBudget)) *
+                                            resolution);
     const bool hidden =
         params.drop_hidden != 0 && params.crown_mesh != 0 && params.sphere_diameter > 0.0;
-    if (!hidden) return std::min(params.trunk_resolution, resolution);
     // Measured at 800 against the template's resolution: the mean error both ways within
     // 3% on the elm, maple, spruce and willow, and 2-6% smaller on the fir (README "Meshed
     // for the budget").
-    const double cells = 1.25 * 2.4 * std::sqrt(static_cast<double>(budget) / 2.0);
-    return std::min(resolution, std::max(24, static_cast<int>(std::ceil(cells))));
+    if (hidden) resolution = capped(resolution, 1.25 * crown_cells(budget));
+    return resolution;
 }
 
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params) {

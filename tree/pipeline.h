@@ -70,6 +70,8 @@ int crown_resolution_for_budget(int resolution, std::size_t budget);
 // 800, 117 at 3000), since such a trunk ends near its floor of a quarter of the budget
 // (elm, fir, maple, spruce, willow).
 int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget);
+// The budget a template's trunk_resolution is made for (trunk_resolution_for_budget).
+inline constexpr std::size_t kTrunkDetailBudget = 800;
 
 // Runs the whole pipeline on a template (its params as the caller set them).
 // Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.

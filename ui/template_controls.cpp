@@ -473,8 +473,9 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
         set = params.trunk_resolution;
         TreeParams shown = params;  // every branch meshed
         shown.drop_hidden = 0;
-        why += used < trunk_resolution_for_budget(shown, budget) ? ", since drop_hidden is on"
-                                                                 : ", below 800 triangles";
+        why += used < trunk_resolution_for_budget(shown, budget)
+                   ? ", since drop_hidden is on"
+                   : ", below " + std::to_string(kTrunkDetailBudget) + " triangles";
     } else if (key == "crown_resolution") {
         used = crown_resolution_for_budget(params.crown_resolution, budget);
         set = params.crown_resolution;
