@@ -22,6 +22,9 @@
 // so elsewhere the passes run down to 4096 triangles instead of 6400 (the heap's share at
 // 800): another order for some collapses (every template whose floor is small: not the
 // bush, fir, maple, spruce and ternary).
+// Changed on purpose by handle cutting's loops (issue 11): a round offers every loop of a
+// cell instead of the shortest, so fewer rounds cut the same handles (bush, fir, spruce,
+// ternary: other handles cut).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -72,15 +75,15 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"birch.obj", 0xb9cb9dac6102f097ull},
         {"birch.glb", 0x2c8064fbbdd4930eull},
         {"birch.ply", 0xb759e76f5f43450dull},
-        {"bush.obj", 0x330f94aa57935c43ull},
-        {"bush.glb", 0xc96902865def0377ull},
-        {"bush.ply", 0x1356435c4a1884bull},
+        {"bush.obj", 0xf05a06880ab6b350ull},
+        {"bush.glb", 0xb70d597aabf41cb9ull},
+        {"bush.ply", 0xfd5cd530f0771eb3ull},
         {"cypress.obj", 0x25111b3ec1c14b82ull},
         {"cypress.glb", 0xc3315b2bc57effcfull},
         {"cypress.ply", 0xa83f9a3286b58ff3ull},
-        {"fir.obj", 0xae9728cec4cfcc96ull},
-        {"fir.glb", 0x364b0c5de71d5cdfull},
-        {"fir.ply", 0x2c3f5bc691a095fcull},
+        {"fir.obj", 0xd4bcd00e19c4591eull},
+        {"fir.glb", 0xe1c6ec1b4b689954ull},
+        {"fir.ply", 0x205d9ccec7e36e34ull},
         {"honda.obj", 0xeb891025d9cb9531ull},
         {"honda.glb", 0x2e48d5810bd2167dull},
         {"honda.ply", 0xb900c72839cfd027ull},
@@ -90,15 +93,15 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"pine.obj", 0xa8344609d682c5e6ull},
         {"pine.glb", 0x81eebe77fbc4d4a5ull},
         {"pine.ply", 0x7dfb7eb9cd1bc3bbull},
-        {"spruce.obj", 0xb0c2092974ba82a3ull},
-        {"spruce.glb", 0xa9c252e4e727c377ull},
-        {"spruce.ply", 0x7cdf03b2934a1d1bull},
+        {"spruce.obj", 0x8edcb9142cefc22eull},
+        {"spruce.glb", 0xf62669a028c2590bull},
+        {"spruce.ply", 0xd356cb43773d852aull},
         {"seed_spruce.obj", 0x79d835182a54673eull},
         {"seed_spruce.glb", 0x820f28a207e8cb63ull},
         {"seed_spruce.ply", 0x2cf1b086ca3199feull},
-        {"ternary.obj", 0x70184b5c04b32704ull},
-        {"ternary.glb", 0xf2e7cef64a6dfe05ull},
-        {"ternary.ply", 0xfb5f670f11240c4cull},
+        {"ternary.obj", 0x2f9b24107ce58b7dull},
+        {"ternary.glb", 0x5a513630a17842c3ull},
+        {"ternary.ply", 0xa7b4a06207717b85ull},
         {"willow.obj", 0x392398381e76ac0full},
         {"willow.glb", 0x7797bfae1b9613e1ull},
         {"willow.ply", 0x74a1e8b5ee10b774ull},
