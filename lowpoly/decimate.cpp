@@ -59,8 +59,9 @@ std::size_t inward_pieces(const Mesh& mesh) {
 }
 
 std::vector<std::size_t> inward_pieces(std::span<const Mesh* const> parts) {
-    std::vector<std::size_t> inward;
-    for (const Mesh* m : parts) inward.push_back(inward_pieces(*m));
+    std::vector<std::size_t> inward(parts.size(), 0);
+    tbb::parallel_for(std::size_t{0}, parts.size(),
+                      [&](std::size_t k) { inward[k] = inward_pieces(*parts[k]); });
     return inward;
 }
 

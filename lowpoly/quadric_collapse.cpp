@@ -1,5 +1,8 @@
 #include "lowpoly/quadric_collapse.h"
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_reduce.h>
+
 #include <algorithm>
 #include <array>
 #include <cfloat>
@@ -35,6 +38,24 @@ double CollapseMesh::Quadric::operator()(const glm::dvec3& p) const {
     return a * x * x + 2.0 * b * x * y + 2.0 * c * x * z + 2.0 * d * x + e * y * y +
            2.0 * f * y * z + 2.0 * g * y + h * z * z + 2.0 * i * z + j;
 }
+
+namespace {
+
+// The smallest i below n for which ok(i) is false (n when there is none), with ok called
+// once for every i, on several cores.
+template <typename Ok>
+std::size_t first_failing(std::size_t n, const Ok& ok) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 4096), n,
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t first) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i)
+                if (!ok(i)) first = std::min(first, i);
+            return first;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+}
+
+}  // namespace
 
 bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_part) {
     std::size_t nv = 0, nf = 0;
@@ -84,33 +105,38 @@ bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_pa
             leaving_to[i] = to(h);
         }
     }
+    // The opposites and the fans are found on every core; a failure reports the part of the
+    // first failing halfedge or vertex, as one pass in order would.
     opposite_.assign(halfedges, kNone);
-    for (std::uint32_t h = 0; h < halfedges; ++h) {
-        const std::uint32_t a = corner_[h], b = to(h);
+    const std::size_t bad_halfedge = first_failing(halfedges, [&](std::size_t h) {
+        const std::uint32_t a = corner_[h], b = to(static_cast<std::uint32_t>(h));
         std::uint32_t found = kNone;
         for (std::uint32_t i = first[b]; i < first[b + 1]; ++i) {
             if (leaving_to[i] != a) continue;
-            if (found != kNone) return fail(face_part[h / 3]);  // non-manifold or misoriented
+            if (found != kNone) return false;  // non-manifold or misoriented
             found = leaving[i];
         }
-        if (found == kNone) return fail(face_part[h / 3]);  // boundary or misoriented
         opposite_[h] = found;
-    }
-    for (std::uint32_t h = 0; h < halfedges; ++h)
-        if (opposite_[opposite_[h]] != h) return fail(face_part[h / 3]);
+        return found != kNone;  // else a boundary, or misoriented
+    });
+    if (bad_halfedge < halfedges) return fail(face_part[bad_halfedge / 3]);
+    const std::size_t unpaired =
+        first_failing(halfedges, [&](std::size_t h) { return opposite_[opposite_[h]] == h; });
+    if (unpaired < halfedges) return fail(face_part[unpaired / 3]);
     // Each vertex's faces form one fan: turning around it visits all its halfedges.
     outgoing_.assign(nv, kNone);
-    for (std::uint32_t v = 0; v < nv; ++v) {
-        if (first[v] == first[v + 1]) continue;
+    const std::size_t bad_vertex = first_failing(nv, [&](std::size_t v) {
+        if (first[v] == first[v + 1]) return true;
         const std::uint32_t start = leaving[first[v]];
         std::uint32_t h = start, count = 0;
         do {
             h = turn(h);
             if (++count > first[v + 1] - first[v]) break;
         } while (h != start);
-        if (count != first[v + 1] - first[v]) return fail(part_[v]);
         outgoing_[v] = start;
-    }
+        return count == first[v + 1] - first[v];
+    });
+    if (bad_vertex < nv) return fail(part_[bad_vertex]);
     face_alive_.assign(nf, 1);
     live_faces_ = nf;
 
