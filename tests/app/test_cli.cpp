@@ -124,7 +124,8 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
     // A reduction's cost shows once the meshes are made: refused before it starts.
-    r = run("export -t ternary --set generations=8 --max-seconds 1 -o " + path("t.glb"));
+    r = run("export -t ternary --set generations=8 --set drop_hidden=0 --max-seconds 1 -o " +
+            path("t.glb"));
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("handles to reduce"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("t.glb")));

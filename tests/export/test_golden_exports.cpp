@@ -25,6 +25,8 @@
 // Changed on purpose by handle cutting's loops (issue 11): a round offers every loop of a
 // cell instead of the shortest, so fewer rounds cut the same handles (bush, fir, spruce,
 // ternary: other handles cut).
+// Changed on purpose by drop_hidden in four more templates (issue 11): the oak's, cypress's,
+// windswept's and ternary's game meshes leave out the branches their crowns hide.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -66,9 +68,9 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0xbd87741e09644af8ull},
-        {"oak.glb", 0xf89c6044fb640f86ull},
-        {"oak.ply", 0xc68625a8110ea127ull},
+        {"oak.obj", 0x6a29e4e07be209d1ull},
+        {"oak.glb", 0x6b008792b65721c5ull},
+        {"oak.ply", 0xe4f7a964749dc6a8ull},
         {"baobab.obj", 0x9ecf94a0bad13292ull},
         {"baobab.glb", 0xa82cf7a15de192bfull},
         {"baobab.ply", 0xa15cdaea42d345f1ull},
@@ -78,9 +80,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"bush.obj", 0xf05a06880ab6b350ull},
         {"bush.glb", 0xb70d597aabf41cb9ull},
         {"bush.ply", 0xfd5cd530f0771eb3ull},
-        {"cypress.obj", 0x25111b3ec1c14b82ull},
-        {"cypress.glb", 0xc3315b2bc57effcfull},
-        {"cypress.ply", 0xa83f9a3286b58ff3ull},
+        {"cypress.obj", 0x77661790c7b07de2ull},
+        {"cypress.glb", 0x27904d2a86381477ull},
+        {"cypress.ply", 0x64fd83280a09a0eeull},
         {"fir.obj", 0xd4bcd00e19c4591eull},
         {"fir.glb", 0xe1c6ec1b4b689954ull},
         {"fir.ply", 0x205d9ccec7e36e34ull},
@@ -99,9 +101,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"seed_spruce.obj", 0x79d835182a54673eull},
         {"seed_spruce.glb", 0x820f28a207e8cb63ull},
         {"seed_spruce.ply", 0x2cf1b086ca3199feull},
-        {"ternary.obj", 0x2f9b24107ce58b7dull},
-        {"ternary.glb", 0x5a513630a17842c3ull},
-        {"ternary.ply", 0xa7b4a06207717b85ull},
+        {"ternary.obj", 0x19ff30110bfaf559ull},
+        {"ternary.glb", 0x4541b307f9d12674ull},
+        {"ternary.ply", 0x3031724864a323efull},
         {"willow.obj", 0x392398381e76ac0full},
         {"willow.glb", 0x7797bfae1b9613e1ull},
         {"willow.ply", 0x74a1e8b5ee10b774ull},
@@ -114,9 +116,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"hedge.obj", 0x1c78adad3f5f971eull},
         {"hedge.glb", 0x41a42794fab1a4a7ull},
         {"hedge.ply", 0x506821b776aeb1c1ull},
-        {"windswept.obj", 0x106ecb22e12591f2ull},
-        {"windswept.glb", 0xd403f247cedd7a56ull},
-        {"windswept.ply", 0xfe296ed0d2025cfaull},
+        {"windswept.obj", 0x5fd2cfaeffeed49ull},
+        {"windswept.glb", 0x2dbe4f3950a2adf0ull},
+        {"windswept.ply", 0x4317d212896ef4d5ull},
         // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
         {"palm_lod.glb", 0x268dd0b978d62975ull},
         {"palm_lod.obj", 0x4650f2a1b2fec0b8ull},

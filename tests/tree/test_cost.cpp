@@ -79,6 +79,7 @@ TEST(Cost, DoublingGrammarIsEstimatedAndRefusedBeforeDeriving) {
 // Resolution 2000 needed 5.65 GB and 103 s; 1500 froze the studio for 68 s.
 TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
     TreeTemplate t = default_template();
+    t.params.drop_hidden = 0;  // a trunk meshed at its own resolution, not for the budget
     for (int resolution : {1500, 2000}) {
         t.params.trunk_resolution = resolution;
         const Cost cost = estimate_cost(t, 800);
@@ -101,8 +102,9 @@ TEST(Cost, EveryBuiltInTemplateIsWithinTheDefaultLimits) {
 
 // The ternary tree at generations 8 crosses its branches 1845 times: its reduction took 44
 // s (1.3 s since the flat-array reducer) while the estimate before any work said much less.
-// Once the meshes are made, their handles tell: over a 1-second limit there, well within it
-// at the template's own 6 generations.
+// Once the meshes are made, their handles tell: over a 1-second limit there with every
+// branch meshed, well within it at the template's own 6 generations, and within it too when
+// the branches the crown hides are left out (drop_hidden, the template's own setting).
 TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     TreeTemplate t = load_template("ternary");
     MeshOptions options;
@@ -116,11 +118,18 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     EXPECT_EQ(estimate_reduction_cost(usual.trunk, usual.crown, 0).seconds, 0.0);
 
     t.params.generations = 8;
+    ASSERT_NE(t.params.drop_hidden, 0);
+    const Tree hidden = generate_tree(t, options);
+    const Cost hidden_cost = estimate_reduction_cost(hidden.trunk, hidden.crown, 800);
+    EXPECT_TRUE(within(hidden_cost, one_second)) << cost_text(hidden_cost);
+
+    t.params.drop_hidden = 0;
     // What the grammar alone can tell.
     EXPECT_TRUE(within(estimate_cost(t, 800), one_second)) << cost_text(estimate_cost(t, 800));
     const Tree crossed = generate_tree(t, options);
     const Cost cost = estimate_reduction_cost(crossed.trunk, crossed.crown, 800);
     EXPECT_GT(cost.handles, 10 * usual_cost.handles);
+    EXPECT_GT(cost.handles, 2 * hidden_cost.handles);
     EXPECT_FALSE(within(cost, one_second)) << cost_text(cost);
     EXPECT_NE(cost_text(cost).find("handles"), std::string::npos);
 }

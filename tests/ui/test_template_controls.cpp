@@ -226,8 +226,8 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
 }
 
 // A slider above what the budget meshes at says so in its tooltip: the willow (drop_hidden)
-// meshes its trunk and crown for the budget; the oak's trunk keeps its resolution at 800 (not
-// below) and its crown (40) is below the budget's 48.
+// meshes its trunk and crown for the budget; the hedge's trunk keeps its resolution at 800
+// (not below) and its crown (48) is not above the budget's 48.
 TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
     const TreeTemplate willow = load_template("willow");
     const std::string willow_trunk = budget_resolution_note(willow.params, "trunk_resolution");
@@ -235,15 +235,15 @@ TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
     EXPECT_NE(willow_trunk.find("drop_hidden"), std::string::npos);
     EXPECT_NE(budget_resolution_note(willow.params, "crown_resolution").find("meshed at 48"),
               std::string::npos);
-    const TreeTemplate oak = load_template("oak");
-    EXPECT_EQ(budget_resolution_note(oak.params, "trunk_resolution"), "");
-    EXPECT_EQ(budget_resolution_note(oak.params, "crown_resolution"), "");
+    const TreeTemplate hedge = load_template("hedge");
+    EXPECT_EQ(budget_resolution_note(hedge.params, "trunk_resolution"), "");
+    EXPECT_EQ(budget_resolution_note(hedge.params, "crown_resolution"), "");
     EXPECT_EQ(budget_resolution_note(willow.params, "leaf_size"), "");
-    TreeParams small = oak.params;  // below 800 every trunk is meshed coarser
+    TreeParams small = hedge.params;  // below 800 every trunk is meshed coarser
     small.triangle_budget = 200;
-    const std::string oak_trunk = budget_resolution_note(small, "trunk_resolution");
-    EXPECT_NE(oak_trunk.find("meshed at 48 for the budget of 200"), std::string::npos);
-    EXPECT_NE(oak_trunk.find("below 800"), std::string::npos);
+    const std::string hedge_trunk = budget_resolution_note(small, "trunk_resolution");
+    EXPECT_NE(hedge_trunk.find("meshed at 40 for the budget of 200"), std::string::npos);
+    EXPECT_NE(hedge_trunk.find("below 800"), std::string::npos);
     TreeParams full = willow.params;
     full.triangle_budget = 0;  // no game mesh: the sliders' values are used
     EXPECT_EQ(budget_resolution_note(full, "trunk_resolution"), "");
