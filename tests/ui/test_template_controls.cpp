@@ -227,17 +227,18 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
 
 // A slider above what the budget meshes at says so in its tooltip: the willow (drop_hidden)
 // meshes its trunk and crown for the budget; the hedge's trunk keeps its resolution at 800
-// (not below) and its crown (48) is not above the budget's 48.
+// (not below) and its crown (48) is meshed at the budget's 40.
 TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
     const TreeTemplate willow = load_template("willow");
     const std::string willow_trunk = budget_resolution_note(willow.params, "trunk_resolution");
     EXPECT_NE(willow_trunk.find("meshed at 60"), std::string::npos);
     EXPECT_NE(willow_trunk.find("drop_hidden"), std::string::npos);
-    EXPECT_NE(budget_resolution_note(willow.params, "crown_resolution").find("meshed at 48"),
+    EXPECT_NE(budget_resolution_note(willow.params, "crown_resolution").find("meshed at 40"),
               std::string::npos);
     const TreeTemplate hedge = load_template("hedge");
     EXPECT_EQ(budget_resolution_note(hedge.params, "trunk_resolution"), "");
-    EXPECT_EQ(budget_resolution_note(hedge.params, "crown_resolution"), "");
+    EXPECT_NE(budget_resolution_note(hedge.params, "crown_resolution").find("meshed at 40"),
+              std::string::npos);
     EXPECT_EQ(budget_resolution_note(willow.params, "leaf_size"), "");
     TreeParams small = hedge.params;  // below 800 every trunk is meshed coarser
     small.triangle_budget = 200;
