@@ -94,9 +94,21 @@ std::uint32_t TriangleBvh::build(std::uint32_t begin, std::uint32_t end) {
 
 TriangleBvh::Hit TriangleBvh::closest(const glm::vec3& p) const {
     Hit best;
-    best.distance = std::numeric_limits<float>::infinity();
-    if (nodes_.empty()) return best;
+    const float d2 = search(p, -1.0f, best.point, best.triangle);
+    best.distance = std::sqrt(d2);
+    return best;
+}
+
+float TriangleBvh::distance_squared_beyond(const glm::vec3& p, float bound2) const {
+    glm::vec3 point;
+    std::uint32_t triangle = 0;
+    return search(p, bound2, point, triangle);
+}
+
+float TriangleBvh::search(const glm::vec3& p, float enough_d2, glm::vec3& point,
+                          std::uint32_t& triangle) const {
     float best_d2 = std::numeric_limits<float>::infinity();
+    if (nodes_.empty()) return best_d2;
     std::uint32_t stack[64];
     int top = 0;
     stack[top++] = 0;
@@ -110,10 +122,11 @@ TriangleBvh::Hit TriangleBvh::closest(const glm::vec3& p) const {
                 const float d2 = glm::dot(q - p, q - p);
                 if (d2 < best_d2) {
                     best_d2 = d2;
-                    best.point = q;
-                    best.triangle = t.index;
+                    point = q;
+                    triangle = t.index;
                 }
             }
+            if (best_d2 <= enough_d2) return best_d2;
             continue;
         }
         // Visit the nearer child first: its hits prune the other.
@@ -129,8 +142,7 @@ TriangleBvh::Hit TriangleBvh::closest(const glm::vec3& p) const {
             if (dr < best_d2) stack[top++] = right;
         }
     }
-    best.distance = std::sqrt(best_d2);
-    return best;
+    return best_d2;
 }
 
 }  // namespace sylva

@@ -25,6 +25,12 @@ class TriangleBvh {
     Hit closest(const glm::vec3& p) const;
     float distance(const glm::vec3& p) const { return closest(p).distance; }
 
+    // The squared distance from `p` to the mesh when it exceeds `bound2` (a squared
+    // distance), else any value at most `bound2`: the search stops at the first triangle
+    // that close. A Hausdorff distance (the largest of many nearest distances) needs only
+    // this, and most points have a triangle nearer than the largest so far.
+    float distance_squared_beyond(const glm::vec3& p, float bound2) const;
+
     std::size_t size() const { return triangles_.size(); }
 
   private:
@@ -38,6 +44,10 @@ class TriangleBvh {
         std::uint32_t count;  // leaf: triangle count; inner: 0 (the left child follows)
     };
     std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+    // The closest triangle's squared distance, point and index, the search stopping at the
+    // first leaf that brings it within `enough_d2` (negative: never).
+    float search(const glm::vec3& p, float enough_d2, glm::vec3& point,
+                 std::uint32_t& triangle) const;
 
     std::vector<Triangle> triangles_;
     std::vector<Node> nodes_;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "lowpoly/handle_cutting.h"
@@ -98,11 +99,12 @@ class SampledHausdorff {
 
     float operator()(const Mesh& mesh) const {
         const TriangleBvh near_mesh(mesh);
-        float far = 0.0f;
+        float far2 = 0.0f;  // squared; a sample nearer than the farthest so far is not searched
         for (const glm::vec3& p : sample_surface(mesh, kSamples))
-            far = std::max(far, near_source_.distance(p));
-        for (const glm::vec3& p : source_samples_) far = std::max(far, near_mesh.distance(p));
-        return far;
+            far2 = std::max(far2, near_source_.distance_squared_beyond(p, far2));
+        for (const glm::vec3& p : source_samples_)
+            far2 = std::max(far2, near_mesh.distance_squared_beyond(p, far2));
+        return std::sqrt(far2);
     }
 
   private:
@@ -131,9 +133,20 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
         budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
     if (hull_count == 0 || (automatic && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
-    const Mesh hulls = crown_hulls(hull_source, hull_count);
-    ReducedTree out = reduce_solids(trunk, hulls, budget, settings);
-    const Mesh more_hulls = crown_hulls(hull_source, hull_count * 3 / 2);
+    // Half as many hulls again and the source's samples are made on one core while the
+    // other makes the hulls and starts their reduction.
+    Mesh hulls, more_hulls;
+    std::optional<SampledHausdorff> from_source;
+    ReducedTree out;
+    tbb::parallel_invoke(
+        [&] {
+            hulls = crown_hulls(hull_source, hull_count);
+            out = reduce_solids(trunk, hulls, budget, settings);
+        },
+        [&] {
+            more_hulls = crown_hulls(hull_source, hull_count * 3 / 2);
+            from_source.emplace(hull_source);
+        });
     if (out.crown.triangles.empty() || more_hulls.triangles.size() <= hulls.triangles.size())
         return out;
     DecimateSettings alone = settings;
@@ -141,10 +154,9 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     alone.max_triangles = out.crown.triangles.size();
     DecimateResult more = decimate(more_hulls, alone);
     if (!more.within_budget) return out;
-    const SampledHausdorff from_source(hull_source);
     float more_far = 0.0f, out_far = 0.0f;  // measured on a core each
-    tbb::parallel_invoke([&] { more_far = from_source(more.parts[0]); },
-                         [&] { out_far = from_source(out.crown); });
+    tbb::parallel_invoke([&] { more_far = (*from_source)(more.parts[0]); },
+                         [&] { out_far = (*from_source)(out.crown); });
     if (more_far < out_far) {
         out.crown = std::move(more.parts[0]);
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
