@@ -27,6 +27,9 @@ struct LeafSettings {
     std::uint64_t seed = 1;
     std::size_t max_leaves = 200'000;  // the grid is coarsened to stay below this
     CancelFlag cancel = nullptr;       // polled per grid row; throws Cancelled
+    // The `inside` function is 1-Lipschitz (a distance bound, as the crown's root smooth
+    // min is): space far outside is skipped, with the same leaves as without.
+    bool inside_is_distance_bound = false;
 };
 
 // The outline of a leaf shape in its own plane: x along the leaf from its base (0) to its

@@ -354,6 +354,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
         leaves.seed = p.seed;
         leaves.cancel = cancel;
         const SphereField& crown = *fields.crown;
+        leaves.inside_is_distance_bound = crown.is_distance_bound();
         // Behind a meshed crown only the leaves near its surface are ever seen: they fill a
         // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
         // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).

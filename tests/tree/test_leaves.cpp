@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -12,6 +13,7 @@
 
 #include "core/random.h"
 #include "marching/mesh_checks.h"
+#include "tree/growth.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -104,8 +106,8 @@ TEST(Leaves, SameSeedSameLeavesOtherSeedOtherLeaves) {
     EXPECT_NE(a.positions, c.positions);
 }
 
-// The grid's slices are scattered on a core each, each slice skipping the random numbers
-// the slices before it draw: one thread or many, the same leaves in the same order.
+// The grid's slabs are scattered on a core each, each cell skipping the random numbers the
+// cells before it draw: one thread or many, the same leaves in the same order.
 TEST(Leaves, TheSameLeavesOnOneCoreAsOnMany) {
     Random drawn(7), skipped(7);
     for (int i = 0; i < 1000; ++i) drawn.next();
@@ -122,6 +124,43 @@ TEST(Leaves, TheSameLeavesOnOneCoreAsOnMany) {
     ASSERT_GT(many.triangles.size(), 100u);
     EXPECT_EQ(one.positions, many.positions);
     EXPECT_EQ(one.triangles, many.triangles);
+}
+
+// A crown's field is a distance bound, so the scatter skips blocks of the grid whose centre
+// lies farther outside than the block reaches: the same leaves, in the same order, from a
+// third to a half fewer samples. On real crowns, both as the pipeline wears them (a shell one leaf
+// deep under the crown's surface) and filled (the crown not meshed).
+TEST(Leaves, SkippingSpaceOutsideTheCrownKeepsEveryLeaf) {
+    for (const char* name : {"oak", "spruce", "willow", "ternary"}) {
+        const TreeTemplate t = load_template(name);
+        const TreeFields fields = tree_fields(grow(t), t.params);
+        ASSERT_TRUE(fields.crown) << name;
+        const SphereField& crown = *fields.crown;
+        ASSERT_TRUE(crown.is_distance_bound()) << name;
+        const float shell = static_cast<float>(t.params.leaf_size);
+        const auto in_shell = [&crown, shell](const glm::vec3& q) {
+            return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
+        };
+        const auto in_crown = [&crown](const glm::vec3& q) { return crown(q); };
+        for (const bool worn : {true, false}) {
+            std::atomic<std::size_t> samples{0};
+            const auto counted = [&](const glm::vec3& q) {
+                ++samples;
+                return worn ? in_shell(q) : in_crown(q);
+            };
+            LeafSettings s;
+            s.density = t.params.leaf_density;
+            s.size = t.params.leaf_size;
+            const Mesh every = scatter_leaves(counted, fields.crown_box, s);
+            const std::size_t all_samples = samples.exchange(0);
+            s.inside_is_distance_bound = true;
+            const Mesh skipped = scatter_leaves(counted, fields.crown_box, s);
+            ASSERT_GT(every.triangles.size(), 100u) << name;
+            EXPECT_EQ(skipped.positions, every.positions) << name << (worn ? " shell" : "");
+            EXPECT_EQ(skipped.triangles, every.triangles) << name << (worn ? " shell" : "");
+            if (worn) EXPECT_LT(3 * samples.load(), 2 * all_samples) << name;
+        }
+    }
 }
 
 TEST(Leaves, EveryShapeAndTheCapHold) {
