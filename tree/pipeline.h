@@ -58,7 +58,7 @@ struct MeshOptions {
 
 // The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown
 // triangles: the template's, or less when the budget cannot show more (24 at 200, 40 at
-// 800, 78 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
+// 800, 63 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
 // coarse grid already draws as well as a small budget can; the trunk keeps more of its
 // resolution, since thin branches need it (trunk_resolution_for_budget).
 int crown_resolution_for_budget(int resolution, std::size_t budget);
