@@ -158,7 +158,9 @@ TEST(Leaves, SkippingSpaceOutsideTheCrownKeepsEveryLeaf) {
             ASSERT_GT(every.triangles.size(), 100u) << name;
             EXPECT_EQ(skipped.positions, every.positions) << name << (worn ? " shell" : "");
             EXPECT_EQ(skipped.triangles, every.triangles) << name << (worn ? " shell" : "");
-            if (worn) EXPECT_LT(3 * samples.load(), 2 * all_samples) << name;
+            if (worn) {
+                EXPECT_LT(3 * samples.load(), 2 * all_samples) << name;
+            }
         }
     }
 }
