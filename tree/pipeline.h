@@ -66,8 +66,9 @@ int crown_resolution_for_budget(int resolution, std::size_t budget);
 // The trunk's resolution for a game mesh of `budget` triangles: the template's from 800 up
 // (0: no budget, the template's too); below 800 the template's times sqrt(budget / 800)
 // (half at 200, at least 24 cells). When the crown hides most of the trunk (drop_hidden,
-// with a crown), at most one the budget can show, 1.5 times the crown's (30 at 200, 60 at
-// 800, 117 at 3000), since such a trunk ends near its floor of a quarter of the budget
+// with a crown), at most one the budget can show, 3 sqrt(budget / 2) cells (1.5 times the
+// crown's up to 800: 30 at 200, 60 at 800; 117 at 3000, where the crown has 63), since such
+// a trunk ends near its floor of a quarter of the budget
 // (elm, fir, maple, spruce, willow, oak, cypress, windswept, ternary).
 int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget);
 // The budget a template's trunk_resolution is made for (trunk_resolution_for_budget).
