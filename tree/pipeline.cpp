@@ -231,7 +231,7 @@ double share_cells(std::size_t budget) {
 // such budgets the trunk sets the error: measured at 3000 (sylva-bench-lowpoly --budget 3000
 // --fidelity-only) against 78 cells, every template's mean error within -5% (spruce) to +3%
 // (seed_spruce) but the cypress's, +10% (0.068 -> 0.075%, the smallest of all), with 12-26%
-// fewer raw triangles on the seven templates whose crowns are finer than 63 cells.
+// fewer raw triangles on the seven templates whose crowns are 70 cells or finer.
 double crown_cells(std::size_t budget) {
     if (budget <= kTrunkDetailBudget) return share_cells(budget);
     return share_cells(kTrunkDetailBudget) *

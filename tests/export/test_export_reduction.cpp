@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
@@ -138,6 +139,30 @@ TEST(TreeReduction, TheLossSeesWhatTheGameMeshDropped) {
     const Fidelity lost = measure_tree_loss(tree.trunk, none, reference, kept.height);
     EXPECT_GT(lost.mean_percent, 1.0);
     EXPECT_LT(measure_tree_loss(tree.trunk, tree.crown, reference, kept.height).mean_percent, 1e-4);
+}
+
+// The crown is meshed as fine as its budget can show (README "Meshed for the budget"): 24
+// cells at 200 and below, 2 sqrt(budget / 2) up to 800 (40), then growing with the budget's
+// cube root (63 at 3000, where the square root would give 78), never finer than the
+// template's and never coarser as the budget grows; no budget keeps the template's.
+TEST(TreeReduction, TheCrownIsMeshedAsFineAsItsBudgetCanShow) {
+    EXPECT_EQ(crown_resolution_for_budget(200, 0), 200);
+    EXPECT_EQ(crown_resolution_for_budget(200, 100), 24);
+    EXPECT_EQ(crown_resolution_for_budget(200, 200), 24);
+    EXPECT_EQ(crown_resolution_for_budget(200, 800), 40);
+    EXPECT_EQ(crown_resolution_for_budget(200, 3000), 63);
+    EXPECT_EQ(crown_resolution_for_budget(48, 3000), 48);
+    int previous = 0;
+    for (std::size_t budget = 50; budget <= 20000; budget += 50) {
+        const int cells = crown_resolution_for_budget(1000, budget);
+        EXPECT_GE(cells, previous) << budget;
+        EXPECT_GE(cells, 24) << budget;
+        const double square_root_law = 2.0 * std::sqrt(static_cast<double>(budget) / 2.0);
+        if (budget > kTrunkDetailBudget) {
+            EXPECT_LT(cells, square_root_law) << budget;
+        }
+        previous = cells;
+    }
 }
 
 // Below 800 triangles a game mesh meshes the trunk coarser (trunk_resolution_for_budget,
