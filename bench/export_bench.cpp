@@ -17,10 +17,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/large_pages.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "marching/mesh_checks.h"
@@ -61,6 +63,9 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The studio's heap (core/large_pages.h): its exports, like these, follow each other in
+    // one process. SYLVA_NO_LARGE_PAGES=1 measures without.
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
     std::vector<std::string> names(argv + 1, argv + argc);
     if (names.empty())
         for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
