@@ -42,6 +42,11 @@ std::string format_number(double n) {
     return text;
 }
 
+// "1 segment", "1284 segments".
+std::string counted(double n, const char* noun) {
+    return format_number(n) + " " + noun + (n == 1.0 ? "" : "s");
+}
+
 }  // namespace
 
 Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
@@ -89,12 +94,11 @@ std::string cost_text(const Cost& cost) {
     std::snprintf(tail, sizeof tail, "about %.2g GB and %.3g s", cost.bytes / 1e9, cost.seconds);
     std::string text;
     if (cost.modules > 0)
-        text += format_number(cost.modules) + " modules, " + format_number(cost.segments) +
-                " segments, ";
-    if (cost.cells > 0) text += format_number(cost.cells) + " cells, ";
+        text += counted(cost.modules, "module") + ", " + counted(cost.segments, "segment") + ", ";
+    if (cost.cells > 0) text += counted(cost.cells, "cell") + ", ";
     if (cost.triangles > 0)
-        text += format_number(cost.triangles) + " triangles with " + format_number(cost.handles) +
-                " handles to reduce, ";
+        text += counted(cost.triangles, "triangle") + " with " + counted(cost.handles, "handle") +
+                " to reduce, ";
     return text + tail;
 }
 

@@ -60,14 +60,16 @@ void section(const char* title) {
     ImGui::Separator();
 }
 
-// What the edited tree will cost, before anything runs: one line (it never pushes the panel),
-// the whole estimate in the tooltip.
+// What the edited tree will cost, before anything runs: memory and time in one line (it never
+// pushes the panel), the whole estimate in the tooltip. The grammar's segment count is only a
+// lower bound (the willow's: 1 of 849) and unknown for space colonization, so the line leaves
+// it to the tooltip.
 void estimate_line(const StudioState& state) {
     const Cost& cost = state.estimate;
     const bool over = !state.cost_warning.empty();
     char line[128];
-    std::snprintf(line, sizeof line, "estimate: %.0f segments, %.2g GB, %.2g s or more%s",
-                  cost.segments, cost.bytes / 1e9, cost.seconds, over ? " - asks first" : "");
+    std::snprintf(line, sizeof line, "estimate: %.2g GB, %.2g s or more%s", cost.bytes / 1e9,
+                  cost.seconds, over ? " - asks first" : "");
     ImGui::PushStyleColor(ImGuiCol_Text,
                           over ? kWarningColor : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextUnformatted(line);

@@ -76,6 +76,16 @@ TEST(Cost, DoublingGrammarIsEstimatedAndRefusedBeforeDeriving) {
     EXPECT_NO_THROW(check_cost(cost, {1e12, 1e6}, ""));
 }
 
+// The studio's tooltip and the CLI's refusal read as sentences: "1 segment", not "1 segments".
+TEST(Cost, CountsOfOneAreSingular) {
+    const Cost one = estimate_cost(grammar("axiom: F\n", 0), 0, false);
+    ASSERT_EQ(one.modules, 1.0);
+    ASSERT_EQ(one.segments, 1.0);
+    EXPECT_EQ(cost_text(one).rfind("1 module, 1 segment, about ", 0), 0u) << cost_text(one);
+    const Cost two = estimate_cost(grammar("axiom: FF\n", 0), 0, false);
+    EXPECT_EQ(cost_text(two).rfind("2 modules, 2 segments, about ", 0), 0u) << cost_text(two);
+}
+
 // Resolution 2000 needed 5.65 GB and 103 s; 1500 froze the studio for 68 s.
 TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
     TreeTemplate t = default_template();
