@@ -124,7 +124,7 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
     // A reduction's cost shows once the meshes are made: refused before it starts.
-    // (1,845 handles at 96 cells; the template's own 80 cells bind only above 1,422 triangles
+    // (1,822 handles at 96 cells; the template's own 80 cells bind only above 1,422 triangles
     // with drop_hidden.)
     r =
         run("export -t ternary --set generations=8 --set drop_hidden=0 --set trunk_resolution=96 "

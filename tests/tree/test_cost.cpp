@@ -135,7 +135,7 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
 
     t.params.drop_hidden = 0;
     // The trunk's grid as the template had it before its 80 cells (which bind only above
-    // 1,422 triangles with drop_hidden): 1,845 handles, not 1,285.
+    // 1,422 triangles with drop_hidden): 1,822 handles, not 1,285.
     t.params.trunk_resolution = 96;
     // What the grammar alone can tell.
     EXPECT_TRUE(within(estimate_cost(t, 800), one_second)) << cost_text(estimate_cost(t, 800));
