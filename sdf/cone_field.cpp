@@ -72,7 +72,7 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     // A bin lists a cone only if some point of the bin can be within the inflation of it.
     const float inflation = margin_ + joint_blend_;
     bins_ = BinGrid(
-        boxes, margin_ / 2.0f, 40,
+        boxes, kMinBinInMargins * margin_, 40,
         [&](size_t i, const glm::vec3& centre, float radius) {
             return distance(prepared_[i], centre) < inflation + radius;
         },

@@ -53,10 +53,10 @@ SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, Sph
         glm::vec3 r(b.radius + margin_);
         boxes.push_back({b.center - r, b.center + r});
     }
-    bins_ =
-        BinGrid(boxes, margin_ / 2.0f, 40, [&](size_t i, const glm::vec3& centre, float radius) {
-            return distance(balls_[i], centre) < margin_ + radius;
-        });
+    bins_ = BinGrid(boxes, kMinBinInMargins * margin_, 40,
+                    [&](size_t i, const glm::vec3& centre, float radius) {
+                        return distance(balls_[i], centre) < margin_ + radius;
+                    });
 }
 
 float SphereField::operator()(const glm::vec3& p) const {

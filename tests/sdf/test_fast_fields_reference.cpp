@@ -55,7 +55,7 @@ class ReferenceConeField {
             boxes.push_back({glm::min(c.a, c.b) - glm::vec3(r), glm::max(c.a, c.b) + glm::vec3(r)});
         }
         const float inflation = margin_ + joint_blend_;
-        bins_ = BinGrid(boxes, margin_ / 2.0f, 40,
+        bins_ = BinGrid(boxes, kMinBinInMargins * margin_, 40,
                         [&](size_t i, const glm::vec3& centre, float radius) {
                             return reference_distance(cones_[i], centre) < inflation + radius;
                         });
@@ -254,7 +254,7 @@ TEST(SphereFieldReference, SameBitsAsTheFoldWithTheBlendCalled) {
             glm::vec3 rr(b.radius + margin);
             boxes.push_back({b.center - rr, b.center + rr});
         }
-        const BinGrid bins(boxes, margin / 2.0f, 40,
+        const BinGrid bins(boxes, kMinBinInMargins * margin, 40,
                            [&](size_t i, const glm::vec3& centre, float radius) {
                                return distance(balls[i], centre) < margin + radius;
                            });
