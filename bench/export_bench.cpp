@@ -12,7 +12,11 @@
 // reduce ms = its finish_tree share; meshopt ms = meshopt_simplify on both parts;
 // ratio = export / meshopt; closed = Sylva's / meshopt's parts closed.
 //
-// Usage: sylva-bench-export [TEMPLATE...]
+// With --stages, a line under each row says where the export's time went: the pipeline's
+// stages (derive, growth, fields, trunk mesh, crown mesh, leaves), the reduction and the
+// writing.
+//
+// Usage: sylva-bench-export [--stages] [TEMPLATE...]
 #include <meshoptimizer.h>
 
 #include <algorithm>
@@ -67,6 +71,7 @@ int main(int argc, char** argv) {
     // one process. SYLVA_NO_LARGE_PAGES=1 measures without.
     if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
     std::vector<std::string> names(argv + 1, argv + argc);
+    const bool stages = std::erase(names, "--stages") > 0;
     if (names.empty())
         for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
     const std::filesystem::path out = std::filesystem::temp_directory_path() / "sylva_bench.glb";
@@ -98,6 +103,7 @@ int main(int argc, char** argv) {
             const FinishedTree finished = finish_tree(tree, finish);
             const double reduce_ms = reduce.lap_ms();
             write_tree(out, tree, finished, tmpl.colors);
+            const double write_ms = reduce.lap_ms();
             const double export_ms = whole.lap_ms();
 
             const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
@@ -113,6 +119,12 @@ int main(int argc, char** argv) {
             std::printf("%-9s %7zu %9.1f %9.1f %10.1f %6.1fx %3s/%-3s\n", name.c_str(), raw,
                         export_ms, reduce_ms, meshopt_ms, export_ms / meshopt_ms,
                         ours ? "yes" : "NO", theirs ? "yes" : "no");
+            if (stages) {
+                std::printf("%9s", "");
+                for (const StageTime& stage : tree.times)
+                    std::printf(" %s %.1f,", stage.name.c_str(), stage.ms);
+                std::printf(" reduce %.1f, write %.1f ms\n", reduce_ms, write_ms);
+            }
             std::fflush(stdout);
             exports.push_back(export_ms);
             ratios.push_back(export_ms / meshopt_ms);

@@ -431,6 +431,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         fields.trunk =
             trunk_field(out.skeleton.segments, fields.trunk_cell, joint_blend, options.cancel);
     }
+    out.times.push_back({"fields", clock.lap_ms()});
     throw_if_cancelled(options.cancel);
     if (!fields.trunk)
         throw InputError(

@@ -32,7 +32,8 @@ struct Tree {
     std::size_t hidden_segments = 0;
     // The template's crown_shape: how a game mesh draws the crown unless its budget says.
     CrownShape crown_shape = CrownShape::Automatic;
-    std::vector<StageTime> times;  // derive, turtle, trunk mesh, crown mesh, leaves
+    // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves
+    std::vector<StageTime> times;
 };
 
 // How the fields become meshes; none of this changes the tree's shape beyond the mesher's
