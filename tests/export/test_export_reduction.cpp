@@ -143,14 +143,14 @@ TEST(TreeReduction, TheLossSeesWhatTheGameMeshDropped) {
 
 // The crown is meshed as fine as its budget can show (README "Meshed for the budget"): 24
 // cells at 200 and below, 2 sqrt(budget / 2) up to 800 (40), then growing with the budget's
-// cube root (63 at 3000, where the square root would give 78), never finer than the
+// fourth root (56 at 3000, where the square root would give 78), never finer than the
 // template's and never coarser as the budget grows; no budget keeps the template's.
 TEST(TreeReduction, TheCrownIsMeshedAsFineAsItsBudgetCanShow) {
     EXPECT_EQ(crown_resolution_for_budget(200, 0), 200);
     EXPECT_EQ(crown_resolution_for_budget(200, 100), 24);
     EXPECT_EQ(crown_resolution_for_budget(200, 200), 24);
     EXPECT_EQ(crown_resolution_for_budget(200, 800), 40);
-    EXPECT_EQ(crown_resolution_for_budget(200, 3000), 63);
+    EXPECT_EQ(crown_resolution_for_budget(200, 3000), 56);
     EXPECT_EQ(crown_resolution_for_budget(48, 3000), 48);
     int previous = 0;
     for (std::size_t budget = 50; budget <= 20000; budget += 50) {
