@@ -1,5 +1,6 @@
 #include "tree/pipeline.h"
 
+#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -178,16 +179,22 @@ struct BridgedCrown {
 // its time (README "Meshed for the budget" has the figures).
 std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereField& crown,
                                       float cell) {
-    std::vector<Segment> visible;
-    for (const Segment& s : skeleton.segments) {
+    // Each segment on its own: the thousands of a conifer's on both cores (the fir's 1,937
+    // took 3-4 ms on one).
+    std::vector<std::uint8_t> shown(skeleton.segments.size());
+    tbb::parallel_for(std::size_t{0}, skeleton.segments.size(), [&](std::size_t i) {
+        const Segment& s = skeleton.segments[i];
         const float r = std::max({s.ra, s.rb, kMinRadiusInCells * cell});
         const float depth = std::max(s.ra, s.rb) < 0.5f * cell ? 0.0f : r;
         const int samples = 2 + static_cast<int>(glm::distance(s.a, s.b) / (0.5f * r));
         bool hidden = true;
         for (int k = 0; k <= samples && hidden; ++k)
             hidden = crown(glm::mix(s.a, s.b, static_cast<float>(k) / samples)) < -depth;
-        if (!hidden) visible.push_back(s);
-    }
+        shown[i] = !hidden;
+    });
+    std::vector<Segment> visible;
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        if (shown[i]) visible.push_back(skeleton.segments[i]);
     return visible;
 }
 
