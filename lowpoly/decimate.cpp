@@ -12,6 +12,7 @@
 
 #include "core/errors.h"
 #include "lowpoly/handle_cutting.h"
+#include "lowpoly/merge_meshes.h"
 #include "lowpoly/quadric_collapse.h"
 #include "marching/mesh_checks.h"
 
@@ -71,7 +72,7 @@ std::vector<std::size_t> inward_pieces(std::span<const Mesh* const> parts) {
 // and they are the first collapses).
 using PartMeshes = std::vector<CollapseMesh>;
 
-PartMeshes build_checked(std::span<const Mesh* const> parts) {
+PartMeshes build_checked(std::span<const Mesh* const> parts, std::span<const std::size_t> part_of) {
     PartMeshes meshes(parts.size());
     std::vector<std::uint8_t> built(parts.size(), 0);
     tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t k) {
@@ -86,8 +87,8 @@ PartMeshes build_checked(std::span<const Mesh* const> parts) {
         std::string what = describe(shape);
         if (what.empty()) what = describe(full);  // a repeated or missing vertex index
         if (what.empty()) what = "a triangle with a repeated vertex";
-        throw InputError("decimate: part " + std::to_string(bad) + " is not a closed 2-manifold (" +
-                         what + ")");
+        throw InputError("decimate: part " + std::to_string(part_of[bad]) +
+                         " is not a closed 2-manifold (" + what + ")");
     }
     return meshes;
 }
@@ -111,14 +112,22 @@ struct Reduction {
     std::vector<Mesh> snapshot;
 };
 
+// How the parts of a reduction share its triangles: as one mesh would, in one order of the
+// collapses by error (the budget), or each in proportion to its input's triangles, on a
+// core of its own with no shared order after (handle cutting's intermediate, which the
+// reduction after the cuts shares by error again: the ternary's shared order from 16k
+// to 6.4k triangles took 11 ms on one core).
+enum class Sharing { ByError, BySize };
+
 // One reduction from scratch down to `target` triangles; with snapshot_at > target, also
 // the parts as they were at snapshot_at triangles (the start of handle cutting, which then
 // needs no reduction of its own). The parts share the budget as one mesh would (one order
-// of collapses by error, collapse_together()); the bulk of it, each part down to what all
-// parts together may keep, runs on a thread per part (the calling thread takes part 0 and
-// reports progress).
+// of collapses by error, collapse_together()), or as `sharing` says; the bulk of it, each
+// part down to what all parts together may keep, runs on a thread per part or lane (the
+// calling thread takes the first and reports progress).
 Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
-                 const DecimateSettings& settings, double min_twice_area) {
+                 const DecimateSettings& settings, double min_twice_area,
+                 std::span<const std::size_t> part_of, Sharing sharing) {
     CollapseSettings cs;
     cs.max_normal_turn_degrees = settings.max_normal_turn_degrees;
     cs.min_twice_area = min_twice_area;
@@ -127,6 +136,25 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     cs.lazy_legality = settings.lazy_legality;
     cs.passes = settings.fast_passes;
     const std::size_t alone = std::max(target, snapshot_at);
+    // By error, a lane (half a part) goes down to its share of what the part may keep and
+    // half as much again, so that the shared order below still has collapses of both lanes
+    // to choose from; a whole part to what all parts may keep.
+    std::vector<std::size_t> in_part(meshes.size(), 0);
+    std::size_t in_all = 0;
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        in_part[part_of[k]] += meshes[k].triangles();
+        in_all += meshes[k].triangles();
+    }
+    auto share = [](std::size_t of, std::size_t n, std::size_t in, double slack) {
+        return static_cast<std::size_t>(std::ceil(
+            slack * static_cast<double>(of) * static_cast<double>(n) / static_cast<double>(in)));
+    };
+    auto alone_for = [&](std::size_t k) {
+        const std::size_t n = meshes[k].triangles();
+        if (sharing == Sharing::BySize) return share(alone, n, in_all, 1.0);
+        if (n == in_part[part_of[k]]) return alone;
+        return share(alone, n, in_part[part_of[k]], 1.5);
+    };
     const std::size_t first = meshes.empty() ? 0 : meshes[0].triangles();
     const std::size_t expected = first > alone ? (first - alone) / 2 : 0;
     const std::size_t interval = std::max<std::size_t>(expected / 100, 64);
@@ -142,9 +170,9 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
         try {
             meshes[k].start(cs, settings.cancel);
             if (k == 0)
-                meshes[k].collapse_to(alone, interval, reported);
+                meshes[k].collapse_to(alone_for(k), interval, reported);
             else
-                meshes[k].collapse_to(alone, 256, polled);
+                meshes[k].collapse_to(alone_for(k), 256, polled);
         } catch (...) {
             errors[k] = std::current_exception();
         }
@@ -159,11 +187,11 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     throw_if_cancelled(settings.cancel);
     Reduction out;
     if (snapshot_at > target) {
-        collapse_together(meshes, snapshot_at, settings.cancel, settings.part_floor);
+        collapse_together(meshes, snapshot_at, settings.cancel, settings.part_floor, part_of);
         throw_if_cancelled(settings.cancel);
         out.snapshot = extract(meshes);
     }
-    collapse_together(meshes, target, settings.cancel, settings.part_floor);
+    collapse_together(meshes, target, settings.cancel, settings.part_floor, part_of);
     throw_if_cancelled(settings.cancel);
     if (settings.relocate_vertices)
         tbb::parallel_for(std::size_t{0}, meshes.size(),
@@ -177,25 +205,26 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
 // Why a reduction of `input` is not acceptable (empty when it is): a part vanished, is not
 // a closed 2-manifold, or has more inside-out pieces than the input had.
 std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const> input,
-                   const std::vector<std::size_t>& inward_before) {
+                   const std::vector<std::size_t>& inward_before,
+                   std::span<const std::size_t> part_of) {
     // Each part checked on a core of its own; the first part's reason wins.
     std::vector<std::string> why(reduced.size());
     tbb::parallel_for(std::size_t{0}, reduced.size(), [&](std::size_t k) {
         if (reduced[k].triangles.empty() != input[k]->triangles.empty()) {
-            why[k] = "part " + std::to_string(k) + " vanished";
+            why[k] = "part " + std::to_string(part_of[k]) + " vanished";
             return;
         }
         if (reduced[k].triangles.empty()) return;
         const MeshTopology t = check_topology(reduced[k]);
         if (!t.is_closed_manifold()) {
-            why[k] = "part " + std::to_string(k) + " had " + describe(t);
+            why[k] = "part " + std::to_string(part_of[k]) + " had " + describe(t);
             return;
         }
         // Collapses guard each triangle's turn, but a small piece can still fold through
         // itself and come out inside out: closed, yet with no volume. (An inner shell, the
         // wall of a hollow, is inward by nature: count only new ones.)
         if (inward_pieces(reduced[k]) > inward_before[k])
-            why[k] = "part " + std::to_string(k) + " had an inside-out piece";
+            why[k] = "part " + std::to_string(part_of[k]) + " had an inside-out piece";
     });
     for (std::string& w : why)
         if (!w.empty()) return std::move(w);
@@ -207,10 +236,12 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 // snapshot_at > 0, *snapshot gets the parts at that many triangles (or the input, if it has
 // no more), unchecked: most reductions never need it.
 DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* const> parts,
+                                   std::span<const std::size_t> part_of,
                                    const std::vector<std::size_t>& inward_before,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
-                                   std::vector<Mesh>* snapshot = nullptr) {
+                                   std::vector<Mesh>* snapshot = nullptr,
+                                   Sharing sharing = Sharing::ByError) {
     DecimateResult result;
     const std::size_t input_triangles = triangles_in(meshes);
     auto copy_input = [&] {
@@ -225,13 +256,13 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
     } else {
         for (int attempt = 0;; ++attempt) {
             // The built mesh serves the first attempt; a retry (never seen) builds it again.
-            Reduction r =
-                reduce(attempt == 0 ? std::move(meshes) : build_checked(parts), target,
-                       attempt == 0 && snapshot ? snapshot_at : 0, settings, min_twice_area);
+            Reduction r = reduce(attempt == 0 ? std::move(meshes) : build_checked(parts, part_of),
+                                 target, attempt == 0 && snapshot ? snapshot_at : 0, settings,
+                                 min_twice_area, part_of, sharing);
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
-            const std::string why = broken(result.parts, parts, inward_before);
+            const std::string why = broken(result.parts, parts, inward_before, part_of);
             if (why.empty()) break;
             ++result.backoffs;
             // Fewer collapses: halfway back towards the input each time.
@@ -253,17 +284,19 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
 
 // The same from meshes (handle cutting's output).
 DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
+                                   std::span<const std::size_t> part_of,
                                    const DecimateSettings& settings, double min_twice_area) {
     std::vector<const Mesh*> pointers;
     for (const Mesh& m : meshes) pointers.push_back(&m);
-    return reduce_with_backoff(build_checked(pointers), pointers, inward_pieces(pointers), settings,
-                               min_twice_area);
+    return reduce_with_backoff(build_checked(pointers, part_of), pointers, part_of,
+                               inward_pieces(pointers), settings, min_twice_area);
 }
 
-}  // namespace
-
-DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings) {
-    PartMeshes input = build_checked(parts);
+// decimate() on the lanes (Lanes): `parts` are the meshes reduced, each of part part_of[k].
+DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
+                              std::span<const std::size_t> part_of,
+                              const DecimateSettings& settings) {
+    PartMeshes input = build_checked(parts, part_of);
     // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
     const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);
     throw_if_cancelled(settings.cancel);
@@ -289,7 +322,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
     // seeds x budgets 300-3000 missed only with floors at 72-99% of the budget).
     const bool keep_snapshot = settings.cut_handles && 3 * floor > 2 * settings.max_triangles;
     if (!handles_pin)
-        result = reduce_with_backoff(std::move(input), parts, inward_before, settings,
+        result = reduce_with_backoff(std::move(input), parts, part_of, inward_before, settings,
                                      min_twice_area, keep_snapshot ? intermediate : 0, &snapshot);
 
     // Over budget at the floor: handles pin the remaining triangles. Cut them, shortest
@@ -300,13 +333,15 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
         DecimateSettings quiet = settings;
         quiet.progress = nullptr;
         DecimateResult detailed;
-        if (handles_pin || snapshot.empty() || !broken(snapshot, parts, inward_before).empty()) {
+        if (handles_pin || snapshot.empty() ||
+            !broken(snapshot, parts, inward_before, part_of).empty()) {
             DecimateSettings to_intermediate = handles_pin ? settings : quiet;
             to_intermediate.max_triangles = intermediate;
             // Unrelocated like the snapshot: the vertices stay on the input surface.
             to_intermediate.relocate_vertices = false;
-            detailed = reduce_with_backoff(handles_pin ? std::move(input) : build_checked(parts),
-                                           parts, inward_before, to_intermediate, min_twice_area);
+            detailed = reduce_with_backoff(
+                handles_pin ? std::move(input) : build_checked(parts, part_of), parts, part_of,
+                inward_before, to_intermediate, min_twice_area, 0, nullptr, Sharing::BySize);
         } else {
             detailed.parts = std::move(snapshot);
             detailed.triangles = count_triangles(detailed.parts);
@@ -338,7 +373,7 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
             const std::size_t done = std::accumulate(cuts.begin(), cuts.end(), std::size_t{0});
             if (done == 0) break;
             handles_cut += static_cast<int>(done);
-            DecimateResult again = reduce_with_backoff(cut, quiet, min_twice_area);
+            DecimateResult again = reduce_with_backoff(cut, part_of, quiet, min_twice_area);
             // Keep the last clean result, and only take a better one.
             if (again.triangles >= result.triangles) break;
             again.handles_cut = handles_cut;
@@ -354,6 +389,88 @@ DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettin
                       (result.handles_cut > 0
                            ? " (after cutting " + std::to_string(result.handles_cut) + " handles)"
                            : std::string());
+    return result;
+}
+
+// What a reduction works on: the parts, but a part with more than half of all triangles
+// (a trunk beside a small crown, or alone) in two lanes, its connected components dealt so
+// that one lane has half of all triangles and the other the rest of the part, reduced with
+// the other parts on the other core; collapse_together() keeps both lanes one part for the
+// part floor, and they are merged back at the end. Always two lanes, not one per core: the
+// same input gives the same output on every machine. A game mesh's trunk comes in pieces
+// for this (tree/pipeline.h).
+struct Lanes {
+    std::vector<Mesh> split;           // the split part's two lanes, if any
+    std::vector<const Mesh*> meshes;   // a part or a lane of one, in part order
+    std::vector<std::size_t> part_of;  // the part of each
+};
+
+// Below this a part is reduced in a few milliseconds: splitting it would not pay (the
+// pipeline meshes a trunk in pieces from about this size, kGroupAtLeast in tree/pipeline.cpp).
+constexpr std::size_t kSplitAtLeast = 8000;
+
+Lanes lanes_for(std::span<const Mesh* const> parts) {
+    std::size_t total = 0;
+    for (const Mesh* m : parts) total += m->triangles.size();
+    Lanes lanes;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Mesh& part = *parts[k];
+        const std::size_t n = part.triangles.size();
+        if (lanes.split.empty() && n >= kSplitAtLeast && 2 * n > total) {
+            std::size_t components = 0;
+            std::vector<std::uint32_t> label = component_of_triangles(part, components);
+            std::vector<std::size_t> size(components, 0);
+            for (std::uint32_t c : label) ++size[c];
+            // Largest first, into lane 0 while it stays within half of all triangles.
+            std::vector<std::uint32_t> order(components);
+            std::iota(order.begin(), order.end(), 0u);
+            std::stable_sort(order.begin(), order.end(),
+                             [&](std::uint32_t a, std::uint32_t b) { return size[a] > size[b]; });
+            std::vector<std::uint32_t> lane(components, 1);
+            std::size_t first = 0;
+            for (std::uint32_t c : order)
+                if (2 * (first + size[c]) <= total + total / 16) {
+                    lane[c] = 0;
+                    first += size[c];
+                }
+            // Worth it when the busier core then has at most 85% of the part.
+            const std::size_t busier = std::max(first, total - first);
+            if (first > 0 && first < n && 20 * busier <= 17 * n) {
+                for (std::uint32_t& l : label) l = lane[l];
+                lanes.split = split_by_label(part, label, 2);
+                for (const Mesh& m : lanes.split) {
+                    lanes.meshes.push_back(&m);
+                    lanes.part_of.push_back(k);
+                }
+                continue;
+            }
+        }
+        lanes.meshes.push_back(&part);
+        lanes.part_of.push_back(k);
+    }
+    return lanes;
+}
+
+// The reduced lanes as the parts they are of.
+std::vector<Mesh> merge_lanes(std::vector<Mesh> reduced, std::span<const std::size_t> part_of,
+                              std::size_t parts) {
+    if (reduced.size() == parts) return reduced;  // no part was split
+    std::vector<Mesh> out(parts);
+    for (std::size_t p = 0; p < parts; ++p) {
+        std::vector<const Mesh*> of;
+        for (std::size_t k = 0; k < reduced.size(); ++k)
+            if (part_of[k] == p) of.push_back(&reduced[k]);
+        out[p] = merge_meshes(of);
+    }
+    return out;
+}
+
+}  // namespace
+
+DecimateResult decimate(std::span<const Mesh* const> parts, const DecimateSettings& settings) {
+    const Lanes lanes = lanes_for(parts);
+    DecimateResult result = decimate_lanes(lanes.meshes, lanes.part_of, settings);
+    result.parts = merge_lanes(std::move(result.parts), lanes.part_of, parts.size());
     return result;
 }
 

@@ -74,6 +74,12 @@ class CollapseMesh {
     // costs more than its own or another mesh's front (`others_front`). Returns the
     // triangles removed (0 or 2). Precondition: front_key() is finite.
     std::size_t step(float others_front);
+    // The errors waiting in the heap (one per vertex with a collapse), appended to `keys`.
+    void waiting_keys(std::vector<float>& keys) const;
+    // Steps while the front's error is at most `max_key` and more than `min_triangles` are
+    // left, each weighed against `max_key` as the other meshes' front; returns the triangles
+    // removed.
+    std::size_t collapse_up_to(float max_key, std::size_t min_triangles);
     // Moves each vertex to the minimum of its accumulated quadric where the guards allow.
     void relocate();
     // The parts as meshes: used vertices in their original order, triangles likewise.
@@ -181,9 +187,14 @@ class CollapseMesh {
 // collapse in one changes another. Reducing each mesh alone first (in parallel) to at most
 // `max_triangles`, then together, gives nearly that order too: a mesh's own collapses come in the
 // same order, except where a collapse found illegal at the front is weighed against the other
-// meshes' fronts. A mesh stops collapsing where one more collapse would take it below
-// `mesh_floor` triangles. Returns early once `cancel` is set (polled every 256 steps).
+// meshes' fronts. The bulk runs on a core per mesh: each collapses up to an error bound,
+// which the shared order would all make before any collapse above it (ties and re-filed
+// collapses aside); the last few hundred go one at a time. A part stops collapsing where
+// one more collapse would take it below
+// `part_floor` triangles; a part is one mesh, or with `part_of` (the part of each mesh) the
+// meshes it names alike. Returns early once `cancel` is set (polled every 256 steps).
 void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
-                       CancelFlag cancel = nullptr, std::size_t mesh_floor = 0);
+                       CancelFlag cancel = nullptr, std::size_t part_floor = 0,
+                       std::span<const std::size_t> part_of = {});
 
 }  // namespace sylva

@@ -17,6 +17,7 @@
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "core/tree_age.h"
+#include "lowpoly/merge_meshes.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "tree/crown_merge.h"
@@ -177,8 +178,8 @@ struct BridgedCrown {
 // cell (drawn a cell wide) when its axis lies inside the crown. They are most of a dense
 // crown's twigs, and where twigs cross they make the handles that cost a reduction most of
 // its time (README "Meshed for the budget" has the figures).
-std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereField& crown,
-                                      float cell) {
+std::vector<std::uint8_t> visible_segments(const Skeleton& skeleton, const SphereField& crown,
+                                           float cell) {
     // Each segment on its own: the thousands of a conifer's on both cores (the fir's 1,937
     // took 3-4 ms on one).
     std::vector<std::uint8_t> shown(skeleton.segments.size());
@@ -192,10 +193,93 @@ std::vector<Segment> visible_segments(const Skeleton& skeleton, const SphereFiel
             hidden = crown(glm::mix(s.a, s.b, static_cast<float>(k) / samples)) < -depth;
         shown[i] = !hidden;
     });
-    std::vector<Segment> visible;
-    for (std::size_t i = 0; i < shown.size(); ++i)
-        if (shown[i]) visible.push_back(skeleton.segments[i]);
-    return visible;
+    return shown;
+}
+
+// A game mesh's trunk is meshed as several solids that overlap where they meet: each is
+// whole subtrees of the skeleton (a branch with all it carries), an eighth, an eighth, a
+// quarter and the rest (with the root) of the surface, so that the reduction can deal them
+// to both cores in any share of eighths (lowpoly/decimate.h: half the tree's triangles
+// each, with the crown on one of them), and branches of different solids that cross make no
+// handle. The surface is the hard union's either way; only where two solids meet, a
+// branch's base lies inside its parent.
+constexpr double kTrunkGroupShares[] = {0.125, 0.125, 0.25};
+constexpr std::uint8_t kTrunkGroups = std::size(kTrunkGroupShares) + 1;
+
+// Each segment's group (0-3, the last one the rest) among those `shown` (1 where the trunk
+// draws it); all in the rest when the trunk is too small to split (the reduction would not
+// split it), has a joint blend, or lists a child before its parent.
+std::vector<std::uint8_t> trunk_groups(const Skeleton& skeleton,
+                                       std::span<const std::uint8_t> shown, float cell,
+                                       float joint_blend) {
+    const std::vector<Segment>& segments = skeleton.segments;
+    const std::size_t n = segments.size();
+    constexpr std::uint8_t kRest = kTrunkGroups - 1;
+    std::vector<std::uint8_t> group(n, kRest);
+    // Marching cubes makes triangles in proportion to the surface: a cone's side, its radii
+    // as the field widens them (resolvable_cones).
+    const float min_radius = kMinRadiusInCells * cell;
+    std::vector<double> own(n, 0.0);
+    std::vector<std::vector<int>> children(n);
+    std::vector<int> roots;
+    double total = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Segment& s = segments[i];
+        if (s.parent >= static_cast<int>(i)) return group;
+        (s.parent < 0 ? roots : children[s.parent]).push_back(static_cast<int>(i));
+        if (shown[i] && std::max(s.ra, s.rb) > 0.0f)
+            own[i] =
+                (std::max(s.ra, min_radius) + std::max(s.rb, min_radius)) * glm::distance(s.a, s.b);
+        total += own[i];
+    }
+    // (ra + rb) L is a cone side's area over pi; marching cubes makes 5-9 triangles per
+    // square cell of it (14 templates measured), so this is about 8,000 triangles: below,
+    // the reduction would not split the trunk (kSplitAtLeast in lowpoly/decimate.cpp).
+    constexpr double kGroupAtLeast = 1000.0;  // square cells
+    // A joint blend rounds every joint: pieces would lose the fillets where they meet.
+    if (total < kGroupAtLeast * cell * cell || joint_blend > 0.0f) return group;
+    // A piece starts where a branch leaves its parent, its base inside the parent's end,
+    // never within a limb: there the reduced pieces would meet in a visible seam.
+    auto starts_branch = [&](int i) {
+        const int parent = segments[i].parent;
+        return parent < 0 || segments[i].depth > segments[parent].depth;
+    };
+    std::vector<double> subtree(n);
+    for (std::uint8_t g = 0; g < kRest; ++g) {
+        // The surface still in the rest below each segment.
+        for (std::size_t i = 0; i < n; ++i) subtree[i] = group[i] == kRest ? own[i] : 0.0;
+        for (std::size_t i = n; i-- > 0;)
+            if (segments[i].parent >= 0) subtree[segments[i].parent] += subtree[i];
+        // Whole subtrees of the rest, the largest that fit what the group still needs first,
+        // walking down into the largest that does not fit, until it holds its share (within
+        // 2% of the trunk).
+        double needed = kTrunkGroupShares[g] * total;
+        const double close_enough = 0.02 * total;
+        std::vector<int> level = roots;
+        while (needed > close_enough && !level.empty()) {
+            std::stable_sort(level.begin(), level.end(),
+                             [&](int a, int b) { return subtree[a] > subtree[b]; });
+            int down = -1;
+            for (int root : level) {
+                if (needed <= close_enough || subtree[root] == 0.0) break;
+                if (subtree[root] > needed + close_enough || !starts_branch(root)) {
+                    if (down < 0) down = root;
+                    continue;
+                }
+                needed -= subtree[root];
+                for (std::vector<int> stack{root}; !stack.empty();) {
+                    const int i = stack.back();
+                    stack.pop_back();
+                    if (group[i] != kRest) continue;  // an earlier group's subtree
+                    group[i] = g;
+                    stack.insert(stack.end(), children[i].begin(), children[i].end());
+                }
+            }
+            if (down < 0) break;
+            level = children[down];
+        }
+    }
+    return group;
 }
 
 // Sylva models trees, not continents: a segment that ends farther out than this (or at a
@@ -410,45 +494,81 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
     const bool crown_wanted = p.crown_mesh != 0;
-    // A game mesh's trunk leaves out the branches the crown hides (drop_hidden): its field is
-    // built once the crown's says which those are, not twice.
-    const bool drop_hidden = crown_wanted && options.budget > 0 && p.drop_hidden != 0;
-    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel, !drop_hidden);
+    // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in
+    // groups (trunk_groups): its fields are built once the crown's says which segments it
+    // draws, not twice.
+    const bool game_mesh = options.budget > 0;
+    const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden != 0;
+    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel, !game_mesh);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
     throw_if_cancelled(options.cancel);
     const bool mesh_crown = fields.crown && crown_wanted;
     const float joint_blend = static_cast<float>(p.joint_blend);
+    const std::vector<Segment>& segments = out.skeleton.segments;
     Box trunk_box = fields.trunk_box;
+    float trunk_cell = fields.trunk_cell;
+    std::vector<std::uint8_t> shown(segments.size(), 1);
     if (drop_hidden && fields.crown) {
-        Skeleton shown;
-        const float cell = cell_size(fields.trunk_box, p.trunk_resolution);
-        shown.segments = visible_segments(out.skeleton, *fields.crown, cell);
-        out.hidden_segments = out.skeleton.segments.size() - shown.segments.size();
-        if (!shown.segments.empty() && out.hidden_segments > 0) {
-            trunk_box = skeleton_bounds(shown);
+        std::vector<std::uint8_t> visible = visible_segments(
+            out.skeleton, *fields.crown, cell_size(fields.trunk_box, p.trunk_resolution));
+        Skeleton kept;
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (visible[i]) kept.segments.push_back(segments[i]);
+        if (!kept.segments.empty() && kept.segments.size() < segments.size()) {
+            out.hidden_segments = segments.size() - kept.segments.size();
+            shown = std::move(visible);
+            trunk_box = skeleton_bounds(kept);
             trunk_box.min -= glm::vec3(joint_blend);
             trunk_box.max += glm::vec3(joint_blend);
-            fields.trunk = trunk_field(shown.segments, cell_size(trunk_box, p.trunk_resolution),
-                                       joint_blend, options.cancel);
+            trunk_cell = cell_size(trunk_box, p.trunk_resolution);
         }
     }
-    if (!fields.trunk && drop_hidden) {  // nothing hidden, or nothing shown
-        out.hidden_segments = 0;
-        trunk_box = fields.trunk_box;
-        fields.trunk =
-            trunk_field(out.skeleton.segments, fields.trunk_cell, joint_blend, options.cancel);
+    // A game mesh's trunk in groups (trunk_groups), their fields built beside each other.
+    std::optional<ConeField> groups[kTrunkGroups];
+    if (game_mesh) {
+        const std::vector<std::uint8_t> group =
+            trunk_groups(out.skeleton, shown, trunk_cell, joint_blend);
+        std::vector<Segment> of[kTrunkGroups];
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (shown[i]) of[group[i]].push_back(segments[i]);
+        tbb::parallel_for(std::size_t{0}, std::size_t{kTrunkGroups}, [&](std::size_t g) {
+            groups[g] = trunk_field(of[g], trunk_cell, joint_blend, options.cancel);
+        });
     }
     out.times.push_back({"fields", clock.lap_ms()});
     throw_if_cancelled(options.cancel);
-    if (!fields.trunk)
+    if (!fields.trunk && std::none_of(std::begin(groups), std::end(groups),
+                                      [](const auto& g) { return g.has_value(); }))
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
-    out.trunk =
-        mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
+    if (game_mesh) {
+        // Meshed beside each other; progress is each group's share of what all have done.
+        Mesh meshed[kTrunkGroups];
+        std::atomic<float> done[kTrunkGroups] = {};
+        tbb::parallel_for(std::size_t{0}, std::size_t{kTrunkGroups}, [&](std::size_t g) {
+            if (!groups[g]) return;
+            MeshOptions group_options = options;
+            if (options.progress)
+                group_options.progress = [&, g](float f) {
+                    done[g] = f;
+                    float all = 0.0f;
+                    for (const std::atomic<float>& d : done) all += d;
+                    options.progress(trunk_share * all / kTrunkGroups);
+                };
+            meshed[g] =
+                mesh_field(*groups[g], trunk_box, p.trunk_resolution, group_options, 0.0f, 1.0f);
+        });
+        const Mesh* all[kTrunkGroups];
+        for (std::size_t g = 0; g < kTrunkGroups; ++g) all[g] = &meshed[g];
+        out.trunk = merge_meshes(all);
+    } else {
+        out.trunk =
+            mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
+    }
     out.times.push_back({"trunk mesh", clock.lap_ms()});
     if (mesh_crown) {
         MeshOptions crown_options = options;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <stdexcept>
+#include <vector>
 
 #include "core/errors.h"
 #include "lowpoly/decimate.h"
@@ -87,6 +88,53 @@ TEST(Decimate, PartsShareTheBudgetAndStaySeparate) {
     // The quadric error favours the large sphere (same curvature error costs it more area).
     EXPECT_GT(r.parts[0].triangles.size(), r.parts[1].triangles.size());
     for (const glm::vec3& p : r.parts[1].positions) EXPECT_GT(p.x, 2.0f);
+}
+
+// A part with most of the triangles, in pieces (a game mesh's trunk), is reduced in two
+// lanes on two cores and comes back as one part: every piece there (none vanished, none
+// doubled), the budget shared with the other part, the part floor held by the two lanes
+// together, the same result every time. Checked to fail when the lanes are not merged back
+// (a piece goes missing) and when each lane keeps the part floor alone (over budget).
+TEST(Decimate, APartInPiecesIsReducedInTwoLanesAndComesBackWhole) {
+    std::vector<Mesh> balls;
+    for (int k = 0; k < 6; ++k)
+        balls.push_back(sphere(36, glm::vec3(static_cast<float>(k), 0.0f, 0.0f),
+                               0.2f + 0.05f * static_cast<float>(k)));
+    std::vector<const Mesh*> pointers;
+    for (const Mesh& b : balls) pointers.push_back(&b);
+    Mesh pieces;
+    {
+        std::size_t base = 0;
+        for (const Mesh& b : balls) {
+            pieces.positions.insert(pieces.positions.end(), b.positions.begin(), b.positions.end());
+            for (const auto& t : b.triangles)
+                pieces.triangles.push_back({t[0] + std::uint32_t(base), t[1] + std::uint32_t(base),
+                                            t[2] + std::uint32_t(base)});
+            base += b.positions.size();
+        }
+    }
+    // A large ball: by error alone it keeps most of the budget, the small pieces little.
+    const Mesh other = sphere(24, glm::vec3(0.0f, 5.0f, 0.0f), 2.0f);
+    ASSERT_GT(pieces.triangles.size(), 8000u);  // what a split asks (lanes_for)
+    ASSERT_GT(pieces.triangles.size(), other.triangles.size());
+    const Mesh* parts[] = {&pieces, &other};
+    DecimateSettings s = budget(600);
+    s.part_floor = 250;  // more than the pieces would keep by error alone
+    const DecimateResult a = decimate(parts, s), b = decimate(parts, s);
+    ASSERT_EQ(a.parts.size(), 2u);
+    EXPECT_TRUE(a.within_budget) << a.note;
+    EXPECT_LE(a.triangles, 600u);
+    EXPECT_GE(a.parts[0].triangles.size(), 250u);
+    EXPECT_EQ(component_volumes(a.parts[0]).size(), balls.size());
+    EXPECT_EQ(component_volumes(a.parts[1]).size(), 1u);
+    for (const Mesh& m : a.parts) {
+        EXPECT_TRUE(check_topology(m).is_closed_manifold());
+        for (double v : component_volumes(m)) EXPECT_GT(v, 0.0);
+    }
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(a.parts[k].positions, b.parts[k].positions);
+        EXPECT_EQ(a.parts[k].triangles, b.parts[k].triangles);
+    }
 }
 
 TEST(Decimate, BudgetAboveTheInputReturnsItUnchanged) {

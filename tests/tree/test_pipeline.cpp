@@ -24,6 +24,45 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// p lies more than `depth` inside some segment's cone (radii at least 0.9 cells, as the
+// trunk's field widens them).
+bool inside_a_branch(const Skeleton& skeleton, const glm::vec3& p, float cell, float depth) {
+    return std::any_of(skeleton.segments.begin(), skeleton.segments.end(), [&](const Segment& s) {
+        const glm::vec3 axis = s.b - s.a;
+        const float t = std::clamp(glm::dot(p - s.a, axis) / std::max(glm::dot(axis, axis), 1e-12f),
+                                   0.0f, 1.0f);
+        const float r = std::max(s.ra + t * (s.rb - s.ra), 0.9f * cell);
+        return glm::distance(p, s.a + t * axis) < r - depth;
+    });
+}
+
+// Points bucketed for "is one of them within `reach` of p".
+class NearPoints {
+  public:
+    NearPoints(const std::vector<glm::vec3>& points, float reach) : reach_(reach) {
+        for (const glm::vec3& p : points) buckets_.emplace(key(p, 0, 0, 0), p);
+    }
+    bool operator()(const glm::vec3& p) const {
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const auto [first, last] = buckets_.equal_range(key(p, dx, dy, dz));
+                    for (auto it = first; it != last; ++it)
+                        if (glm::distance(it->second, p) <= reach_) return true;
+                }
+        return false;
+    }
+
+  private:
+    std::int64_t key(const glm::vec3& p, int dx, int dy, int dz) const {
+        const glm::ivec3 k = glm::ivec3(glm::floor(p / reach_)) + glm::ivec3(dx, dy, dz);
+        return (std::int64_t(k.x) * 73856093) ^ (std::int64_t(k.y) * 19349663) ^
+               (std::int64_t(k.z) * 83492791);
+    }
+    float reach_;
+    std::unordered_multimap<std::int64_t, glm::vec3> buckets_;
+};
+
 // A deliberately independent, minimal OBJ reader: "v x y z" and "f a b c" lines.
 Mesh read_obj(const fs::path& path) {
     Mesh mesh;
@@ -109,25 +148,8 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
     const glm::vec3 extent = box.max - box.min;
     const float cell = std::max({extent.x, extent.y, extent.z}) /
                        static_cast<float>(willow.params.trunk_resolution);
-    // The kept trunk's vertices by buckets two cells wide.
-    const float bucket = 2.0f * cell;
-    auto key = [bucket](const glm::vec3& p, int dx, int dy, int dz) {
-        const glm::ivec3 k = glm::ivec3(glm::floor(p / bucket)) + glm::ivec3(dx, dy, dz);
-        return (std::int64_t(k.x) * 73856093) ^ (std::int64_t(k.y) * 19349663) ^
-               (std::int64_t(k.z) * 83492791);
-    };
-    std::unordered_multimap<std::int64_t, glm::vec3> buckets;
-    for (const glm::vec3& p : kept.trunk.positions) buckets.emplace(key(p, 0, 0, 0), p);
-    auto near_kept = [&](const glm::vec3& p) {
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    const auto [first, last] = buckets.equal_range(key(p, dx, dy, dz));
-                    for (auto it = first; it != last; ++it)
-                        if (glm::distance(it->second, p) <= bucket) return true;
-                }
-        return false;
-    };
+    // Within two cells of the kept trunk's vertices.
+    const NearPoints near_kept(kept.trunk.positions, 2.0f * cell);
     const std::vector<Ball> crown = crown_spheres(full.skeleton, willow.params);
     const float margin = static_cast<float>(willow.params.crown_fusion) + 1.0f * cell;
     std::size_t shown = 0, lost = 0;
@@ -135,12 +157,46 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
         const bool in_crown = std::any_of(crown.begin(), crown.end(), [&](const Ball& b) {
             return glm::distance(p, b.center) < b.radius + margin;
         });
-        if (in_crown) continue;
+        // A game mesh's trunk is several solids that overlap where they meet (trunk_groups in
+        // tree/pipeline.cpp): a branch's base inside its parent is no part of the surface.
+        if (in_crown || inside_a_branch(full.skeleton, p, cell, cell)) continue;
         ++shown;
         if (!near_kept(p)) ++lost;
     }
     EXPECT_GT(shown, 300u);  // the test sees the trunk and the main branches
     EXPECT_EQ(lost, 0u) << "of " << shown << " trunk vertices outside the crown";
+}
+
+// A game mesh's large trunk comes in pieces (trunk_groups in tree/pipeline.cpp, so that the
+// reduction works on both cores): several closed solids with the one-field trunk's surface
+// (the bush meshes at its template's resolution with a budget and without). Every vertex of
+// the one-field trunk has a piece's vertex within a cell and a half, and every piece's
+// vertex lies as near that surface or inside a branch, where a piece's base meets its
+// parent. Checked to fail when a group's segments are left out (its branches are lost).
+TEST(Pipeline, AGameMeshTrunkComesInPiecesWithTheSameSurface) {
+    const TreeTemplate bush = load_template("bush");
+    MeshOptions game;
+    game.budget = 800;
+    const Tree pieces = generate_tree(bush, game);
+    const Tree whole = generate_tree(bush);
+    EXPECT_GE(component_volumes(pieces.trunk).size(), component_volumes(whole.trunk).size() + 2);
+    EXPECT_TRUE(check_topology(pieces.trunk).is_closed_manifold());
+    for (double v : component_volumes(pieces.trunk)) EXPECT_GT(v, 0.0);
+
+    const Box box = skeleton_bounds(whole.skeleton);
+    const glm::vec3 extent = box.max - box.min;
+    const float cell =
+        std::max({extent.x, extent.y, extent.z}) / static_cast<float>(bush.params.trunk_resolution);
+    // Marching cubes puts vertices on the cells' edges: within a cell and a half of every
+    // point of its surface.
+    const NearPoints near_piece(pieces.trunk.positions, 1.5f * cell);
+    const NearPoints near_whole(whole.trunk.positions, 1.5f * cell);
+    std::size_t lost = 0, astray = 0;
+    for (const glm::vec3& p : whole.trunk.positions) lost += near_piece(p) ? 0 : 1;
+    for (const glm::vec3& p : pieces.trunk.positions)
+        astray += near_whole(p) || inside_a_branch(whole.skeleton, p, cell, 0.5f * cell) ? 0 : 1;
+    EXPECT_EQ(lost, 0u) << "of " << whole.trunk.positions.size();
+    EXPECT_EQ(astray, 0u) << "of " << pieces.trunk.positions.size();
 }
 
 TEST(Pipeline, SameInputsGiveTheSameBytes) {
