@@ -282,6 +282,24 @@ std::vector<std::uint8_t> trunk_groups(const Skeleton& skeleton,
     return group;
 }
 
+// The fields of the trunk's groups (trunk_groups) that hold a segment with a width, built
+// beside each other.
+std::vector<ConeField> trunk_pieces(const Skeleton& skeleton, std::span<const std::uint8_t> shown,
+                                    float cell, float joint_blend, CancelFlag cancel) {
+    const std::vector<std::uint8_t> group = trunk_groups(skeleton, shown, cell, joint_blend);
+    std::vector<Segment> of[kTrunkGroups];
+    for (std::size_t i = 0; i < skeleton.segments.size(); ++i)
+        if (shown[i]) of[group[i]].push_back(skeleton.segments[i]);
+    std::optional<ConeField> fields[kTrunkGroups];
+    tbb::parallel_for(std::size_t{0}, std::size_t{kTrunkGroups}, [&](std::size_t g) {
+        fields[g] = trunk_field(of[g], cell, joint_blend, cancel);
+    });
+    std::vector<ConeField> pieces;
+    for (std::optional<ConeField>& f : fields)
+        if (f) pieces.push_back(std::move(*f));
+    return pieces;
+}
+
 // Sylva models trees, not continents: a segment that ends farther out than this (or at a
 // non-finite point, from F(1e39) say) is bad input, found before any grid is sized by it.
 constexpr float kMaxExtent = 1.0e5f;  // metres
@@ -394,7 +412,7 @@ int cells_along(const Box& box, float cell) {
 }
 
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const FieldCells& cells,
-                       CancelFlag cancel, bool with_trunk_field) {
+                       CancelFlag cancel, TrunkField trunk) {
     TreeFields fields;
     // The joint blend swells the union by up to joint_blend / 4 where cones meet.
     float joint_blend = static_cast<float>(p.joint_blend);
@@ -407,9 +425,13 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& p, const Fiel
     // serial work).
     tbb::parallel_invoke(
         [&] {
-            if (with_trunk_field)
+            if (trunk == TrunkField::Whole)
                 fields.trunk =
                     trunk_field(skeleton.segments, fields.trunk_cell, joint_blend, cancel);
+            if (trunk == TrunkField::Pieces)
+                fields.trunk_pieces =
+                    trunk_pieces(skeleton, std::vector<std::uint8_t>(skeleton.segments.size(), 1),
+                                 fields.trunk_cell, joint_blend, cancel);
         },
         [&] {
             std::vector<Ball> balls = crown_spheres(skeleton, p);
@@ -499,7 +521,10 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     // draws, not twice.
     const bool game_mesh = options.budget > 0;
     const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden != 0;
-    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel, !game_mesh);
+    TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel,
+                                    !game_mesh    ? TrunkField::Whole
+                                    : drop_hidden ? TrunkField::None
+                                                  : TrunkField::Pieces);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
@@ -509,61 +534,53 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     const std::vector<Segment>& segments = out.skeleton.segments;
     Box trunk_box = fields.trunk_box;
     float trunk_cell = fields.trunk_cell;
-    std::vector<std::uint8_t> shown(segments.size(), 1);
-    if (drop_hidden && fields.crown) {
-        std::vector<std::uint8_t> visible = visible_segments(
-            out.skeleton, *fields.crown, cell_size(fields.trunk_box, p.trunk_resolution));
-        Skeleton kept;
-        for (std::size_t i = 0; i < segments.size(); ++i)
-            if (visible[i]) kept.segments.push_back(segments[i]);
-        if (!kept.segments.empty() && kept.segments.size() < segments.size()) {
-            out.hidden_segments = segments.size() - kept.segments.size();
-            shown = std::move(visible);
-            trunk_box = skeleton_bounds(kept);
-            trunk_box.min -= glm::vec3(joint_blend);
-            trunk_box.max += glm::vec3(joint_blend);
-            trunk_cell = cell_size(trunk_box, p.trunk_resolution);
+    if (drop_hidden) {
+        std::vector<std::uint8_t> shown(segments.size(), 1);
+        if (fields.crown) {
+            std::vector<std::uint8_t> visible = visible_segments(
+                out.skeleton, *fields.crown, cell_size(fields.trunk_box, p.trunk_resolution));
+            Skeleton kept;
+            for (std::size_t i = 0; i < segments.size(); ++i)
+                if (visible[i]) kept.segments.push_back(segments[i]);
+            if (!kept.segments.empty() && kept.segments.size() < segments.size()) {
+                out.hidden_segments = segments.size() - kept.segments.size();
+                shown = std::move(visible);
+                trunk_box = skeleton_bounds(kept);
+                trunk_box.min -= glm::vec3(joint_blend);
+                trunk_box.max += glm::vec3(joint_blend);
+                trunk_cell = cell_size(trunk_box, p.trunk_resolution);
+            }
         }
-    }
-    // A game mesh's trunk in groups (trunk_groups), their fields built beside each other.
-    std::optional<ConeField> groups[kTrunkGroups];
-    if (game_mesh) {
-        const std::vector<std::uint8_t> group =
-            trunk_groups(out.skeleton, shown, trunk_cell, joint_blend);
-        std::vector<Segment> of[kTrunkGroups];
-        for (std::size_t i = 0; i < segments.size(); ++i)
-            if (shown[i]) of[group[i]].push_back(segments[i]);
-        tbb::parallel_for(std::size_t{0}, std::size_t{kTrunkGroups}, [&](std::size_t g) {
-            groups[g] = trunk_field(of[g], trunk_cell, joint_blend, options.cancel);
-        });
+        fields.trunk_pieces =
+            trunk_pieces(out.skeleton, shown, trunk_cell, joint_blend, options.cancel);
     }
     out.times.push_back({"fields", clock.lap_ms()});
     throw_if_cancelled(options.cancel);
-    if (!fields.trunk && std::none_of(std::begin(groups), std::end(groups),
-                                      [](const auto& g) { return g.has_value(); }))
+    if (!fields.trunk && fields.trunk_pieces.empty())
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
     if (game_mesh) {
-        // Meshed beside each other; progress is each group's share of what all have done.
-        Mesh meshed[kTrunkGroups];
-        std::atomic<float> done[kTrunkGroups] = {};
-        tbb::parallel_for(std::size_t{0}, std::size_t{kTrunkGroups}, [&](std::size_t g) {
-            if (!groups[g]) return;
-            MeshOptions group_options = options;
+        // The pieces meshed beside each other; progress is each one's share of what all have
+        // done.
+        const std::vector<ConeField>& pieces = fields.trunk_pieces;
+        std::vector<Mesh> meshed(pieces.size());
+        std::vector<std::atomic<float>> done(pieces.size());
+        tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t k) {
+            MeshOptions piece_options = options;
             if (options.progress)
-                group_options.progress = [&, g](float f) {
-                    done[g] = f;
+                piece_options.progress = [&, k](float f) {
+                    done[k] = f;
                     float all = 0.0f;
                     for (const std::atomic<float>& d : done) all += d;
-                    options.progress(trunk_share * all / kTrunkGroups);
+                    options.progress(trunk_share * all / static_cast<float>(pieces.size()));
                 };
-            meshed[g] =
-                mesh_field(*groups[g], trunk_box, p.trunk_resolution, group_options, 0.0f, 1.0f);
+            meshed[k] =
+                mesh_field(pieces[k], trunk_box, p.trunk_resolution, piece_options, 0.0f, 1.0f);
         });
-        const Mesh* all[kTrunkGroups];
-        for (std::size_t g = 0; g < kTrunkGroups; ++g) all[g] = &meshed[g];
+        std::vector<const Mesh*> all;
+        for (const Mesh& m : meshed) all.push_back(&m);
         out.trunk = merge_meshes(all);
     } else {
         out.trunk =

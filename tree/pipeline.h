@@ -85,6 +85,9 @@ struct TreeFields {
     Box trunk_box;
     float trunk_cell = 0.0f;         // the trunk's cell (its box is a whole number of them)
     std::optional<ConeField> trunk;  // empty when no segment has a width
+    // A game mesh's trunk in pieces instead (TrunkField::Pieces): whole subtrees of the
+    // skeleton, meshed apart so the reduction can work on them on both cores.
+    std::vector<ConeField> trunk_pieces;
     Box crown_box;
     std::optional<SphereField> crown;  // empty without tips or with sphere_diameter 0
 };
@@ -96,13 +99,15 @@ struct FieldCells {
     float trunk = 0.0f;
     float crown = 0.0f;
 };
+// Which trunk field tree_fields() builds: the whole trunk's, a game mesh's pieces (from
+// about 8,000 triangles; one piece below), or none (the trunk's box and cell only, for a
+// caller that builds it from the segments it keeps).
+enum class TrunkField { Whole, Pieces, None };
 // Throws Cancelled once `cancel` is set (building the trunk's field takes a while on a
 // tree of many thousand segments).
-// with_trunk_field false: the trunk's box and cell only (its field is left empty for a
-// caller that builds it from the segments it keeps).
 TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
                        const FieldCells& cells = {}, CancelFlag cancel = nullptr,
-                       bool with_trunk_field = true);
+                       TrunkField trunk = TrunkField::Whole);
 
 // The tree's leaves (generate_tree's last stage): scattered over the crown's field, or where
 // the crown is meshed in a shell one leaf deep under its surface, then the turtle's

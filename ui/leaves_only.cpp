@@ -31,7 +31,7 @@ std::optional<Tree> with_new_leaves(const Tree& tree, const TreeTemplate& edit, 
     p.crown_resolution = crown_resolution_for_budget(
         p.crown_resolution, static_cast<std::size_t>(std::max(p.triangle_budget, 0)));
     // The crown's field only: the trunk's is not needed for leaves.
-    const TreeFields fields = tree_fields(tree.skeleton, p, {}, cancel, false);
+    const TreeFields fields = tree_fields(tree.skeleton, p, {}, cancel, TrunkField::None);
     Tree out = tree;
     out.leaves = tree_leaves(tree.skeleton, fields, p, cancel);
     const double ms =
