@@ -112,22 +112,26 @@ struct Reduction {
     std::vector<Mesh> snapshot;
 };
 
-// How the parts of a reduction share its triangles: as one mesh would, in one order of the
-// collapses by error (the budget), or each in proportion to its input's triangles, on a
-// core of its own with no shared order after (handle cutting's intermediate, which the
-// reduction after the cuts shares by error again: the ternary's shared order from 16k
-// to 6.4k triangles took 11 ms on one core).
-enum class Sharing { ByError, BySize };
+// How far a lane (half a part, Lanes below) goes alone: down to its share of what its part
+// may keep, times this. The budget's reduction leaves half as much again, so the shared
+// order has collapses of both lanes to choose from; handle cutting's intermediate count,
+// which the reduction after the cuts shares by error again, none (the ternary's shared
+// order from 16k to 6.4k triangles took 11 ms on one core). Whole parts go alone down to
+// what all parts may keep: across parts the share is the shared order's, since a part
+// reduced below it (a crown of a few hulls beside a trunk of 10k triangles) could not get
+// its triangles back.
+constexpr double kLaneSlack = 1.5;
+constexpr double kIntermediateLaneSlack = 1.0;
 
 // One reduction from scratch down to `target` triangles; with snapshot_at > target, also
 // the parts as they were at snapshot_at triangles (the start of handle cutting, which then
 // needs no reduction of its own). The parts share the budget as one mesh would (one order
-// of collapses by error, collapse_together()), or as `sharing` says; the bulk of it, each
-// part down to what all parts together may keep, runs on a thread per part or lane (the
+// of collapses by error, collapse_together()); the bulk of it, each part down to what all
+// parts together may keep (a lane: lane_slack), runs on a thread per part or lane (the
 // calling thread takes the first and reports progress).
 Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
                  const DecimateSettings& settings, double min_twice_area,
-                 std::span<const std::size_t> part_of, Sharing sharing) {
+                 std::span<const std::size_t> part_of, double lane_slack) {
     CollapseSettings cs;
     cs.max_normal_turn_degrees = settings.max_normal_turn_degrees;
     cs.min_twice_area = min_twice_area;
@@ -136,24 +140,14 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     cs.lazy_legality = settings.lazy_legality;
     cs.passes = settings.fast_passes;
     const std::size_t alone = std::max(target, snapshot_at);
-    // By error, a lane (half a part) goes down to its share of what the part may keep and
-    // half as much again, so that the shared order below still has collapses of both lanes
-    // to choose from; a whole part to what all parts may keep.
     std::vector<std::size_t> in_part(meshes.size(), 0);
-    std::size_t in_all = 0;
-    for (std::size_t k = 0; k < meshes.size(); ++k) {
-        in_part[part_of[k]] += meshes[k].triangles();
-        in_all += meshes[k].triangles();
-    }
-    auto share = [](std::size_t of, std::size_t n, std::size_t in, double slack) {
-        return static_cast<std::size_t>(std::ceil(
-            slack * static_cast<double>(of) * static_cast<double>(n) / static_cast<double>(in)));
-    };
+    for (std::size_t k = 0; k < meshes.size(); ++k) in_part[part_of[k]] += meshes[k].triangles();
     auto alone_for = [&](std::size_t k) {
-        const std::size_t n = meshes[k].triangles();
-        if (sharing == Sharing::BySize) return share(alone, n, in_all, 1.0);
-        if (n == in_part[part_of[k]]) return alone;
-        return share(alone, n, in_part[part_of[k]], 1.5);
+        const std::size_t n = meshes[k].triangles(), of_part = in_part[part_of[k]];
+        if (n == of_part) return alone;
+        return static_cast<std::size_t>(
+            std::ceil(lane_slack * static_cast<double>(alone) * static_cast<double>(n) /
+                      static_cast<double>(of_part)));
     };
     const std::size_t first = meshes.empty() ? 0 : meshes[0].triangles();
     const std::size_t expected = first > alone ? (first - alone) / 2 : 0;
@@ -241,7 +235,7 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr,
-                                   Sharing sharing = Sharing::ByError) {
+                                   double lane_slack = kLaneSlack) {
     DecimateResult result;
     const std::size_t input_triangles = triangles_in(meshes);
     auto copy_input = [&] {
@@ -258,7 +252,7 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
             // The built mesh serves the first attempt; a retry (never seen) builds it again.
             Reduction r = reduce(attempt == 0 ? std::move(meshes) : build_checked(parts, part_of),
                                  target, attempt == 0 && snapshot ? snapshot_at : 0, settings,
-                                 min_twice_area, part_of, sharing);
+                                 min_twice_area, part_of, lane_slack);
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
@@ -341,7 +335,7 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
             to_intermediate.relocate_vertices = false;
             detailed = reduce_with_backoff(
                 handles_pin ? std::move(input) : build_checked(parts, part_of), parts, part_of,
-                inward_before, to_intermediate, min_twice_area, 0, nullptr, Sharing::BySize);
+                inward_before, to_intermediate, min_twice_area, 0, nullptr, kIntermediateLaneSlack);
         } else {
             detailed.parts = std::move(snapshot);
             detailed.triangles = count_triangles(detailed.parts);
