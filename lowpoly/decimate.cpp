@@ -113,13 +113,11 @@ struct Reduction {
 };
 
 // How far a lane (half a part, Lanes below) goes alone: down to its share of what its part
-// may keep, times this. The budget's reduction leaves half as much again, so the shared
-// order has collapses of both lanes to choose from; handle cutting's intermediate count,
-// which the reduction after the cuts shares by error again, none (the ternary's shared
-// order from 16k to 6.4k triangles took 11 ms on one core). Whole parts go alone down to
-// what all parts may keep: across parts the share is the shared order's, since a part
-// reduced below it (a crown of a few hulls beside a trunk of 10k triangles) could not get
-// its triangles back.
+// may keep, times this. For the budget half as much again, so that the shared order has
+// collapses of both lanes to choose from; for handle cutting's intermediate count, which
+// the reduction after the cuts shares by error again, its share. Whole parts go alone down
+// to what all parts may keep and share by error: a part reduced by its size (a crown of a
+// few hulls beside a trunk of 10k triangles) could not get its triangles back.
 constexpr double kLaneSlack = 1.5;
 constexpr double kIntermediateLaneSlack = 1.0;
 
