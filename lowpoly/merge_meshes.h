@@ -1,6 +1,6 @@
 // Several meshes as one (indices shifted, nothing welded): how the trunk and the crown are
 // measured together against a reference tree. And one mesh as several: its connected
-// components dealt into meshes of their own (how a large part is reduced on several cores).
+// components dealt into meshes of their own (how a large part is reduced on both cores).
 #pragma once
 
 #include <cstdint>

@@ -190,9 +190,9 @@ class CollapseMesh {
 // meshes' fronts. The bulk runs on a core per mesh: each collapses up to an error bound,
 // which the shared order would all make before any collapse above it (ties and re-filed
 // collapses aside); the last few hundred go one at a time. A part stops collapsing where
-// one more collapse would take it below
-// `part_floor` triangles; a part is one mesh, or with `part_of` (the part of each mesh) the
-// meshes it names alike. Returns early once `cancel` is set (polled every 256 steps).
+// one more collapse would take it below `part_floor` triangles; a part is one mesh, or with
+// `part_of` (the part of each mesh) the meshes it names alike. Returns early once `cancel`
+// is set (polled every 256 steps).
 void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles,
                        CancelFlag cancel = nullptr, std::size_t part_floor = 0,
                        std::span<const std::size_t> part_of = {});
