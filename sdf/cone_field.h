@@ -9,6 +9,7 @@
 // without visiting a single cone.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -45,15 +46,21 @@ class ConeField {
     const std::vector<CappedCone>& cones() const { return cones_; }
 
   private:
-    // A bounding sphere per cone (centre, radius): a cheap lower bound on its distance
-    // lets a sample skip the exact evaluation of cones that cannot change the result.
-    struct Bound {
-        glm::vec3 center;
-        float radius;
+    // A cone as its samples read it, in one cache line: its bounding sphere (a cheap lower
+    // bound on its distance lets a sample skip cones that cannot change the result) and its
+    // terms prepared once for its many samples, as four groups of four floats, so that four
+    // cones load and transpose into the lanes of a vector.
+    struct alignas(16) Packed {
+        glm::vec3 center{0.0f};
+        float radius = 0.0f;
+        PreparedCone cone;
+        float unused = 0.0f;
     };
+    // The hard union (no joint blend) of the cones `near` at p, four at a time.
+    float hard_union(const glm::vec3& p, std::span<const std::uint32_t> near) const;
+
     std::vector<CappedCone> cones_;
-    std::vector<PreparedCone> prepared_;  // cones_, each prepared once for its many samples
-    std::vector<Bound> bounds_;
+    std::vector<Packed> packed_;  // one per cone of cones_
     float margin_;
     float joint_blend_;
     BinGrid bins_;

@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <span>
@@ -500,6 +502,17 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
     return out;
 }
 
+double stages_wall_ms(const std::vector<StageTime>& times) {
+    double wall = 0.0, beside = 0.0;
+    for (const StageTime& stage : times) {
+        if (stage.name == "trunk mesh" || stage.name == "crown mesh" || stage.name == "leaves")
+            beside = std::max(beside, stage.ms);
+        else
+            wall += stage.ms;
+    }
+    return wall + beside;
+}
+
 Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Tree out;
     Skeleton mature;
@@ -560,35 +573,52 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
+    // The trunk, the crown and the leaves are made beside each other: each reads the fields
+    // alone, and what one leaves of the cores (the crown's bridges, a mesher's last blocks)
+    // the others take. Progress is the trunk's share of what its pieces have done on average
+    // plus the crown's of what it has done, reported one at a time so that it only rises;
+    // each stage's time is its own, so they overlap.
     const float trunk_share = mesh_crown ? 0.5f : 1.0f;
-    if (game_mesh) {
-        // The pieces meshed beside each other; progress is each one's share of what all have
-        // done.
-        const std::vector<ConeField>& pieces = fields.trunk_pieces;
-        std::vector<Mesh> meshed(pieces.size());
-        std::vector<std::atomic<float>> done(pieces.size());
-        tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t k) {
-            MeshOptions piece_options = options;
-            if (options.progress)
-                piece_options.progress = [&, k](float f) {
-                    done[k] = f;
-                    float all = 0.0f;
-                    for (const std::atomic<float>& d : done) all += d;
-                    options.progress(trunk_share * all / static_cast<float>(pieces.size()));
-                };
-            meshed[k] =
-                mesh_field(pieces[k], trunk_box, p.trunk_resolution, piece_options, 0.0f, 1.0f);
-        });
-        std::vector<const Mesh*> all;
-        for (const Mesh& m : meshed) all.push_back(&m);
-        out.trunk = merge_meshes(all);
-    } else {
-        out.trunk =
-            mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, options, 0.0f, trunk_share);
-    }
-    out.times.push_back({"trunk mesh", clock.lap_ms()});
-    if (mesh_crown) {
-        MeshOptions crown_options = options;
+    const std::vector<ConeField>& pieces = fields.trunk_pieces;
+    const std::size_t trunk_slots = std::max<std::size_t>(pieces.size(), 1);
+    std::vector<float> done(trunk_slots + 1, 0.0f);  // each trunk piece's fraction, the crown's
+    std::mutex reporting;
+    auto meshing_options = [&](std::size_t slot) {
+        MeshOptions part = options;
+        if (options.progress)
+            part.progress = [&, slot](float f) {
+                const std::lock_guard<std::mutex> one_at_a_time(reporting);
+                done[slot] = f;
+                float trunk = 0.0f;
+                for (std::size_t k = 0; k < trunk_slots; ++k) trunk += done[k];
+                options.progress(trunk_share * trunk / static_cast<float>(trunk_slots) +
+                                 (1.0f - trunk_share) * done[trunk_slots]);
+            };
+        return part;
+    };
+    double trunk_ms = 0.0, crown_ms = 0.0, leaves_ms = 0.0;
+    auto trunk = [&] {
+        Stopwatch own;
+        if (game_mesh) {
+            // The pieces meshed beside each other too.
+            std::vector<Mesh> meshed(pieces.size());
+            tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t k) {
+                meshed[k] = mesh_field(pieces[k], trunk_box, p.trunk_resolution, meshing_options(k),
+                                       0.0f, 1.0f);
+            });
+            std::vector<const Mesh*> all;
+            for (const Mesh& m : meshed) all.push_back(&m);
+            out.trunk = merge_meshes(all);
+        } else {
+            out.trunk = mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, meshing_options(0),
+                                   0.0f, 1.0f);
+        }
+        trunk_ms = own.lap_ms();
+    };
+    auto crown = [&] {
+        if (!mesh_crown) return;
+        Stopwatch own;
+        MeshOptions crown_options = meshing_options(trunk_slots);
         // Skipping empty space needs a distance bound; the Pasko-Savchenko blend is not one.
         if (!fields.crown->is_distance_bound() && options.mesher != Mesher::Dense)
             crown_options.mesher = Mesher::Dense;
@@ -597,17 +627,24 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         out.crown_bridges = bridges.size();
         if (bridges.empty()) {
             out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution,
-                                   crown_options, trunk_share, 1.0f);
+                                   crown_options, 0.0f, 1.0f);
         } else {
             const float cell = cell_size(fields.crown_box, p.crown_resolution);
             const ConeField struts(std::move(bridges), kFieldMarginInCells * cell);
             out.crown = mesh_field(BridgedCrown{*fields.crown, struts}, fields.crown_box,
-                                   p.crown_resolution, crown_options, trunk_share, 1.0f);
+                                   p.crown_resolution, crown_options, 0.0f, 1.0f);
         }
-        out.times.push_back({"crown mesh", clock.lap_ms()});
-    }
-    out.leaves = tree_leaves(out.skeleton, fields, p, options.cancel);
-    out.times.push_back({"leaves", clock.lap_ms()});
+        crown_ms = own.lap_ms();
+    };
+    auto leaves = [&] {
+        Stopwatch own;
+        out.leaves = tree_leaves(out.skeleton, fields, p, options.cancel);
+        leaves_ms = own.lap_ms();
+    };
+    tbb::parallel_invoke(trunk, crown, leaves);
+    out.times.push_back({"trunk mesh", trunk_ms});
+    if (mesh_crown) out.times.push_back({"crown mesh", crown_ms});
+    out.times.push_back({"leaves", leaves_ms});
     return out;
 }
 

@@ -32,9 +32,14 @@ struct Tree {
     std::size_t hidden_segments = 0;
     // The template's crown_shape: how a game mesh draws the crown unless its budget says.
     CrownShape crown_shape = CrownShape::Automatic;
-    // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves
+    // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
+    // the last three are made beside each other, each with its own time (stages_wall_ms)
     std::vector<StageTime> times;
 };
+
+// The wall time of `times`: the trunk mesh, the crown mesh and the leaves, made beside each
+// other, count as the longest of them.
+double stages_wall_ms(const std::vector<StageTime>& times);
 
 // How the fields become meshes; none of this changes the tree's shape beyond the mesher's
 // own sampling (all meshers share one grid).

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/tree_params.h"
+#include "tree/pipeline.h"
 
 namespace sylva::studio {
 namespace {
@@ -84,9 +85,7 @@ bool release_bench_done(ReleaseBench& bench, const StudioState& state) {
 }
 
 std::string release_bench_report(const ReleaseBench& bench, const StudioState& state) {
-    double generation_ms = 0.0;
-    if (state.tree)
-        for (const StageTime& stage : state.tree->tree.times) generation_ms += stage.ms;
+    const double generation_ms = state.tree ? stages_wall_ms(state.tree->tree.times) : 0.0;
     char text[360];
     std::snprintf(text, sizeof text,
                   "%s %s %g -> %g, %d frames, held %.0f ms: release -> game mesh on screen "

@@ -1,6 +1,7 @@
 // The fast fields against the folds they replace, bit for bit: the trunk's cones with their
-// constant terms prepared once, the crown's blend inlined, the bins' distance transform by
-// two chamfer passes. Meshes (and the golden export hashes) depend on every bit.
+// constant terms prepared once (and, without a joint blend, measured four at a time in SSE
+// lanes), the crown's blend inlined, the bins' distance transform by two chamfer passes.
+// Meshes (and the golden export hashes) depend on every bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -86,6 +86,25 @@ TEST(GrowthProgress, ThePipelineHandsItOn) {
     expect_rising_to_one(fractions);
 }
 
+TEST(MeshingProgress, RisesToOneWhileTrunkPiecesAndCrownAreMeshedBesideEachOther) {
+    // The ternary's game mesh: its trunk in pieces and its crown meshed at once, each
+    // reporting from its own threads; what the caller sees still only rises, to exactly 1.
+    // The progress is called one at a time: the vector needs no lock.
+    for (std::size_t budget : {std::size_t{0}, std::size_t{3000}}) {
+        std::vector<float> fractions;
+        MeshOptions options;
+        options.budget = budget;
+        options.progress = [&](float f) { fractions.push_back(f); };
+        const Tree tree = generate_tree(load_template("ternary"), options);
+        ASSERT_FALSE(tree.crown.triangles.empty());
+        SCOPED_TRACE(budget);
+        expect_rising_to_one(fractions);
+        // Both halves of the bar: the crown's half is not all at the end, nor the trunk's.
+        EXPECT_TRUE(std::any_of(fractions.begin(), fractions.end(),
+                                [](float f) { return f > 0.1f && f < 0.9f; }));
+    }
+}
+
 // Runs `work` with the flag set 50 ms in; the seconds from setting it to the throw.
 double seconds_to_cancel(const std::function<void(CancelFlag)>& work) {
     std::atomic<bool> cancel{false};
