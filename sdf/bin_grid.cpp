@@ -90,11 +90,6 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
         return static_cast<size_t>((z * dims_.y + y) * dims_.x + x);
     };
     const float bin_radius = 0.5f * std::sqrt(3.0f) * bin_size_;
-    auto keep = [&](size_t i, int x, int y, int z) {
-        if (!overlaps) return true;
-        glm::vec3 centre = origin_ + (glm::vec3(x, y, z) + 0.5f) * bin_size_;
-        return overlaps(i, centre, bin_radius);
-    };
     // Each box's bins, tested once (the overlap test is a primitive's distance per bin; the
     // boxes are tested in parallel, in chunks kept in box order), then a counting sort into
     // a compact CSR layout with items in box order. Small chunks: a crown sphere covers
@@ -104,15 +99,24 @@ BinGrid::BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> listed(chunks);  // bin, box
     tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
         if (is_cancelled(cancel)) return;
+        std::vector<glm::vec3> centres;
+        std::vector<std::uint32_t> bins;
+        std::vector<std::uint8_t> keep;
         for (std::size_t i = c * kChunk; i < std::min(boxes.size(), (c + 1) * kChunk); ++i) {
             glm::ivec3 lo, hi;
             range(boxes[i], lo, hi);
+            centres.clear();
+            bins.clear();
             for (int z = lo.z; z <= hi.z; ++z)
                 for (int y = lo.y; y <= hi.y; ++y)
-                    for (int x = lo.x; x <= hi.x; ++x)
-                        if (keep(i, x, y, z))
-                            listed[c].emplace_back(static_cast<std::uint32_t>(index(x, y, z)),
-                                                   static_cast<std::uint32_t>(i));
+                    for (int x = lo.x; x <= hi.x; ++x) {
+                        centres.push_back(origin_ + (glm::vec3(x, y, z) + 0.5f) * bin_size_);
+                        bins.push_back(static_cast<std::uint32_t>(index(x, y, z)));
+                    }
+            keep.assign(bins.size(), 1);
+            if (overlaps) overlaps(i, centres, bin_radius, keep);
+            for (std::size_t j = 0; j < bins.size(); ++j)
+                if (keep[j]) listed[c].emplace_back(bins[j], static_cast<std::uint32_t>(i));
         }
     });
     throw_if_cancelled(cancel);

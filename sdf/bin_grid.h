@@ -32,14 +32,17 @@ class BinGrid {
     BinGrid() = default;
     // About `bins_along_longest` bins along the longest side of all boxes together, but no
     // bin smaller than `min_bin_size` (smaller bins would repeat boxes without culling more).
-    // `overlaps(i, centre, radius)`, when given, refines box i's bins: a bin is kept only if
-    // it returns true for the ball (centre, radius) around the bin, so long diagonal
-    // primitives are not listed in every bin of their bounding box.
+    // `overlaps(i, centres, radius, keep)`, when given, refines box i's bins: it is called
+    // once per box with the centres of all the bins of its box, and a bin stays listed only
+    // if it sets keep[j] (which comes in as 1) for the ball (centres[j], radius) around bin j;
+    // so long diagonal primitives are not listed in every bin of their bounding box, and a
+    // field may test a primitive against several bins at once.
     // `overlaps` is called from several threads at once (boxes are binned in parallel); the
     // result does not depend on the thread count. Throws Cancelled once `cancel` is set
     // (polled per 256 boxes: a grid over tens of thousands of cones takes a noticeable time
     // to build).
-    using Overlap = std::function<bool(std::size_t, const glm::vec3&, float)>;
+    using Overlap = std::function<void(std::size_t, std::span<const glm::vec3>, float,
+                                       std::span<std::uint8_t>)>;
     BinGrid(std::span<const Aabb> boxes, float min_bin_size, int bins_along_longest = 64,
             const Overlap& overlaps = {}, CancelFlag cancel = nullptr);
 

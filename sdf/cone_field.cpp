@@ -140,8 +140,30 @@ ConeField::ConeField(std::vector<CappedCone> cones, float margin, float joint_bl
     const float inflation = margin_ + joint_blend_;
     bins_ = BinGrid(
         boxes, kMinBinInMargins * margin_, 40,
-        [&](size_t i, const glm::vec3& centre, float radius) {
-            return distance(packed_[i].cone, centre) < inflation + radius;
+        [&](size_t i, std::span<const glm::vec3> centres, float radius,
+            std::span<std::uint8_t> keep) {
+            const PreparedCone& cone = packed_[i].cone;
+            std::size_t j = 0;
+#if defined(__SSE2__)
+            // Four bins at a time: the cone in every lane, a bin's centre in each.
+            const __m128 a[4] = {_mm_set1_ps(cone.a.x), _mm_set1_ps(cone.a.y),
+                                 _mm_set1_ps(cone.a.z), _mm_set1_ps(cone.ba.x)};
+            const __m128 b[4] = {_mm_set1_ps(cone.ba.y), _mm_set1_ps(cone.ba.z),
+                                 _mm_set1_ps(cone.ra), _mm_set1_ps(cone.rb)};
+            const __m128 c[4] = {_mm_set1_ps(cone.rba), _mm_set1_ps(cone.baba), _mm_set1_ps(cone.k),
+                                 _mm_setzero_ps()};
+            const __m128 reach = _mm_set1_ps(inflation + radius);
+            for (; j + 4 <= centres.size(); j += 4) {
+                const glm::vec3* q = &centres[j];
+                const __m128 x = _mm_setr_ps(q[0].x, q[1].x, q[2].x, q[3].x);
+                const __m128 y = _mm_setr_ps(q[0].y, q[1].y, q[2].y, q[3].y);
+                const __m128 z = _mm_setr_ps(q[0].z, q[1].z, q[2].z, q[3].z);
+                const int near = _mm_movemask_ps(_mm_cmplt_ps(distance4(a, b, c, x, y, z), reach));
+                for (int l = 0; l < 4; ++l) keep[j + l] = (near >> l) & 1;
+            }
+#endif
+            for (; j < centres.size(); ++j)
+                keep[j] = distance(cone, centres[j]) < inflation + radius;
         },
         cancel);
 }

@@ -54,8 +54,10 @@ SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, Sph
         boxes.push_back({b.center - r, b.center + r});
     }
     bins_ = BinGrid(boxes, kMinBinInMargins * margin_, 40,
-                    [&](size_t i, const glm::vec3& centre, float radius) {
-                        return distance(balls_[i], centre) < margin_ + radius;
+                    [&](size_t i, std::span<const glm::vec3> centres, float radius,
+                        std::span<std::uint8_t> keep) {
+                        for (std::size_t j = 0; j < centres.size(); ++j)
+                            keep[j] = distance(balls_[i], centres[j]) < margin_ + radius;
                     });
 }
 

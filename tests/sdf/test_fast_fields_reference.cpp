@@ -57,8 +57,11 @@ class ReferenceConeField {
         }
         const float inflation = margin_ + joint_blend_;
         bins_ = BinGrid(boxes, kMinBinInMargins * margin_, 40,
-                        [&](size_t i, const glm::vec3& centre, float radius) {
-                            return reference_distance(cones_[i], centre) < inflation + radius;
+                        [&](size_t i, std::span<const glm::vec3> centres, float radius,
+                            std::span<std::uint8_t> keep) {
+                            for (std::size_t j = 0; j < centres.size(); ++j)
+                                keep[j] =
+                                    reference_distance(cones_[i], centres[j]) < inflation + radius;
                         });
     }
 
@@ -256,8 +259,10 @@ TEST(SphereFieldReference, SameBitsAsTheFoldWithTheBlendCalled) {
             boxes.push_back({b.center - rr, b.center + rr});
         }
         const BinGrid bins(boxes, kMinBinInMargins * margin, 40,
-                           [&](size_t i, const glm::vec3& centre, float radius) {
-                               return distance(balls[i], centre) < margin + radius;
+                           [&](size_t i, std::span<const glm::vec3> centres, float radius,
+                               std::span<std::uint8_t> keep) {
+                               for (std::size_t j = 0; j < centres.size(); ++j)
+                                   keep[j] = distance(balls[i], centres[j]) < margin + radius;
                            });
         for (int i = 0; i < 30000; ++i) {
             glm::vec3 p{v(rng), v(rng), v(rng)};
