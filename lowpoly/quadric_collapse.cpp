@@ -94,9 +94,10 @@ bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_pa
         }
     }
     const std::size_t halfedges = corner_.size();
-    // Halfedges leaving each vertex (CSR, with where each goes); the opposite of a -> b is
-    // among those leaving b.
-    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges), leaving_to(halfedges);
+    // Halfedges leaving each vertex (CSR), with where each goes and where the halfedge
+    // before it in its triangle (one entering the vertex) comes from.
+    std::vector<std::uint32_t> first(nv + 1, 0), leaving(halfedges), leaving_to(halfedges),
+        entering_from(halfedges);
     for (std::uint32_t v : corner_) ++first[v + 1];
     for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
     {
@@ -105,22 +106,34 @@ bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_pa
             const std::uint32_t i = fill[corner_[h]]++;
             leaving[i] = h;
             leaving_to[i] = to(h);
+            entering_from[i] = corner_[prev(h)];
         }
     }
     // The opposites and the fans are found on every core; a failure reports the part of the
-    // first failing halfedge or vertex, as one pass in order would.
+    // first failing halfedge or vertex, as one pass in order would. The opposite of a -> b is
+    // the one halfedge b -> a: entering a, so among a's own lists (read in order, where b's
+    // would be anywhere in memory: the search took 2.8 of the ternary trunk's 4.4 ms at 3000
+    // triangles). None is a boundary or misoriented, two or more non-manifold or misoriented.
     opposite_.assign(halfedges, kNone);
-    const std::size_t bad_halfedge = first_failing(halfedges, [&](std::size_t h) {
-        const std::uint32_t a = corner_[h], b = to(static_cast<std::uint32_t>(h));
-        std::uint32_t found = kNone;
-        for (std::uint32_t i = first[b]; i < first[b + 1]; ++i) {
-            if (leaving_to[i] != a) continue;
-            if (found != kNone) return false;  // non-manifold or misoriented
-            found = leaving[i];
-        }
-        opposite_[h] = found;
-        return found != kNone;  // else a boundary, or misoriented
-    });
+    const std::size_t bad_halfedge = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, nv, 1024), std::size_t{halfedges},
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t first_bad) {
+            for (std::size_t a = r.begin(); a < r.end(); ++a)
+                for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
+                    std::uint32_t found = kNone, matches = 0;
+                    for (std::uint32_t j = first[a]; j < first[a + 1]; ++j) {
+                        const bool match = entering_from[j] == leaving_to[i];
+                        matches += match;
+                        found = match ? prev(leaving[j]) : found;
+                    }
+                    if (matches == 1)
+                        opposite_[leaving[i]] = found;
+                    else
+                        first_bad = std::min<std::size_t>(first_bad, leaving[i]);
+                }
+            return first_bad;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
     if (bad_halfedge < halfedges) return fail(face_part[bad_halfedge / 3]);
     const std::size_t unpaired =
         first_failing(halfedges, [&](std::size_t h) { return opposite_[opposite_[h]] == h; });
