@@ -59,13 +59,6 @@ std::size_t inward_pieces(const Mesh& mesh) {
         std::count_if(volumes.begin(), volumes.end(), [](double v) { return !(v > 0.0); }));
 }
 
-std::vector<std::size_t> inward_pieces(std::span<const Mesh* const> parts) {
-    std::vector<std::size_t> inward(parts.size(), 0);
-    tbb::parallel_for(std::size_t{0}, parts.size(),
-                      [&](std::size_t k) { inward[k] = inward_pieces(*parts[k]); });
-    return inward;
-}
-
 // One CollapseMesh per part (built in parallel; each part is reduced on its own thread
 // first, see reduce()); throws InputError naming the first part that is not a closed
 // 2-manifold (zero-area triangles are fine: marching cubes on a very fine grid makes some,
@@ -197,7 +190,6 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
 // Why a reduction of `input` is not acceptable (empty when it is): a part vanished, is not
 // a closed 2-manifold, or has more inside-out pieces than the input had.
 std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const> input,
-                   const std::vector<std::size_t>& inward_before,
                    std::span<const std::size_t> part_of) {
     // Each part checked on a core of its own; the first part's reason wins.
     std::vector<std::string> why(reduced.size());
@@ -214,8 +206,10 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
         }
         // Collapses guard each triangle's turn, but a small piece can still fold through
         // itself and come out inside out: closed, yet with no volume. (An inner shell, the
-        // wall of a hollow, is inward by nature: count only new ones.)
-        if (inward_pieces(reduced[k]) > inward_before[k])
+        // wall of a hollow, is inward by nature: count only new ones. The input's are
+        // counted only then: most reductions have none, and the input is the larger mesh.)
+        const std::size_t inward = inward_pieces(reduced[k]);
+        if (inward > 0 && inward > inward_pieces(*input[k]))
             why[k] = "part " + std::to_string(part_of[k]) + " had an inside-out piece";
     });
     for (std::string& w : why)
@@ -224,12 +218,11 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 }
 
 // Reduction with the safety net: a result that fails check_topology is redone with fewer
-// collapses, down to returning the input. `inward_before` is inward_pieces(parts). With
+// collapses, down to returning the input. With
 // snapshot_at > 0, *snapshot gets the parts at that many triangles (or the input, if it has
 // no more), unchecked: most reductions never need it.
 DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* const> parts,
                                    std::span<const std::size_t> part_of,
-                                   const std::vector<std::size_t>& inward_before,
                                    const DecimateSettings& settings, double min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr,
@@ -254,7 +247,7 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
             result.parts = std::move(r.parts);
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
-            const std::string why = broken(result.parts, parts, inward_before, part_of);
+            const std::string why = broken(result.parts, parts, part_of);
             if (why.empty()) break;
             ++result.backoffs;
             // Fewer collapses: halfway back towards the input each time.
@@ -280,8 +273,8 @@ DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
                                    const DecimateSettings& settings, double min_twice_area) {
     std::vector<const Mesh*> pointers;
     for (const Mesh& m : meshes) pointers.push_back(&m);
-    return reduce_with_backoff(build_checked(pointers, part_of), pointers, part_of,
-                               inward_pieces(pointers), settings, min_twice_area);
+    return reduce_with_backoff(build_checked(pointers, part_of), pointers, part_of, settings,
+                               min_twice_area);
 }
 
 // decimate() on the lanes (Lanes): `parts` are the meshes reduced, each of part part_of[k].
@@ -303,8 +296,6 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
     // Where handles are cut: the parts still have detail there (a few times the floor), so
     // the final reduction can still share the budget well between the parts.
     const std::size_t intermediate = 4 * std::max(settings.max_triangles, floor);
-    // Inside-out pieces of the input: a reduction may not add any (broken()).
-    const std::vector<std::size_t> inward_before = inward_pieces(parts);
     DecimateResult result;
     std::vector<Mesh> snapshot;
     // The snapshot holds the parts' own reductions at the intermediate count, so the passes
@@ -314,8 +305,8 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
     // seeds x budgets 300-3000 missed only with floors at 72-99% of the budget).
     const bool keep_snapshot = settings.cut_handles && 3 * floor > 2 * settings.max_triangles;
     if (!handles_pin)
-        result = reduce_with_backoff(std::move(input), parts, part_of, inward_before, settings,
-                                     min_twice_area, keep_snapshot ? intermediate : 0, &snapshot);
+        result = reduce_with_backoff(std::move(input), parts, part_of, settings, min_twice_area,
+                                     keep_snapshot ? intermediate : 0, &snapshot);
 
     // Over budget at the floor: handles pin the remaining triangles. Cut them, shortest
     // loops first, then reduce the cut parts to the budget; repeat while it helps.
@@ -325,15 +316,14 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
         DecimateSettings quiet = settings;
         quiet.progress = nullptr;
         DecimateResult detailed;
-        if (handles_pin || snapshot.empty() ||
-            !broken(snapshot, parts, inward_before, part_of).empty()) {
+        if (handles_pin || snapshot.empty() || !broken(snapshot, parts, part_of).empty()) {
             DecimateSettings to_intermediate = handles_pin ? settings : quiet;
             to_intermediate.max_triangles = intermediate;
             // Unrelocated like the snapshot: the vertices stay on the input surface.
             to_intermediate.relocate_vertices = false;
             detailed = reduce_with_backoff(
                 handles_pin ? std::move(input) : build_checked(parts, part_of), parts, part_of,
-                inward_before, to_intermediate, min_twice_area, 0, nullptr, kIntermediateLaneSlack);
+                to_intermediate, min_twice_area, 0, nullptr, kIntermediateLaneSlack);
         } else {
             detailed.parts = std::move(snapshot);
             detailed.triangles = count_triangles(detailed.parts);

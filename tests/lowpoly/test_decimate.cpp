@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include "core/errors.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
+#include "lowpoly/merge_meshes.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
 
@@ -135,6 +137,24 @@ TEST(Decimate, APartInPiecesIsReducedInTwoLanesAndComesBackWhole) {
         EXPECT_EQ(a.parts[k].positions, b.parts[k].positions);
         EXPECT_EQ(a.parts[k].triangles, b.parts[k].triangles);
     }
+}
+
+// A hollow ball: an outer sphere and, inside it, a smaller one turned inward (the wall of the
+// hollow, negative volume by nature). The inner shell was there before, so the reduction is
+// no breakage: it is reduced with the rest, not backed off from. Checked to fail when the
+// input's inward pieces are not counted (every reduction returned unreduced).
+TEST(Decimate, AnInnerShellOfTheInputIsReducedNotTakenForBreakage) {
+    Mesh hollow = sphere(40);
+    Mesh inner = sphere(24, glm::vec3(0.0f), 0.5f);
+    for (auto& t : inner.triangles) std::swap(t[1], t[2]);
+    const Mesh* both[] = {&hollow, &inner};
+    hollow = merge_meshes(both);
+    const DecimateResult r = decimate(hollow, budget(400));
+    EXPECT_TRUE(r.within_budget) << r.note;
+    EXPECT_EQ(r.backoffs, 0) << r.note;
+    const std::vector<double> volumes = component_volumes(r.parts[0]);
+    ASSERT_EQ(volumes.size(), 2u);
+    EXPECT_EQ(std::count_if(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; }), 1);
 }
 
 TEST(Decimate, BudgetAboveTheInputReturnsItUnchanged) {
