@@ -20,6 +20,9 @@ namespace sylva {
 struct StageTime {
     std::string name;
     double ms = 0.0;
+    // Made at the same time as the other stages marked so: together they took the longest
+    // of their times (stages_wall_ms in tree/pipeline.h), not the sum.
+    bool beside_others = false;
 };
 
 struct GrowthContext {

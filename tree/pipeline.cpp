@@ -85,11 +85,9 @@ std::optional<ConeField> trunk_field(std::span<const Segment> segments, float ce
         joint_blend, cancel);
 }
 
-// Meshes a field with the chosen mesher; this part reports its progress as the slice
-// [progress_begin, progress_end] of the whole meshing stage.
+// Meshes a field with the chosen mesher, reporting its progress to options.progress.
 template <class Field>
-Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOptions& options,
-                float progress_begin, float progress_end) {
+Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOptions& options) {
     const BatchField batch = [&field](std::span<const glm::vec3> points, std::span<float> values) {
         field.evaluate(points, values);
     };
@@ -99,10 +97,7 @@ Mesh mesh_field(const Field& field, const Box& box, int resolution, const MeshOp
     settings.resolution = resolution;
     settings.threads = options.threads;
     settings.cancel = options.cancel;
-    if (options.progress)
-        settings.progress = [&options, progress_begin, progress_end](float f) {
-            options.progress(progress_begin + (progress_end - progress_begin) * f);
-        };
+    settings.progress = options.progress;
     return mesh(batch, box, settings);
 }
 
@@ -514,7 +509,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
 double stages_wall_ms(const std::vector<StageTime>& times) {
     double wall = 0.0, beside = 0.0;
     for (const StageTime& stage : times) {
-        if (stage.name == "trunk mesh" || stage.name == "crown mesh" || stage.name == "leaves")
+        if (stage.beside_others)
             beside = std::max(beside, stage.ms);
         else
             wall += stage.ms;
@@ -612,15 +607,15 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             // The pieces meshed beside each other too.
             std::vector<Mesh> meshed(pieces.size());
             tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t k) {
-                meshed[k] = mesh_field(pieces[k], trunk_box, p.trunk_resolution, meshing_options(k),
-                                       0.0f, 1.0f);
+                meshed[k] =
+                    mesh_field(pieces[k], trunk_box, p.trunk_resolution, meshing_options(k));
             });
             std::vector<const Mesh*> all;
             for (const Mesh& m : meshed) all.push_back(&m);
             out.trunk = merge_meshes(all);
         } else {
-            out.trunk = mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, meshing_options(0),
-                                   0.0f, 1.0f);
+            out.trunk =
+                mesh_field(*fields.trunk, trunk_box, p.trunk_resolution, meshing_options(0));
         }
         trunk_ms = own.lap_ms();
     };
@@ -635,13 +630,13 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
             crown_bridge_cones(*fields.crown, options.budget, p, fields.crown_box);
         out.crown_bridges = bridges.size();
         if (bridges.empty()) {
-            out.crown = mesh_field(*fields.crown, fields.crown_box, p.crown_resolution,
-                                   crown_options, 0.0f, 1.0f);
+            out.crown =
+                mesh_field(*fields.crown, fields.crown_box, p.crown_resolution, crown_options);
         } else {
             const float cell = cell_size(fields.crown_box, p.crown_resolution);
             const ConeField struts(std::move(bridges), kFieldMarginInCells * cell);
             out.crown = mesh_field(BridgedCrown{*fields.crown, struts}, fields.crown_box,
-                                   p.crown_resolution, crown_options, 0.0f, 1.0f);
+                                   p.crown_resolution, crown_options);
         }
         crown_ms = own.lap_ms();
     };
@@ -651,9 +646,9 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         leaves_ms = own.lap_ms();
     };
     tbb::parallel_invoke(trunk, crown, leaves);
-    out.times.push_back({"trunk mesh", trunk_ms});
-    if (mesh_crown) out.times.push_back({"crown mesh", crown_ms});
-    out.times.push_back({"leaves", leaves_ms});
+    out.times.push_back({"trunk mesh", trunk_ms, true});
+    if (mesh_crown) out.times.push_back({"crown mesh", crown_ms, true});
+    out.times.push_back({"leaves", leaves_ms, true});
     return out;
 }
 

@@ -37,8 +37,8 @@ struct Tree {
     std::vector<StageTime> times;
 };
 
-// The wall time of `times`: the trunk mesh, the crown mesh and the leaves, made beside each
-// other, count as the longest of them.
+// The wall time of `times`: the stages made beside each other (StageTime::beside_others:
+// the trunk mesh, the crown mesh and the leaves) count as the longest of them.
 double stages_wall_ms(const std::vector<StageTime>& times);
 
 // How the fields become meshes; none of this changes the tree's shape beyond the mesher's
