@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace sylva {
@@ -23,6 +24,7 @@ struct DisjointSets {
         a = find(a);
         b = find(b);
         if (a == b) return false;
+        if (a < b) std::swap(a, b);
         parent[a] = b;
         return true;
     }
