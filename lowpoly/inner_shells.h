@@ -5,15 +5,19 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "core/mesh.h"
 
 namespace sylva {
 
-// Removes every connected component whose signed volume is not positive (an inner shell,
-// or a degenerate sliver), and the vertices only they used; the triangles left keep their
-// order.
-// Returns the number of components removed.
+// The mesh without every connected component whose signed volume is not positive (an inner
+// shell, or a degenerate sliver) and the vertices only they used, the triangles left in
+// their order; nothing when it has no such component (most meshes: no copy is made).
+// `removed`, when given, gets the number of components left out.
+std::optional<Mesh> without_inner_shells(const Mesh& mesh, std::size_t* removed = nullptr);
+
+// The same in place; returns the number of components removed.
 std::size_t remove_inner_shells(Mesh& mesh);
 
 }  // namespace sylva

@@ -171,20 +171,27 @@ TreeBudget shaped_for(TreeBudget budget, const Tree& tree) {
 }
 
 // The tree's trunk and crown without inner shells: hollows are invisible and only cost
-// triangles (lowpoly/inner_shells.h).
-std::pair<Mesh, Mesh> solids_to_reduce(const Tree& tree) {
-    std::pair<Mesh, Mesh> solids;
-    tbb::parallel_invoke(
-        [&] {
-            solids.first = tree.trunk;
-            remove_inner_shells(solids.first);
-        },
-        [&] {
-            solids.second = tree.crown;
-            remove_inner_shells(solids.second);
-        });
-    return solids;
-}
+// triangles (lowpoly/inner_shells.h). A part without any (most) is the tree's own, not a
+// copy; the tree must outlive this.
+class SolidsToReduce {
+  public:
+    explicit SolidsToReduce(const Tree& tree) : trunk_(&tree.trunk), crown_(&tree.crown) {
+        tbb::parallel_invoke([&] { own_trunk_ = without_inner_shells(tree.trunk); },
+                             [&] { own_crown_ = without_inner_shells(tree.crown); });
+        if (own_trunk_) trunk_ = &*own_trunk_;
+        if (own_crown_) crown_ = &*own_crown_;
+    }
+    SolidsToReduce(const SolidsToReduce&) = delete;
+    SolidsToReduce& operator=(const SolidsToReduce&) = delete;
+
+    const Mesh& trunk() const { return *trunk_; }
+    const Mesh& crown() const { return *crown_; }
+
+  private:
+    std::optional<Mesh> own_trunk_, own_crown_;  // made only for a part with inner shells
+    const Mesh* trunk_;
+    const Mesh* crown_;
+};
 
 float lowest_y(const Mesh& mesh) {
     float y = std::numeric_limits<float>::max();
@@ -242,9 +249,9 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
 
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
-    const auto [trunk, crown] = solids_to_reduce(tree);
-    ReducedTree out = reduce_shaped(trunk, crown, crown, shaped_for(budget, tree),
-                                    with_foot(settings, tree.trunk));
+    const SolidsToReduce solids(tree);
+    ReducedTree out = reduce_shaped(solids.trunk(), solids.crown(), solids.crown(),
+                                    shaped_for(budget, tree), with_foot(settings, tree.trunk));
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
     out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
     return out;
@@ -276,11 +283,11 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     std::vector<ReducedTree> levels;
     if (level0 && !budgets.empty()) levels.push_back(std::move(*level0));
     const float ground = lowest_y(tree.trunk);
-    const auto [finest_trunk, finest_crown] = solids_to_reduce(tree);
+    const SolidsToReduce finest(tree);
     for (const TreeBudget& budget : budgets.subspan(levels.size())) {
-        const Mesh& trunk = levels.empty() ? finest_trunk : levels.back().trunk;
-        const Mesh& crown = levels.empty() ? finest_crown : levels.back().crown;
-        ReducedTree level = reduce_shaped(trunk, crown, finest_crown, shaped_for(budget, tree),
+        const Mesh& trunk = levels.empty() ? finest.trunk() : levels.back().trunk;
+        const Mesh& crown = levels.empty() ? finest.crown() : levels.back().crown;
+        ReducedTree level = reduce_shaped(trunk, crown, finest.crown(), shaped_for(budget, tree),
                                           with_foot(settings, tree.trunk));
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
