@@ -65,6 +65,9 @@ Mesh meshopt_reduce(const Mesh& m, std::size_t target) {
     return out;
 }
 
+// Each export (and meshopt's simplify) is timed this many times in a row; the fastest counts.
+constexpr int kRuns = 3;
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
@@ -93,9 +96,9 @@ int main(int argc, char** argv) {
 
     for (std::size_t budget : {200, 800, 3000}) {
         std::printf("budget %zu (trunk + crown; leaves thinned to the same number)\n", budget);
-        std::printf("%-9s %7s %9s %7s %5s %9s %10s %7s %7s\n", "template", "raw", "export ms",
-                    "1 core", "cores", "reduce ms", "meshopt ms", "ratio", "closed");
-        std::vector<double> exports, ratios, halves;
+        std::printf("%-9s %7s %9s %7s %7s %5s %9s %10s %7s %7s\n", "template", "raw", "export ms",
+                    "first", "1 core", "cores", "reduce ms", "meshopt ms", "ratio", "closed");
+        std::vector<double> exports, firsts, ratios, halves;
         for (const std::string& name : names) {
             const TreeTemplate tmpl = load_template(name);
             FinishSettings finish;
@@ -103,21 +106,43 @@ int main(int argc, char** argv) {
             MeshOptions options;
             options.budget = game_budget(finish);
 
-            Stopwatch whole;
-            const Tree tree = generate_tree(tmpl, options);
-            Stopwatch reduce;
-            const FinishedTree finished = finish_tree(tree, finish);
-            const double reduce_ms = reduce.lap_ms();
-            write_tree(out, tree, finished, tmpl.colors);
-            const double write_ms = reduce.lap_ms();
-            const double export_ms = whole.lap_ms();
+            // The export kRuns times in a row, the fastest counting: the first of a tree larger
+            // than any before grows the heap (a first touch of a page costs microseconds
+            // here), as it does once in the studio; the others are what each export after it
+            // takes. The first is shown beside it.
+            double export_ms = 0.0, first_ms = 0.0, reduce_ms = 0.0, write_ms = 0.0;
+            Tree tree;
+            FinishedTree finished;
+            for (int run = 0; run < kRuns; ++run) {
+                Stopwatch whole;
+                Tree made = generate_tree(tmpl, options);
+                Stopwatch reduce;
+                FinishedTree done = finish_tree(made, finish);
+                const double made_reduce_ms = reduce.lap_ms();
+                write_tree(out, made, done, tmpl.colors);
+                const double made_write_ms = reduce.lap_ms();
+                const double ms = whole.lap_ms();
+                if (run == 0) first_ms = ms;
+                if (run == 0 || ms < export_ms) {
+                    export_ms = ms;
+                    reduce_ms = made_reduce_ms;
+                    write_ms = made_write_ms;
+                    tree = std::move(made);
+                    finished = std::move(done);
+                }
+            }
 
             const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
             const std::size_t trunk_share = budget * tree.trunk.triangles.size() / raw;
-            Stopwatch peer;
-            const Mesh trunk = meshopt_reduce(tree.trunk, trunk_share);
-            const Mesh crown = meshopt_reduce(tree.crown, budget - trunk_share);
-            const double meshopt_ms = peer.lap_ms();
+            double meshopt_ms = 0.0;
+            Mesh trunk, crown;
+            for (int run = 0; run < kRuns; ++run) {  // the fastest, as Sylva's
+                Stopwatch peer;
+                trunk = meshopt_reduce(tree.trunk, trunk_share);
+                crown = meshopt_reduce(tree.crown, budget - trunk_share);
+                const double ms = peer.lap_ms();
+                if (run == 0 || ms < meshopt_ms) meshopt_ms = ms;
+            }
 
             double one_core_ms = 0.0;
             {
@@ -132,9 +157,10 @@ int main(int argc, char** argv) {
             const ReducedTree& r = finished.levels.at(0);
             const bool ours = closed(r.trunk) && closed(r.crown);
             const bool theirs = closed(trunk) && closed(crown);
-            std::printf("%-9s %7zu %9.1f %7.1f %5.2f %9.1f %10.1f %6.1fx %3s/%-3s\n", name.c_str(),
-                        raw, export_ms, one_core_ms, one_core_ms / export_ms, reduce_ms, meshopt_ms,
-                        export_ms / meshopt_ms, ours ? "yes" : "NO", theirs ? "yes" : "no");
+            std::printf("%-9s %7zu %9.1f %7.1f %7.1f %5.2f %9.1f %10.1f %6.1fx %3s/%-3s\n",
+                        name.c_str(), raw, export_ms, first_ms, one_core_ms,
+                        one_core_ms / export_ms, reduce_ms, meshopt_ms, export_ms / meshopt_ms,
+                        ours ? "yes" : "NO", theirs ? "yes" : "no");
             if (stages) {
                 std::printf("%9s", "");
                 for (const StageTime& stage : tree.times)
@@ -143,15 +169,18 @@ int main(int argc, char** argv) {
             }
             std::fflush(stdout);
             exports.push_back(export_ms);
+            firsts.push_back(first_ms);
             ratios.push_back(export_ms / meshopt_ms);
             halves.push_back(0.5 * one_core_ms);
         }
         std::printf(
             "export: median %.1f ms, worst %.1f ms (targets 25 / 50 ms); "
             "export / meshopt_simplify alone: median %.1fx (target <= 1)\n"
+            "the first of each tree: median %.1f ms, worst %.1f ms\n"
             "both cores busy all the way (half of one core's): median %.1f ms, worst %.1f ms\n\n",
             median(exports), *std::max_element(exports.begin(), exports.end()), median(ratios),
-            median(halves), *std::max_element(halves.begin(), halves.end()));
+            median(firsts), *std::max_element(firsts.begin(), firsts.end()), median(halves),
+            *std::max_element(halves.begin(), halves.end()));
     }
     std::filesystem::remove(out);
     return 0;
