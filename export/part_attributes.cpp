@@ -1,5 +1,8 @@
 #include "export/part_attributes.h"
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -269,10 +272,53 @@ TreeFrame tree_frame(const Mesh& trunk, const Mesh& crown, const Mesh& leaves) {
 
 namespace {
 
+// On every core: each vertex scans the segments of its cell (a dense twig tree's trunk took
+// a millisecond alone).
 std::vector<int> owning_segments(const Mesh& mesh, const SegmentGrid& grid) {
     std::vector<int> owner(mesh.positions.size());
-    for (std::size_t v = 0; v < owner.size(); ++v) owner[v] = grid.nearest(mesh.positions[v]);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, owner.size(), 256), [&](const auto& r) {
+        for (std::size_t v = r.begin(); v < r.end(); ++v)
+            owner[v] = grid.nearest(mesh.positions[v]);
+    });
     return owner;
+}
+
+// Triangle i's bark UVs: its corners' on their segments, a fork's all on the branch of its
+// middle, spanning the shorter way round the branch.
+std::array<glm::vec2, 3> bark_uvs(const Branches& b, const Skeleton& skeleton,
+                                  const SegmentGrid& grid, const std::vector<int>& owner,
+                                  const Mesh& trunk, std::size_t triangle) {
+    const auto& segs = skeleton.segments;
+    const auto& t = trunk.triangles[triangle];
+    auto root_of = [&](int s) { return s < 0 ? -1 : b.root[static_cast<std::size_t>(s)]; };
+    std::array<glm::vec2, 3> uv{};
+    // A fork's triangles take the branch of their middle, all three corners alike.
+    int s = owner[t[0]];
+    if (root_of(owner[t[1]]) != root_of(s) || root_of(owner[t[2]]) != root_of(s))
+        s = grid.nearest((trunk.positions[t[0]] + trunk.positions[t[1]] + trunk.positions[t[2]]) /
+                         3.0f);
+    if (s >= 0) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const int own = root_of(owner[t[k]]) == root_of(s) ? owner[t[k]] : s;
+            uv[k] = bark_uv(b, static_cast<std::size_t>(own), segs[static_cast<std::size_t>(own)],
+                            trunk.positions[t[k]]);
+        }
+        // No triangle wraps around the branch: it spans the shorter way round,
+        // the complement of the widest gap between its corners' u on the circle.
+        const float repeats = static_cast<float>(b.repeats[static_cast<std::size_t>(root_of(s))]);
+        std::array<std::size_t, 3> order{0, 1, 2};
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t i, std::size_t j) { return uv[i].x < uv[j].x; });
+        const float lo = uv[order[0]].x, mid = uv[order[1]].x, hi = uv[order[2]].x;
+        const float gap_low = mid - lo, gap_high = hi - mid, gap_wrap = repeats - (hi - lo);
+        if (gap_low > gap_wrap && gap_low >= gap_high) {
+            uv[order[0]].x += repeats;
+        } else if (gap_high > gap_wrap && gap_high > gap_low) {
+            uv[order[0]].x += repeats;
+            uv[order[1]].x += repeats;
+        }
+    }
+    return uv;
 }
 
 }  // namespace
@@ -289,41 +335,15 @@ PartAttributes trunk_attributes(const Mesh& trunk, const Skeleton& skeleton, con
     const std::vector<int> owner = owning_segments(trunk, grid);
     const auto& segs = skeleton.segments;
     const std::size_t n = trunk.positions.size();
-    auto root_of = [&](int s) { return s < 0 ? -1 : b.root[static_cast<std::size_t>(s)]; };
 
     if (settings.uvs) {
-        out.uv.reserve(trunk.triangles.size());
-        for (const auto& t : trunk.triangles) {
-            std::array<glm::vec2, 3> uv{};
-            // A fork's triangles take the branch of their middle, all three corners alike.
-            int s = owner[t[0]];
-            if (root_of(owner[t[1]]) != root_of(s) || root_of(owner[t[2]]) != root_of(s))
-                s = grid.nearest(
-                    (trunk.positions[t[0]] + trunk.positions[t[1]] + trunk.positions[t[2]]) / 3.0f);
-            if (s >= 0) {
-                for (std::size_t k = 0; k < 3; ++k) {
-                    const int own = root_of(owner[t[k]]) == root_of(s) ? owner[t[k]] : s;
-                    uv[k] = bark_uv(b, static_cast<std::size_t>(own),
-                                    segs[static_cast<std::size_t>(own)], trunk.positions[t[k]]);
-                }
-                // No triangle wraps around the branch: it spans the shorter way round,
-                // the complement of the widest gap between its corners' u on the circle.
-                const float repeats =
-                    static_cast<float>(b.repeats[static_cast<std::size_t>(root_of(s))]);
-                std::array<std::size_t, 3> order{0, 1, 2};
-                std::sort(order.begin(), order.end(),
-                          [&](std::size_t i, std::size_t j) { return uv[i].x < uv[j].x; });
-                const float lo = uv[order[0]].x, mid = uv[order[1]].x, hi = uv[order[2]].x;
-                const float gap_low = mid - lo, gap_high = hi - mid, gap_wrap = repeats - (hi - lo);
-                if (gap_low > gap_wrap && gap_low >= gap_high) {
-                    uv[order[0]].x += repeats;
-                } else if (gap_high > gap_wrap && gap_high > gap_low) {
-                    uv[order[0]].x += repeats;
-                    uv[order[1]].x += repeats;
-                }
-            }
-            out.uv.push_back(uv);
-        }
+        // Each triangle alone, on every core (a fork's looks up its nearest segment again).
+        out.uv.resize(trunk.triangles.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, trunk.triangles.size(), 256),
+                          [&](const auto& r) {
+                              for (std::size_t i = r.begin(); i < r.end(); ++i)
+                                  out.uv[i] = bark_uvs(b, skeleton, grid, owner, trunk, i);
+                          });
     }
     if (settings.wind || wants_tint(settings)) {
         if (settings.wind) out.wind.resize(n);
