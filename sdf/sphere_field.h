@@ -9,6 +9,13 @@
 // (local_root_smooth_min): identical to the seed's blend where spheres meet, exactly min
 // farther away, still 1-Lipschitz, and spheres beyond the margin cannot matter.
 //
+// The fold starts at the margin and goes nearest sphere first: a sphere at least 4 k beyond the
+// running value leaves it unchanged, and the running value is never above the nearest sphere's, so
+// only the spheres within 4 k of the nearest take part (one to a dozen of the few dozen a sample's
+// bin lists), and the value does not depend on the order the spheres are listed in. Where the
+// nearest changes, the two are at one distance, so the sorted values, and the field, stay
+// continuous.
+//
 // Folded over many spheres the blend would add up (six spheres at one distance lower the
 // value by 1.5 k, a thousand by 3.8 k), swelling the union past the box it is meshed in.
 // The fold is therefore kept within k/2 of the hard union, the most two spheres lower it:

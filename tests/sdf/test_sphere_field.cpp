@@ -108,6 +108,34 @@ TEST(SphereField, BatchEvaluationEqualsPointWise) {
     }
 }
 
+// Nearest sphere first: the value is the same whatever order the spheres come in (the fold
+// in the order listed made a crown's surface depend on the order of its tips).
+TEST(SphereField, TheOrderOfTheSpheresDoesNotMatter) {
+    std::mt19937 rng(17);
+    std::vector<Ball> balls = random_balls(rng, 200);
+    std::vector<Ball> shuffled = balls;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const SphereField field(balls, 0.1f, 0.7f), again(shuffled, 0.1f, 0.7f);
+    std::uniform_real_distribution<float> u(-1, 6);
+    int blended = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 p{u(rng), u(rng), u(rng)};
+        EXPECT_EQ(field(p), again(p)) << p.x << " " << p.y << " " << p.z;
+        float first = 1e9f, second = 1e9f;  // where three or more spheres blend, order would show
+        int close = 0;
+        for (const Ball& b : balls) {
+            const float d = distance(b, p);
+            close += d < 0.4f ? 1 : 0;
+            if (d < first)
+                second = first, first = d;
+            else
+                second = std::min(second, d);
+        }
+        blended += close >= 3 && second - first < 0.4f ? 1 : 0;
+    }
+    EXPECT_GT(blended, 500);  // the points tried include many where order could matter
+}
+
 // Issue 16: a thousand spheres at one place folded the blend a thousand times, swelling the
 // union by about 4 k, past the box the crown is meshed in (an open crown). The fold stays
 // within k/2 of the hard union, as for two spheres.
