@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <span>
@@ -66,6 +67,9 @@ SphereField::SphereField(std::vector<Ball> balls, float blend, float margin, Sph
 }
 
 namespace {
+
+// A ball is four floats (centre, radius): one load each.
+static_assert(sizeof(Ball) == 4 * sizeof(float) && offsetof(Ball, radius) == 3 * sizeof(float));
 
 // Four spheres' distances from p (x, y, z as broadcast), as distance() computes each.
 inline __m128 distances4(const Ball* const balls[4], __m128 px, __m128 py, __m128 pz) {
