@@ -4,7 +4,6 @@
 // four triangles and more of a game budget; the low-poly stage drops such shells.
 #pragma once
 
-#include <cstddef>
 #include <optional>
 
 #include "core/mesh.h"
@@ -14,10 +13,6 @@ namespace sylva {
 // The mesh without every connected component whose signed volume is not positive (an inner
 // shell, or a degenerate sliver) and the vertices only they used, the triangles left in
 // their order; nothing when it has no such component (most meshes: no copy is made).
-// `removed`, when given, gets the number of components left out.
-std::optional<Mesh> without_inner_shells(const Mesh& mesh, std::size_t* removed = nullptr);
-
-// The same in place; returns the number of components removed.
-std::size_t remove_inner_shells(Mesh& mesh);
+std::optional<Mesh> without_inner_shells(const Mesh& mesh);
 
 }  // namespace sylva
