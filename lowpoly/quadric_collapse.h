@@ -189,7 +189,7 @@ class CollapseMesh {
 // same order, except where a collapse found illegal at the front is weighed against the other
 // meshes' fronts. The bulk runs on a core per mesh: each collapses up to an error bound,
 // which the shared order would all make before any collapse above it (ties and re-filed
-// collapses aside); the last few hundred go one at a time. A part stops collapsing where
+// collapses aside); the last few dozen go one at a time. A part stops collapsing where
 // one more collapse would take it below `part_floor` triangles; a part is one mesh, or with
 // `part_of` (the part of each mesh) the meshes it names alike. Returns early once `cancel`
 // is set (polled every 256 steps).
