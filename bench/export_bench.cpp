@@ -22,7 +22,10 @@
 // exports would take with both cores busy all the way (the part of a target better use of
 // the second core can reach; below that only less work helps); and the raw mesh alone
 // against meshopt's call on it: where it is near 1 or above, no reduction, however fast,
-// brings the whole export under meshopt's call.
+// brings the whole export under meshopt's call. full raw = the tree meshed at its template's
+// resolutions without a budget (as the studio shows it without "low poly"; the mesh a user
+// would hand meshoptimizer), and vs full = export / meshopt_simplify on that mesh to the
+// same budget (the fastest of kRuns too).
 //
 // With --stages, a line under each row says where the export's time went: the pipeline's
 // stages (derive, growth, fields, trunk mesh, crown mesh, leaves), the reduction and the
@@ -36,6 +39,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -75,6 +79,22 @@ Mesh meshopt_reduce(const Mesh& m, std::size_t target) {
 // Each export (and meshopt's simplify) is timed this many times in a row; the fastest counts.
 constexpr int kRuns = 3;
 
+// meshopt_simplify on a tree's trunk and crown, `budget` triangles shared by their sizes:
+// the fastest of kRuns, its parts in *trunk and *crown.
+double fastest_meshopt(const Tree& tree, std::size_t budget, Mesh& trunk, Mesh& crown) {
+    const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
+    const std::size_t trunk_share = budget * tree.trunk.triangles.size() / raw;
+    double fastest = 0.0;
+    for (int run = 0; run < kRuns; ++run) {
+        Stopwatch peer;
+        trunk = meshopt_reduce(tree.trunk, trunk_share);
+        crown = meshopt_reduce(tree.crown, budget - trunk_share);
+        const double ms = peer.lap_ms();
+        if (run == 0 || ms < fastest) fastest = ms;
+    }
+    return fastest;
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
@@ -100,13 +120,16 @@ int main(int argc, char** argv) {
         const Tree tree = generate_tree(warm_up, options);
         write_tree(out, tree, finish_tree(tree, finish), warm_up.colors);
     }
+    std::map<std::string, Tree> full_detail;
+    for (const std::string& name : names) full_detail[name] = generate_tree(load_template(name));
 
     for (std::size_t budget : {200, 800, 3000}) {
         std::printf("budget %zu (trunk + crown; leaves thinned to the same number)\n", budget);
-        std::printf("%-9s %7s %9s %7s %7s %5s %9s %10s %7s %7s %7s %5s\n", "template", "raw",
-                    "export ms", "first", "1 core", "cores", "reduce ms", "meshopt ms", "ratio",
-                    "closed", "mesh ms", "alone");
-        std::vector<double> exports, firsts, ratios, halves, alone;
+        std::printf("%-9s %7s %9s %7s %7s %5s %9s %10s %7s %7s %7s %5s %8s %8s\n", "template",
+                    "raw", "export ms", "first", "1 core", "cores", "reduce ms", "meshopt ms",
+                    "ratio", "closed", "mesh ms", "alone", "full raw", "vs full");
+        std::vector<double> exports, firsts, ratios, halves, alone, against_full;
+        std::size_t fewest_full = SIZE_MAX, most_full = 0;
         for (const std::string& name : names) {
             const TreeTemplate tmpl = load_template(name);
             FinishSettings finish;
@@ -143,16 +166,11 @@ int main(int argc, char** argv) {
             }
 
             const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
-            const std::size_t trunk_share = budget * tree.trunk.triangles.size() / raw;
-            double meshopt_ms = 0.0;
-            Mesh trunk, crown;
-            for (int run = 0; run < kRuns; ++run) {  // the fastest, as Sylva's
-                Stopwatch peer;
-                trunk = meshopt_reduce(tree.trunk, trunk_share);
-                crown = meshopt_reduce(tree.crown, budget - trunk_share);
-                const double ms = peer.lap_ms();
-                if (run == 0 || ms < meshopt_ms) meshopt_ms = ms;
-            }
+            Mesh trunk, crown, unused_trunk, unused_crown;
+            const double meshopt_ms = fastest_meshopt(tree, budget, trunk, crown);
+            const Tree& full = full_detail.at(name);
+            const std::size_t full_raw = full.trunk.triangles.size() + full.crown.triangles.size();
+            const double full_ms = fastest_meshopt(full, budget, unused_trunk, unused_crown);
 
             double one_core_ms = 0.0;
             {
@@ -168,10 +186,12 @@ int main(int argc, char** argv) {
             const bool ours = closed(r.trunk) && closed(r.crown);
             const bool theirs = closed(trunk) && closed(crown);
             std::printf(
-                "%-9s %7zu %9.1f %7.1f %7.1f %5.2f %9.1f %10.1f %6.1fx %3s/%-3s %7.1f %4.1fx\n",
+                "%-9s %7zu %9.1f %7.1f %7.1f %5.2f %9.1f %10.1f %6.1fx %3s/%-3s %7.1f %4.1fx %8zu "
+                "%7.1fx\n",
                 name.c_str(), raw, export_ms, first_ms, one_core_ms, one_core_ms / export_ms,
                 reduce_ms, meshopt_ms, export_ms / meshopt_ms, ours ? "yes" : "NO",
-                theirs ? "yes" : "no", mesh_ms, mesh_ms / meshopt_ms);
+                theirs ? "yes" : "no", mesh_ms, mesh_ms / meshopt_ms, full_raw,
+                export_ms / full_ms);
             if (stages) {
                 std::printf("%9s", "");
                 for (const StageTime& stage : tree.times)
@@ -184,18 +204,25 @@ int main(int argc, char** argv) {
             ratios.push_back(export_ms / meshopt_ms);
             halves.push_back(0.5 * one_core_ms);
             alone.push_back(mesh_ms / meshopt_ms);
+            against_full.push_back(export_ms / full_ms);
+            fewest_full = std::min(fewest_full, full_raw);
+            most_full = std::max(most_full, full_raw);
         }
         std::printf(
             "export: median %.1f ms, worst %.1f ms (targets 25 / 50 ms); "
             "export / meshopt_simplify alone: median %.1fx (target <= 1)\n"
             "the first of each tree: median %.1f ms, worst %.1f ms\n"
             "both cores busy all the way (half of one core's): median %.1f ms, worst %.1f ms\n"
-            "the raw mesh alone / meshopt_simplify on it: median %.2fx, %.2f-%.2fx\n\n",
+            "the raw mesh alone / meshopt_simplify on it: median %.2fx, %.2f-%.2fx\n"
+            "export / meshopt_simplify on the full-detail mesh (%zu-%zu triangles): median %.2fx, "
+            "%.2f-%.2fx\n\n",
             median(exports), *std::max_element(exports.begin(), exports.end()), median(ratios),
             median(firsts), *std::max_element(firsts.begin(), firsts.end()), median(halves),
             *std::max_element(halves.begin(), halves.end()), median(alone),
             *std::min_element(alone.begin(), alone.end()),
-            *std::max_element(alone.begin(), alone.end()));
+            *std::max_element(alone.begin(), alone.end()), fewest_full, most_full,
+            median(against_full), *std::min_element(against_full.begin(), against_full.end()),
+            *std::max_element(against_full.begin(), against_full.end()));
     }
     std::filesystem::remove(out);
     return 0;
