@@ -36,6 +36,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -80,7 +81,7 @@ Mesh meshopt_reduce(const Mesh& m, std::size_t target) {
 constexpr int kRuns = 3;
 
 // meshopt_simplify on a tree's trunk and crown, `budget` triangles shared by their sizes:
-// the fastest of kRuns, its parts in *trunk and *crown.
+// the fastest of kRuns, its parts left in trunk and crown.
 double fastest_meshopt(const Tree& tree, std::size_t budget, Mesh& trunk, Mesh& crown) {
     const std::size_t raw = tree.trunk.triangles.size() + tree.crown.triangles.size();
     const std::size_t trunk_share = budget * tree.trunk.triangles.size() / raw;
