@@ -615,7 +615,7 @@ void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles
     // budget is never overshot. Rounds go on down to the last few dozen collapses, which go
     // one at a time in the shared order: those cost several microseconds each near the
     // budget, where many fronts are illegal and filed again. (The ternary at 3000 triangles:
-    // 10 -> 5 ms with three rounds and the last few hundred one at a time, 4.9 -> 3.8 ms with
+    // 10 -> 5 ms with three rounds and the last few hundred one at a time, 4.7 -> 3.7 ms with
     // up to 16 rounds; every template exports the same bytes as with the shared order all
     // the way, at budgets 100 to 3000 and in LOD chains.)
     constexpr std::size_t kSharedAtMost = 64;  // collapses
