@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/color_variation.h"
+#include "core/data_paths.h"
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/signal_cleanup.h"
@@ -80,7 +81,8 @@ std::vector<BatchItem> plan_batch(const BatchSettings& settings) {
         item.index = i;
         std::string number = std::to_string(i);
         number.insert(0, width - number.size(), '0');
-        item.file = settings.tree.name + "_" + number + std::string(format->extension);
+        item.file =
+            safe_file_name(settings.tree.name) + "_" + number + std::string(format->extension);
         item.seed = variant_seed(settings.seed, i);
         item.params = varied_params(settings.tree.params, item.seed, settings.jitter);
         items.push_back(std::move(item));

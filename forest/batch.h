@@ -58,7 +58,8 @@ struct BatchItem {
 };
 
 // The items of the settings' shard, in index order, triangles still 0. File names are
-// `<template>_<index>` with the index zero-padded to the width of count - 1 (at least 4).
+// `<template>_<index>`, the template's name made a safe file name (safe_file_name(),
+// core/data_paths.h), the index zero-padded to the width of count - 1 (at least 4).
 // Throws InputError for a count of 0 or a bad jitter.
 std::vector<BatchItem> plan_batch(const BatchSettings& settings);
 

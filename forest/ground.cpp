@@ -1,13 +1,12 @@
 #include "forest/ground.h"
 
 #include <cmath>
-#include <fstream>
 #include <glm/common.hpp>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/errors.h"
+#include "core/input_file.h"
 
 namespace sylva::forest {
 
@@ -121,11 +120,7 @@ Ground parse_ground_json(const std::string& text, const std::string& source) {
 }
 
 Ground load_ground(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError("cannot read '" + path.string() + "'", path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_ground_json(text.str(), path.string());
+    return parse_ground_json(read_input_file(path, "ground file"), path.string());
 }
 
 }  // namespace sylva::forest

@@ -1,15 +1,16 @@
 #include "forest/species_file.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "core/data_paths.h"
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "tree/template_library.h"
 
 namespace sylva::forest {
 
-std::vector<Species> parse_species_json(const std::string& text, const std::string& source) {
+std::vector<Species> parse_species_json(const std::string& text, const std::string& source,
+                                        const std::filesystem::path& folder) {
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(text);
@@ -34,7 +35,9 @@ std::vector<Species> parse_species_json(const std::string& text, const std::stri
         const std::string at = source + ": species[" + std::to_string(i) + "]";
         if (!entry.is_object() || !entry.contains("template") || !entry["template"].is_string())
             throw InputError(at + " needs a \"template\" (a name or a file)");
-        Species sp{load_template(entry["template"].get<std::string>()), 1.0};
+        Species sp{
+            load_template_reference(entry["template"].get<std::string>(), folder, at + ".template"),
+            1.0};
         if (entry.contains("weight")) {
             if (!entry["weight"].is_number()) throw InputError(at + ".weight must be a number");
             sp.weight = entry["weight"].get<double>();
@@ -61,11 +64,8 @@ std::vector<Species> parse_species_json(const std::string& text, const std::stri
 }
 
 std::vector<Species> load_species(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError("cannot read '" + path.string() + "'", path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_species_json(text.str(), path.string());
+    return parse_species_json(read_input_file(path, "species file"), path.string(),
+                              data_folder(path));
 }
 
 }  // namespace sylva::forest

@@ -2,11 +2,10 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "core/input_file.h"
 #include "layout/graph_grammar.h"
 #include "layout/positions.h"
 
@@ -24,11 +23,7 @@ PolygonMesh load_example(const std::string& name_or_path) {
 namespace {
 
 std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError("cannot read " + path, path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return read_input_file(path, "layout grammar");
 }
 
 bool is_grammar_file(const std::string& path) {

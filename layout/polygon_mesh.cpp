@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "layout/geometry.h"
 
 namespace sylva::layout {
@@ -326,12 +326,9 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
 }
 
 PolygonMesh read_mesh_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError("cannot read " + path.string(), path);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (path.extension() == ".json") return read_mesh_json(buffer.str(), path.string());
-    return read_mesh_text(buffer.str(), path.string());
+    const std::string text = read_input_file(path, "layout example");
+    if (path.extension() == ".json") return read_mesh_json(text, path.string());
+    return read_mesh_text(text, path.string());
 }
 
 std::string color_hex(std::uint32_t color) {

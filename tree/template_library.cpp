@@ -1,13 +1,11 @@
 #include "tree/template_library.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "core/data_paths.h"
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "tree/template_file.h"
 
 namespace sylva {
@@ -61,34 +59,53 @@ const TreeTemplate& default_template() {
     return *builtin_templates().front();
 }
 
-TreeTemplate load_template(const std::string& name_or_path) {
-    if (name_or_path == "default") return default_template();
+namespace {
+
+const TreeTemplate* builtin_named(const std::string& name) {
+    if (name == "default") return &default_template();
     for (const TreeTemplate* t : builtin_templates())
-        if (t->name == name_or_path) return *t;
-    std::error_code ec;
-    if (!std::filesystem::exists(name_or_path, ec)) {
-        std::string names;
-        for (const TreeTemplate* t : builtin_templates())
-            names += (names.empty() ? "" : ", ") + t->name;
-        throw InputError("'" + name_or_path + "' is neither a built-in template (" + names +
-                         ") nor an existing file");
-    }
-    if (std::filesystem::is_directory(name_or_path, ec))
-        throw IoError("cannot read '" + name_or_path + "': it is a directory", name_or_path);
-    std::ifstream in(name_or_path, std::ios::binary);
-    if (!in)
-        throw IoError("cannot read '" + name_or_path + "': " + std::strerror(errno), name_or_path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (std::filesystem::path(name_or_path).extension() == ".toml")
-        return parse_template_file(text.str(), name_or_path);
+        if (t->name == name) return t;
+    return nullptr;
+}
+
+std::string builtin_names() {
+    std::string names;
+    for (const TreeTemplate* t : builtin_templates())
+        names += (names.empty() ? "" : ", ") + t->name;
+    return names;
+}
+
+TreeTemplate parse_template_text(const std::string& text, const std::filesystem::path& path) {
+    if (path.extension() == ".toml") return parse_template_file(text, path.string());
     // A bare grammar file: parameters take their defaults.
     TreeTemplate t;
-    t.name = std::filesystem::path(name_or_path).stem().string();
-    t.description = "grammar file " + name_or_path;
-    t.grammar = text.str();
-    t.source = name_or_path;
+    t.name = path.stem().string();
+    t.description = "grammar file " + path.string();
+    t.grammar = text;
+    t.source = path.string();
     return t;
+}
+
+}  // namespace
+
+TreeTemplate load_template(const std::string& name_or_path) {
+    if (const TreeTemplate* t = builtin_named(name_or_path)) return *t;
+    std::error_code ec;
+    if (!std::filesystem::exists(name_or_path, ec))
+        throw InputError("'" + name_or_path + "' is neither a built-in template (" +
+                         builtin_names() + ") nor an existing file");
+    return parse_template_text(read_input_file(name_or_path, "template"), name_or_path);
+}
+
+TreeTemplate load_template_reference(const std::string& name, const std::filesystem::path& folder,
+                                     const std::string& where) {
+    if (const TreeTemplate* t = builtin_named(name)) return *t;
+    const std::filesystem::path path = resolve_data_reference(name, folder, where);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        throw InputError(where + ": '" + name + "' is neither a built-in template (" +
+                         builtin_names() + ") nor a file beside it");
+    return parse_template_text(read_input_file(path, "template"), path);
 }
 
 }  // namespace sylva

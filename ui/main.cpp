@@ -4,6 +4,7 @@
 
 #include "core/color_variation.h"
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "core/large_pages.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -391,8 +392,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const sylva::TreeTemplate opened = sylva::load_template(options.tree_template);
         std::string text;  // a template file's own text, so saving keeps its comments
         if (std::filesystem::path(options.tree_template).extension() == ".toml") {
-            std::ifstream in(options.tree_template, std::ios::binary);
-            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            text = sylva::read_input_file(options.tree_template, "template");
             state.template_path = options.tree_template;
         }
         state.tree_template = state.committed = opened;

@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
+#include "core/input_file.h"
 #include "export/export_tree.h"
 #include "marching/marching_cubes.h"
 #include "tree/cost.h"
@@ -678,8 +679,7 @@ void open_template_file(StudioState& state) {
         const TreeTemplate opened = load_template(state.template_path);
         std::string text;
         if (std::filesystem::path(state.template_path).extension() == ".toml") {
-            std::ifstream in(state.template_path, std::ios::binary);
-            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            text = read_input_file(state.template_path, "template");
         }
         load_template_into(state, opened, text);
         if (text.empty() && std::filesystem::is_regular_file(state.template_path))

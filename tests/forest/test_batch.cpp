@@ -104,6 +104,29 @@ TEST_F(Batch, WritesDistinctVariantsAndAManifest) {
     }
 }
 
+// A template's name is data from a stranger: the batch's files stay in the folder.
+TEST_F(Batch, ATemplateNameCannotLeadOutOfTheFolder) {
+    for (const char* name : {"../../../escaped", "/tmp/absolute", "..", "a/b"}) {
+        BatchSettings settings = small_batch(1);
+        settings.tree.name = name;
+        const fs::path dir = dir_ / "out";
+        const BatchResult result = run_batch(settings, dir);
+        ASSERT_EQ(result.items.size(), 1u);
+        const fs::path file = result.items[0].file;
+        EXPECT_EQ(file.filename(), file) << name << " -> " << file;
+        EXPECT_TRUE(fs::is_regular_file(dir / file)) << name << " -> " << file;
+        std::size_t entries = 0;
+        for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+            if (entry.path() == dir) continue;
+            ++entries;
+            EXPECT_EQ(entry.path().parent_path(), dir) << entry.path();
+        }
+        EXPECT_EQ(entries, 2u);  // the tree and the manifest
+        fs::remove_all(dir_);
+    }
+    EXPECT_FALSE(fs::exists(dir_.parent_path() / "escaped_0000.glb"));
+}
+
 TEST_F(Batch, SameSeedSameBytes) {
     run_batch(small_batch(2), dir_ / "a");
     run_batch(small_batch(2), dir_ / "b");

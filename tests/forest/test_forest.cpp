@@ -1,6 +1,7 @@
 // sylva forest: the ground, Poisson disk spacing, species stands, and the scene read back
 // with tinygltf against the placement list.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <tiny_gltf.h>
 #include <unistd.h>
 
@@ -124,6 +125,55 @@ TEST(SpeciesFile, TemplatesWeightsAndOverrides) {
     EXPECT_THROW(parse_species_json(R"({"species": []})", "s.json"), InputError);
     EXPECT_THROW(parse_species_json(R"({"species": [{"template": "nosuchtree"}]})", "s.json"),
                  InputError);
+}
+
+// A species file names templates beside it, never a file outside its folder, and a refusal
+// never shows the content of the file it refused.
+TEST(SpeciesFile, TemplatesAreLookedUpBesideTheFileOnly) {
+    const fs::path root =
+        fs::temp_directory_path() / ("sylva_species_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    fs::create_directories(root / "plans");
+    std::ofstream(root / "secret.txt") << "top secret line\n";
+    std::ofstream(root / "plans" / "mine.txt") << "axiom: F\nF -> F[+F]F\n";
+    const auto species_file = [&](const std::string& name) {
+        const fs::path path = root / "plans" / "species.json";
+        std::ofstream(path) << R"({"species": [{"template": ")" + name + R"("}]})";
+        return path;
+    };
+    const auto species = load_species(species_file("mine.txt"));
+    ASSERT_EQ(species.size(), 1u);
+    EXPECT_EQ(species[0].tree.name, "mine");
+    for (const std::string& name :
+         std::vector<std::string>{"../secret.txt", (root / "secret.txt").string(), "/dev/zero",
+                                  "/etc/passwd", "plans/../../secret.txt"}) {
+        try {
+            load_species(species_file(name));
+            FAIL() << "accepted " << name;
+        } catch (const InputError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find("species[0].template"), std::string::npos) << message;
+            EXPECT_EQ(message.find("top secret"), std::string::npos) << message;
+            EXPECT_EQ(message.find("root:"), std::string::npos) << message;
+        }
+    }
+    // A device or FIFO beside the file is refused by the reader, at once.
+    ASSERT_EQ(::mkfifo((root / "plans" / "pipe.toml").c_str(), 0600), 0);
+    EXPECT_THROW(load_species(species_file("pipe.toml")), IoError);
+    // Text that came from no file names only built-in templates.
+    EXPECT_THROW(parse_species_json(R"({"species": [{"template": "mine.txt"}]})", "s.json"),
+                 InputError);
+    fs::remove_all(root);
+}
+
+TEST(ForestInputs, DevicesAndFifosAreRefusedNotRead) {
+    EXPECT_THROW(load_ground("/dev/zero"), IoError);
+    EXPECT_THROW(load_species("/dev/zero"), IoError);
+    const fs::path pipe = fs::temp_directory_path() / ("sylva_fifo_" + std::to_string(::getpid()));
+    fs::remove(pipe);
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    EXPECT_THROW(load_ground(pipe), IoError);
+    fs::remove(pipe);
 }
 
 ForestSettings small_forest() {
