@@ -178,9 +178,10 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     }
     collapse_together(meshes, target, settings.cancel, settings.part_floor, part_of);
     throw_if_cancelled(settings.cancel);
-    if (settings.relocate_vertices)
-        tbb::parallel_for(std::size_t{0}, meshes.size(),
-                          [&](std::size_t k) { meshes[k].relocate(); });
+    tbb::parallel_for(std::size_t{0}, meshes.size(), [&](std::size_t k) {
+        if (settings.relocate_vertices) meshes[k].relocate();
+        if (settings.unfold) meshes[k].unfold();
+    });
     throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
     out.parts = extract(meshes);

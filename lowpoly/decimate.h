@@ -64,6 +64,10 @@ struct DecimateSettings {
     // few percent of the heap's. false: the heap all the way (the order before passes; the
     // bulk of a ternary's trunk then takes 1.4x as long).
     bool fast_passes = true;
+    // After the collapses (and relocation), flip edges where two faces fold inwards
+    // sharper than a right angle (CollapseMesh::unfold(), lowpoly/quadric_collapse.h): a
+    // reduced crown of many spheres otherwise reads as a ball of spikes.
+    bool unfold = true;
     // In the shared order, a part with more triangles than this never goes below it: its
     // collapses stop there and the other parts take the rest of the budget (0: no floor).
     // reduce_tree() keeps trunk and crown at a quarter of the budget each this way, so

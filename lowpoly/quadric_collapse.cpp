@@ -721,6 +721,131 @@ void CollapseMesh::relocate() {
     }
 }
 
+namespace {
+
+// The edge from `point` with faces of normals n1 and n2, n2's far corner at `far`: a concave
+// fold sharper than a right angle (normals more than 90 degrees apart, far above n1's plane).
+bool sharp_concave(const glm::dvec3& n1, const glm::dvec3& n2, const glm::dvec3& far,
+                   const glm::dvec3& point) {
+    return glm::dot(n1, n2) < 0.0 && glm::dot(n1, far - point) > 0.0;
+}
+
+// How far the edge from `a` to `b` folds inwards past a right angle: -cos of the angle
+// between the unit normals n1 and n2 times the edge's length, where sharp_concave(); else 0.
+double fold_excess(const glm::dvec3& n1, const glm::dvec3& n2, const glm::dvec3& far,
+                   const glm::dvec3& a, const glm::dvec3& b) {
+    if (!sharp_concave(n1, n2, far, a)) return 0.0;
+    return -glm::dot(n1, n2) * glm::length(b - a);
+}
+
+double signed_volume6(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return glm::dot(a, glm::cross(b, c));
+}
+
+}  // namespace
+
+bool CollapseMesh::flip_unfolds(std::uint32_t h) const {
+    const std::uint32_t o = opposite_[h];
+    const std::uint32_t v0 = corner_[h], v1 = to(h), vl = corner_[prev(h)], vr = corner_[prev(o)];
+    const std::uint32_t fa = h / 3, fb = o / 3;
+    if (vl == vr) return false;
+    // The quad's sides and the faces beyond them; none may be the quad's own.
+    const std::uint32_t side[4] = {opposite_[prev(h)], opposite_[next(o)], opposite_[prev(o)],
+                                   opposite_[next(h)]};
+    for (std::uint32_t e : side)
+        if (e / 3 == fa || e / 3 == fb) return false;
+    // v0 and v1 each lose an edge; vl and vr must not be joined already.
+    const auto valence = [&](std::uint32_t v) {
+        int n = 0;
+        for (std::uint32_t g = outgoing_[v];;) {
+            ++n;
+            g = turn(g);
+            if (g == outgoing_[v]) break;
+        }
+        return n;
+    };
+    if (valence(v0) <= 3 || valence(v1) <= 3) return false;
+    for (std::uint32_t g = outgoing_[vl];;) {
+        if (to(g) == vr) return false;
+        g = turn(g);
+        if (g == outgoing_[vl]) break;
+    }
+    const glm::dvec3 &p0 = position_[v0], &p1 = position_[v1], &pl = position_[vl],
+                     &pr = position_[vr];
+    // The new faces (vl, v0, vr) and (vr, v1, vl): not slivers, and filling (a fold inwards
+    // becomes one outwards), never carving.
+    const glm::dvec3 na = glm::cross(p0 - pl, pr - pl), nb = glm::cross(p1 - pr, pl - pr);
+    const double floor2 = std::max(min_twice_area2_, 1e-24);
+    if (glm::dot(na, na) <= floor2 || glm::dot(nb, nb) <= floor2) return false;
+    const double before = signed_volume6(p0, p1, pl) + signed_volume6(p1, p0, pr);
+    const double after = signed_volume6(pl, p0, pr) + signed_volume6(pr, p1, pl);
+    if (!(after > before)) return false;
+    // Less sharp inward folding among the diagonal and the four sides than before: the
+    // only edges whose faces change, so every flip lowers the mesh's total and sweeps end.
+    const glm::dvec3 ua = na / std::sqrt(glm::dot(na, na)), ub = nb / std::sqrt(glm::dot(nb, nb));
+    const glm::dvec3 &oa = normal_[fa], &ob = normal_[fb];
+    const glm::dvec3 corner[4] = {pl, p0, pr, p1};  // each side's start, in side[] order
+    double before_excess = fold_excess(oa, ob, pr, p0, p1);
+    double after_excess = fold_excess(ua, ub, p1, pl, pr);
+    for (int k = 0; k < 4; ++k) {
+        const glm::dvec3& beyond = normal_[side[k] / 3];
+        const glm::dvec3& far = position_[corner_[prev(side[k])]];
+        const glm::dvec3& end = corner[(k + 1) % 4];
+        before_excess += fold_excess(k == 0 || k == 3 ? oa : ob, beyond, far, corner[k], end);
+        after_excess += fold_excess(k < 2 ? ua : ub, beyond, far, corner[k], end);
+    }
+    return after_excess < before_excess;
+}
+
+void CollapseMesh::flip(std::uint32_t h) {
+    const std::uint32_t o = opposite_[h];
+    const std::uint32_t v0 = corner_[h], v1 = to(h), vl = corner_[prev(h)], vr = corner_[prev(o)];
+    const std::uint32_t side[4] = {opposite_[prev(h)], opposite_[next(o)], opposite_[prev(o)],
+                                   opposite_[next(h)]};
+    const std::uint32_t a = h / 3 * 3, b = o / 3 * 3;
+    // a: vl -> v0 -> vr -> vl; b: vr -> v1 -> vl -> vr.
+    corner_[a] = vl, corner_[a + 1] = v0, corner_[a + 2] = vr;
+    corner_[b] = vr, corner_[b + 1] = v1, corner_[b + 2] = vl;
+    const auto link = [&](std::uint32_t x, std::uint32_t y) {
+        opposite_[x] = y;
+        opposite_[y] = x;
+    };
+    link(a, side[0]);
+    link(a + 1, side[1]);
+    link(b, side[2]);
+    link(b + 1, side[3]);
+    link(a + 2, b + 2);
+    outgoing_[v0] = a + 1;
+    outgoing_[v1] = b + 1;
+    outgoing_[vl] = a;
+    outgoing_[vr] = b;
+    update_normal(a / 3);
+    update_normal(b / 3);
+}
+
+std::size_t CollapseMesh::unfold() {
+    constexpr int kMaxSweeps = 8;
+    std::size_t flips = 0;
+    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
+        std::size_t made = 0;
+        for (std::uint32_t h = 0; h < corner_.size(); ++h) {
+            if (!face_alive_[h / 3] || opposite_[h] < h) continue;  // each edge once
+            const std::uint32_t o = opposite_[h];
+            if (!sharp_concave(normal_[h / 3], normal_[o / 3], position_[corner_[prev(o)]],
+                               position_[corner_[h]]))
+                continue;
+            if (!flip_unfolds(h)) continue;
+            flip(h);
+            ++made;
+        }
+        flips += made;
+        if (made == 0) break;
+    }
+    // Halfedges moved: a later collapse_to() files the heap anew.
+    if (flips > 0) heap_filled_ = false;
+    return flips;
+}
+
 std::vector<Mesh> CollapseMesh::extract() const {
     std::vector<Mesh> out(part_count_);
     // Only vertices that a triangle uses; new indices in the old order (deterministic).

@@ -82,6 +82,13 @@ class CollapseMesh {
     std::size_t collapse_up_to(float max_key, std::size_t min_triangles);
     // Moves each vertex to the minimum of its accumulated quadric where the guards allow.
     void relocate();
+    // Flips edges where two faces fold inwards sharper than a right angle: of a bent quad's
+    // two diagonals one folds in and one out, and the one out fills the valley. A flip is
+    // made where it leaves fewer such folds among the quad's five edges, adds volume, and
+    // keeps the mesh a closed 2-manifold (no vertex below valence 3, no edge twice); in
+    // sweeps over all edges until none is left (at most 8). Vertices do not move. Returns
+    // the flips made.
+    std::size_t unfold();
     // The parts as meshes: used vertices in their original order, triangles likewise.
     std::vector<Mesh> extract() const;
 
@@ -120,6 +127,9 @@ class CollapseMesh {
     // sliver; *volume_change gets the change of the enclosed volume.
     bool fan_allows(std::uint32_t v, const glm::dvec3& p, std::uint32_t skip_a,
                     std::uint32_t skip_b, double* volume_change) const;
+    // The flip of h's edge to the other diagonal of its quad unfolds (unfold()).
+    bool flip_unfolds(std::uint32_t h) const;
+    void flip(std::uint32_t h);
     // v's piece stays above its volume floor after a change.
     bool keeps_volume(std::uint32_t v, double change) const;
     // Topology, foot, fan and volume: the collapse of h may go ahead.

@@ -201,7 +201,7 @@ TEST(TreeReduction, ASmallBudgetMeshesTheTrunkAsCoarseAsItCanShow) {
     const auto [coarse_mean, coarse_hausdorff] = both_ways(coarse);
     const auto [fine_mean, fine_hausdorff] = both_ways(fine);
     EXPECT_LT(coarse_mean, 1.1 * fine_mean);
-    EXPECT_LT(coarse_hausdorff, 15.0);
+    EXPECT_LT(coarse_hausdorff, 17.0);
 }
 
 TEST(TreeReduction, ReferenceSurfaceIsFinerAndClosed) {

@@ -15,6 +15,9 @@
 #include "lowpoly/quadric_collapse.h"
 #include "marching/marching_cubes.h"
 #include "marching/mesh_checks.h"
+#include "quality/folds.h"
+#include "quality/self_intersections.h"
+#include "tests/quality/shapes.h"
 
 namespace sylva {
 namespace {
@@ -375,6 +378,56 @@ TEST(QuadricCollapse, AMeshAtItsFloorStopsAndTheOthersTakeTheRest) {
         EXPECT_TRUE(check_topology(*m).is_closed_manifold());
         EXPECT_TRUE(all_outward(*m));
     }
+}
+
+// A box whose top is a valley: the two corners on its diagonal lowered, so the top's halves
+// fold inwards at 97 degrees. unfold() flips the diagonal to the other one, a ridge. Still
+// closed, no vertex moved, no volume lost.
+TEST(Unfold, FlipsSharpInwardFoldsAway) {
+    Mesh dented = test::box(glm::vec3(0.0f), glm::vec3(1.0f));
+    for (std::size_t v : {2, 7}) dented.positions[v].y = 0.2f;  // the top's diagonal
+    const double before = concave_fold_share(dented);
+    ASSERT_GT(before, 0.01);
+    CollapseMesh m;
+    const Mesh* parts[] = {&dented};
+    ASSERT_TRUE(m.build(parts));
+    m.start({}, nullptr);
+    EXPECT_GT(m.unfold(), 0u);
+    const Mesh out = m.extract().front();
+    EXPECT_LT(concave_fold_share(out), 0.5 * before);
+    EXPECT_TRUE(check_topology(out).is_closed_manifold());
+    EXPECT_EQ(out.positions, dented.positions);
+    EXPECT_GE(component_volumes(out).front(), component_volumes(dented).front());
+    EXPECT_EQ(self_intersecting_pairs(out), 0u);
+}
+
+TEST(Unfold, LeavesAConvexMeshAlone) {
+    const Mesh ball = test::icosphere(2);
+    CollapseMesh m;
+    const Mesh* parts[] = {&ball};
+    ASSERT_TRUE(m.build(parts));
+    m.start({}, nullptr);
+    EXPECT_EQ(m.unfold(), 0u);
+    EXPECT_EQ(m.extract().front().triangles, ball.triangles);
+}
+
+// decimate() unfolds by default: a reduced bumpy ball keeps fewer sharp inward folds.
+TEST(Unfold, ReducedBumpsFoldLess) {
+    const Mesh bumps = mesh_of(
+        [](const glm::vec3& p) {
+            return glm::length(p) - 1.0f +
+                   0.15f * std::sin(9.0f * p.x) * std::sin(9.0f * p.y) * std::sin(9.0f * p.z);
+        },
+        Box{glm::vec3(-1.3f), glm::vec3(1.3f)}, 64);
+    DecimateSettings s;
+    s.max_triangles = 300;
+    s.unfold = false;
+    const Mesh folded = decimate(bumps, s).parts.front();
+    s.unfold = true;
+    const Mesh unfolded = decimate(bumps, s).parts.front();
+    EXPECT_TRUE(check_topology(unfolded).is_closed_manifold());
+    EXPECT_LE(unfolded.triangles.size(), 300u);
+    EXPECT_LT(concave_fold_share(unfolded), concave_fold_share(folded));
 }
 
 }  // namespace
