@@ -433,6 +433,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     }
 
     int frames_with_tree = 0;
+    int frames_asking = 0;
     bool swaying = false;  // the viewport holds swayed parts
     std::string window_title;
     int uploaded_level = 0;  // the LOD level the viewport holds
@@ -529,6 +530,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 #ifdef SYLVA_HAS_LAYOUT
         draw_layout_panel(layout_panel, layout.width, layout.height);
 #endif
+        draw_dialogs(state);  // last: see panels.h
+        const bool asking = cost_dialog_open() && !generation_running(state);
         handle_camera_input(state, static_cast<float>(rect.height));
         handle_shortcuts(state);
         ImGui::Render();
@@ -573,6 +576,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                     save_back_buffer_png(*options.screenshot_path, width, height);
                 break;
             }
+        }
+        // A template the estimate holds back shows the "run anyway?" dialog instead of a tree:
+        // that is the picture.
+        if (options.screenshot_path && !bench && asking &&
+            ++frames_asking == options.screenshot_frames) {
+            save_back_buffer_png(*options.screenshot_path, width, height);
+            break;
         }
         if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
             !variants_running(strip) &&

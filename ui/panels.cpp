@@ -175,10 +175,6 @@ void template_section(StudioState& state) {
             }
         ImGui::EndCombo();
     }
-    if (auto path = file_dialog(g_file_dialog, state.recent_files)) {
-        state.template_path = *path;
-        g_file_dialog.saving ? save_template_to_file(state) : open_template_file(state);
-    }
     message_line(state.file_message, state.file_failed);
 }
 
@@ -338,7 +334,10 @@ void parameter_section(StudioState& state) {
         if (!is_variation_key(info.key)) row(info);
 }
 
-// The confirmation an expensive edit asks for before it runs (generations 12 on the oak).
+// The confirmation an expensive edit asks for before it runs (generations 12 on the oak),
+// opened once per warning, at the top of the ID stack where draw_dialogs begins it.
+constexpr const char* kCostDialog = "Expensive tree";
+
 void cost_confirmation(StudioState& state) {
     static std::string asked;  // the warning already asked about
     if (state.cost_warning.empty()) {
@@ -347,10 +346,10 @@ void cost_confirmation(StudioState& state) {
     }
     if (asked != state.cost_warning) {
         asked = state.cost_warning;
-        ImGui::OpenPopup("Expensive tree");
+        ImGui::OpenPopup(kCostDialog);
     }
     if (!ImGui::BeginPopupModal(
-            "Expensive tree", nullptr,
+            kCostDialog, nullptr,
             ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings))
         return;
     ImGui::PushTextWrapPos(420.0f);
@@ -635,7 +634,6 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
     }
     ImGui::PopItemWidth();
     ImGui::End();
-    cost_confirmation(state);
     shortcuts_window(state);
 }
 
@@ -753,6 +751,18 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
         ImGui::TextDisabled("%s", rate);
     }
     ImGui::End();
+}
+
+void draw_dialogs(StudioState& state) {
+    cost_confirmation(state);
+    if (auto path = file_dialog(g_file_dialog, state.recent_files)) {
+        state.template_path = *path;
+        g_file_dialog.saving ? save_template_to_file(state) : open_template_file(state);
+    }
+}
+
+bool cost_dialog_open() {
+    return ImGui::IsPopupOpen(kCostDialog);
 }
 
 }  // namespace sylva::studio

@@ -30,4 +30,13 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
 // window draws continuously (`fps` < 0: idle, not shown).
 void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps);
 
+// The modal dialogs: the "run anyway?" confirmation of an expensive edit and the file
+// dialog. Call once a frame after every other window: ImGui (1.86) aborts with
+// `blocking_modal != NULL` when a window first appears after a modal opened in the same
+// frame (the studio's first frame with an expensive template did).
+void draw_dialogs(StudioState& state);
+
+// True while the "run anyway?" confirmation is open (after draw_dialogs).
+bool cost_dialog_open();
+
 }  // namespace sylva::studio
