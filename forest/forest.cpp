@@ -228,7 +228,9 @@ ForestPlan plan_forest(const ForestSettings& s) {
         const glm::dvec2 size = bounds.hi - bounds.lo;
         const double area =
             size.x * size.y * static_cast<double>(points.size()) / static_cast<double>(candidates);
-        target = std::min(target, static_cast<std::size_t>(std::llround(*s.density * area / 1e4)));
+        const double wanted = *s.density * area / 1e4;  // compared before any cast
+        if (wanted < static_cast<double>(target))
+            target = static_cast<std::size_t>(std::llround(std::max(wanted, 0.0)));
     }
     thin(points, target, variant_seed(s.seed, kThinning));
     std::vector<std::size_t> species = pick_species(points, s, forest_pool);
@@ -279,8 +281,9 @@ ForestPlan plan_forest(const ForestSettings& s) {
             const glm::dvec2 size = box.hi - box.lo;
             const double area = size.x * size.y * static_cast<double>(meadow.size()) /
                                 static_cast<double>(meadow_candidates);
-            thin(meadow,
-                 static_cast<std::size_t>(std::llround(s.layout->meadow_density * area / 1e4)),
+            const double wanted = std::clamp(s.layout->meadow_density * area / 1e4, 0.0,
+                                             static_cast<double>(meadow.size()));
+            thin(meadow, static_cast<std::size_t>(std::llround(wanted)),
                  variant_seed(s.seed, kMeadow + 1));
         }
         const std::vector<std::size_t> meadow_species = pick_species(meadow, s, forest_pool);
@@ -295,10 +298,11 @@ ForestPlan plan_forest(const ForestSettings& s) {
     Random random(variant_seed(s.seed, kTrees));
     const double radius = 2.0 * s.spacing;  // neighbours whose variant a tree avoids
     std::map<std::pair<long, long>, std::vector<std::size_t>> grid;  // cell -> placements
-    auto cell = [&](glm::dvec2 p) {
-        return std::pair<long, long>(static_cast<long>(std::floor(p.x / radius)),
-                                     static_cast<long>(std::floor(p.y / radius)));
+    // Clamped before the cast: a ground far from the origin (1e300 m) would overflow a long.
+    auto index = [&](double x) {
+        return static_cast<long>(std::clamp(std::floor(x / radius), -1e15, 1e15));
     };
+    auto cell = [&](glm::dvec2 p) { return std::pair<long, long>(index(p.x), index(p.y)); };
     for (std::size_t i = 0; i < points.size(); ++i) {
         const glm::dvec2 p = points[i];
         std::vector<bool> taken(k_count, false);

@@ -1,7 +1,9 @@
 #include "forest/poisson_disk.h"
 
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <string>
 
 #include "core/errors.h"
@@ -9,19 +11,36 @@
 
 namespace sylva::forest {
 
+namespace {
+
+// A figure as a person reads it, however large: "3.2e+617" never comes out as an integer.
+std::string number_text(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+}  // namespace
+
 std::vector<glm::dvec2> poisson_disk(glm::dvec2 lo, glm::dvec2 hi,
                                      const PoissonSettings& settings) {
     const double r = settings.min_distance;
     if (!(r > 0.0) || !std::isfinite(r))
         throw InputError("the minimum spacing must be a positive number of meters");
     const glm::dvec2 size = hi - lo;
+    if (!std::isfinite(size.x) || !std::isfinite(size.y))
+        throw InputError("the area to plant must be finite (its sides measure " +
+                         number_text(size.x) + " x " + number_text(size.y) + " m)");
     if (!(size.x > 0.0 && size.y > 0.0)) return {};
-    // A disk packing holds at most ~1.15 / r^2 points per square meter.
-    const double expected = 1.2 * (size.x + r) * (size.y + r) / (r * r);
-    if (expected > static_cast<double>(settings.max_points))
-        throw InputError("a spacing of " + std::to_string(r) +
-                         " m on this area would plant about " +
-                         std::to_string(static_cast<long long>(expected)) +
+    // A disk packing holds at most ~1.15 / r^2 points per square meter. In doubles: the
+    // figure may be far past any integer (1e308 m sides, a spacing of 1e-300 m), and it bounds
+    // the grid's sides below (each at most sqrt(2) * expected cells).
+    const double expected = 1.2 * ((size.x + r) / r) * ((size.y + r) / r);
+    if (!(expected <= static_cast<double>(settings.max_points)) ||
+        !(expected <= static_cast<double>(std::numeric_limits<int>::max() / 2)))
+        throw InputError("a spacing of " + number_text(r) + " m on this area would plant " +
+                         (std::isfinite(expected) ? "about " + number_text(expected)
+                                                  : std::string("more than 1e+308")) +
                          " trees; the limit is " + std::to_string(settings.max_points));
 
     const double cell = r / std::sqrt(2.0);

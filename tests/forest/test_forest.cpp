@@ -69,6 +69,34 @@ TEST(PoissonDisk, KeepsTheSpacingFillsTheBoxAndRepeats) {
     EXPECT_THROW(poisson_disk({0, 0}, {1000, 1000}, s), InputError);  // far too many points
 }
 
+// Areas and spacings far past any integer (sylva forest --area 1e308x1e308, --spacing
+// 1e-300) are refused with the figure as a person reads it, before any count is cast to an
+// integer: the cast overflowed and the refusal read "about -9223372036854775808 trees".
+std::string refusal(glm::dvec2 lo, glm::dvec2 hi, double spacing) {
+    PoissonSettings s;
+    s.min_distance = spacing;
+    try {
+        poisson_disk(lo, hi, s);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+TEST(PoissonDisk, RefusesAreasAndSpacingsPastAnyCountWithTheFigure) {
+    const std::string huge_area = refusal({0, 0}, {1e308, 1e308}, 4.0);
+    EXPECT_NE(huge_area.find("more than 1e+308 trees"), std::string::npos) << huge_area;
+    const std::string tiny_spacing = refusal({0, 0}, {60, 40}, 1e-300);
+    EXPECT_NE(tiny_spacing.find("more than 1e+308 trees"), std::string::npos) << tiny_spacing;
+    const std::string many = refusal({0, 0}, {1e9, 1e9}, 1.0);
+    EXPECT_NE(many.find("about 1.2e+18 trees"), std::string::npos) << many;
+    // Sides that overflow to infinity: the area is named, not its tree count.
+    const std::string infinite = refusal({-1e308, -1e308}, {1e308, 1e308}, 4.0);
+    EXPECT_NE(infinite.find("must be finite"), std::string::npos) << infinite;
+    for (const std::string& message : {huge_area, tiny_spacing, many, infinite})
+        EXPECT_EQ(message.find("-9"), std::string::npos) << message;
+}
+
 TEST(Ground, PolygonsWithHoles) {
     const Ground ground = parse_ground_json(R"({"polygons": [
         {"points": [[0, 0], [20, 0], [20, 10], [0, 10]]},
