@@ -63,10 +63,12 @@ class Reader {
         if (!table) fail(node, "'params' must be a table");
         for (const auto& [key, value] : *table) {
             if (key.str() == "seed") {
-                std::optional<int64_t> seed = value.value<int64_t>();
-                if (!value.is_integer() || !seed || *seed < 0)
+                // Read as an integer node only: value<int64_t>() would cast a float
+                // (seed = 1e308) to an integer first, which is undefined.
+                const toml::value<int64_t>* seed = value.as_integer();
+                if (!seed || seed->get() < 0)
                     fail(&value, "[params] seed must be a whole number, 0 or more");
-                params.seed = static_cast<std::uint64_t>(*seed);
+                params.seed = static_cast<std::uint64_t>(seed->get());
                 continue;
             }
             try {

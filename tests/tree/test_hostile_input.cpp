@@ -28,6 +28,27 @@ TEST(HostileTemplate, AnIntegerNoDoubleHoldsIsRejectedWithKeyAndLine) {
     }
 }
 
+// A seed must be a TOML integer: a float is refused before any cast (seed = 1e308 was cast
+// to an integer first, which is undefined), naming the key and line.
+TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
+    for (const char* seed : {"1e308", "2.5", "-1", "\"7\""}) {
+        const std::string text =
+            std::string("name = \"x\"\ngrammar = \"axiom: F\"\n[params]\nseed = ") + seed + "\n";
+        try {
+            parse_template_file(text, "x.toml");
+            ADD_FAILURE() << "expected InputError for seed = " << seed;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.line(), 4) << seed;
+            EXPECT_NE(std::string(e.what()).find("seed must be a whole number"), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_EQ(
+        parse_template_file("name = \"x\"\ngrammar = \"axiom: F\"\n[params]\nseed = 42\n", "x.toml")
+            .params.seed,
+        42u);
+}
+
 TEST(HostileTemplate, ATreeBeyondAnyGridIsBadInputNotAnInternalError) {
     for (const char* grammar : {"axiom: !(0.1)F(1e39)\n", "axiom: !(0.1)F\nF -> FFFFFFFF\n",
                                 "axiom: +(2147483647)$(-1)+(1e38)A(1)\nA(x) -> F(1e30)\n"}) {
