@@ -17,17 +17,22 @@ namespace sylva::layout {
 
 namespace {
 
-int label_code(const Label& l) {
-    return (l.dir * 4096 + l.left) * 4096 + l.right;
+// A label's three fields, each its own element of a key: no packing that overflows (one int
+// overflowed at 128 edge directions) or makes two labels equal (4096 colours). The order is
+// the packed code's order for every label it could hold.
+void push_label(std::vector<int>& key, const Label& l) {
+    key.push_back(l.dir);
+    key.push_back(l.left);
+    key.push_back(l.right);
 }
 
 // The key of a run of boundary items: labels and the wraps between them (not after the last).
 std::vector<int> run_key(const Boundary& b, std::size_t start, std::size_t length) {
     std::vector<int> key;
-    key.reserve(2 * length);
+    key.reserve(4 * length);
     for (std::size_t k = 0; k < length; ++k) {
         const BoundaryItem& item = b[(start + k) % b.size()];
-        key.push_back(label_code(item.label));
+        push_label(key, item.label);
         if (k + 1 < length) key.push_back(item.wraps);
     }
     return key;

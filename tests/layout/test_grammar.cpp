@@ -102,6 +102,28 @@ TEST(LayoutGrammar, SquareYieldsOneStarterRuleAndNoOthers) {
     EXPECT_EQ(g.starters[0].vertices.size(), 4u);
 }
 
+// A regular polygon of 130 sides has 130 edge directions: the boundary keys once packed a
+// label into one int that overflowed from direction 128 on (undefined; in practice keys
+// wrapped and could collide). Like the square it is one starter rule and nothing else.
+TEST(LayoutGrammar, AnExampleWithManyEdgeDirectionsIsOneStarter) {
+    std::string text = "p #e6ee9c";
+    std::string vertices;
+    const int n = 130;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        vertices += "v " + std::to_string(100.0 * std::cos(a)) + " " +
+                    std::to_string(100.0 * std::sin(a)) + "\n";
+        text += " " + std::to_string(i);
+    }
+    const Example ex = make_example(read_mesh_text(vertices + text + "\n", "ngon.mesh"));
+    EXPECT_GE(ex.dirs.degrees.size(), 128u);
+    const Grammar g = derive_grammar(ex);
+    EXPECT_EQ(g.starters.size(), 1u);
+    EXPECT_EQ(g.rules.size(), 0u);
+    ASSERT_EQ(g.starters.size(), 1u);
+    EXPECT_EQ(g.starters[0].vertices.size(), static_cast<std::size_t>(n));
+}
+
 TEST(LayoutGrammar, RulesSidesShareTheirBoundary) {
     for (const char* name : {"l_shape", "t_shape", "h_shape", "grid_of_plots"}) {
         const Example ex = example(name);
