@@ -192,6 +192,8 @@ void validate_mesh(PolygonMesh& mesh, const std::string& source) {
 }
 
 PolygonMesh read_mesh_text(std::string_view text, const std::string& source) {
+    // A UTF-8 byte order mark, as some editors save, is no content (TOML files take it too).
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     PolygonMesh mesh;
     std::vector<Origin> origins;
     std::istringstream in{std::string(text)};

@@ -36,6 +36,14 @@ TEST(LayoutMesh, ReadsTheTextFormAndMakesPolygonsCounterClockwise) {
     EXPECT_EQ(m.polygons[0].vertices, (std::vector<int>{3, 2, 1, 0}));
 }
 
+// Editors that save UTF-8 with a byte order mark: the mark is not the first line's content.
+TEST(LayoutMesh, AByteOrderMarkIsSkipped) {
+    const PolygonMesh m =
+        read_mesh_text("\xEF\xBB\xBFv 0 0\nv 1 0\nv 1 1\nv 0 1\np #2E7D32 0 1 2 3\n");
+    EXPECT_EQ(m.vertices.size(), 4u);
+    EXPECT_EQ(m.polygons.size(), 1u);
+}
+
 TEST(LayoutMesh, TextErrorsNameLineAndColumn) {
     InputError e = error_of("v 0 0\nv 1 x\n");
     EXPECT_EQ(e.where().source, "plan.mesh");
