@@ -87,6 +87,15 @@ Ground parse_ground_json(const std::string& text, const std::string& source) {
     } catch (const nlohmann::json::parse_error& e) {
         const SourceLocation where = location_of(text, e.byte == 0 ? 0 : e.byte - 1, source);
         throw InputError(std::string("invalid JSON: ") + e.what(), where);
+    } catch (const nlohmann::json::exception& e) {
+        // out_of_range 406, a number past any double (1e999), names the token but no byte.
+        const std::string what = e.what();
+        const std::size_t quote = what.find('\'');
+        const std::string token =
+            quote == std::string::npos ? "" : what.substr(quote + 1, what.rfind('\'') - quote - 1);
+        const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+        throw InputError("a number no double can hold" + (token.empty() ? "" : ": " + token),
+                         location_of(text, at == std::string::npos ? 0 : at, source));
     }
     if (!doc.is_object() || !doc.contains("polygons") || !doc["polygons"].is_array())
         throw InputError(source + ": expected an object with a \"polygons\" array");

@@ -1,5 +1,6 @@
 #include "forest/species_file.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "core/data_paths.h"
@@ -25,6 +26,22 @@ std::vector<Species> parse_species_json(const std::string& text, const std::stri
             }
         }
         throw InputError(std::string("invalid JSON: ") + e.what(), where);
+    } catch (const nlohmann::json::exception& e) {
+        // out_of_range 406, a number past any double (1e999), names the token but no byte.
+        const std::string what = e.what();
+        const std::size_t quote = what.find('\'');
+        const std::string token =
+            quote == std::string::npos ? "" : what.substr(quote + 1, what.rfind('\'') - quote - 1);
+        SourceLocation where{source, 0, 0};
+        if (const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+            at != std::string::npos) {
+            const std::size_t line_start = text.rfind('\n', at);
+            where.line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+            where.column =
+                1 + static_cast<int>(at - (line_start == std::string::npos ? 0 : line_start + 1));
+        }
+        throw InputError("a number no double can hold" + (token.empty() ? "" : ": " + token),
+                         where);
     }
     if (!doc.is_object() || !doc.contains("species") || !doc["species"].is_array() ||
         doc["species"].empty())

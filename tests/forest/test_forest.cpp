@@ -97,6 +97,27 @@ TEST(PoissonDisk, RefusesAreasAndSpacingsPastAnyCountWithTheFigure) {
         EXPECT_EQ(message.find("-9"), std::string::npos) << message;
 }
 
+// A number past any double (1e999) is bad input naming the file, line and token, not an
+// internal error (nlohmann's out_of_range escaped as exit 1).
+TEST(Ground, ANumberPastAnyDoubleIsBadInputWithTheLine) {
+    for (int file = 0; file < 2; ++file) {
+        try {
+            if (file == 0)
+                parse_ground_json(
+                    "{\"polygons\": [\n  {\"points\": [[0, 0], [1e999, 0], [1, 1]]}]}", "g.json");
+            else
+                parse_species_json(
+                    "{\"species\": [\n  {\"template\": \"oak\", \"weight\": 1e999}]}", "s.json",
+                    ".");
+            ADD_FAILURE() << "no error";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.where().source, file == 0 ? "g.json" : "s.json");
+            EXPECT_EQ(e.line(), 2);
+            EXPECT_NE(std::string(e.what()).find("1e999"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Ground, PolygonsWithHoles) {
     const Ground ground = parse_ground_json(R"({"polygons": [
         {"points": [[0, 0], [20, 0], [20, 10], [0, 10]]},
