@@ -151,6 +151,17 @@ T parse_integer(const std::string& flag, const std::string& text) {
     return value;
 }
 
+// A triangle budget flag, held to the triangle_budget parameter's range (core/tree_params):
+// a budget past it (1e19) overflowed later arithmetic and acted like 1.
+std::size_t parse_budget(const std::string& flag, const std::string& text) {
+    const std::size_t budget = parse_integer<std::size_t>(flag, text);
+    for (const ParamInfo& info : param_infos())
+        if (info.key == "triangle_budget" && static_cast<double>(budget) > info.max)
+            throw UsageError(flag + " must be 0 to " +
+                             std::to_string(static_cast<std::size_t>(info.max)) + ", not " + text);
+    return budget;
+}
+
 Options parse_options(int argc, char** argv) {
     Options o;
     if (argc < 2) throw UsageError("missing command");
@@ -189,13 +200,13 @@ Options parse_options(int argc, char** argv) {
                 throw UsageError("--adaptivity expects a number from 0 to 1, not '" + text + "'");
             o.mesh.vdb_adaptivity = a;
         } else if (arg == "--budget") {
-            o.budget = parse_integer<std::size_t>(arg, value());
+            o.budget = parse_budget(arg, value());
         } else if (arg == "--budget-trunk") {
-            o.budget_trunk = parse_integer<std::size_t>(arg, value());
+            o.budget_trunk = parse_budget(arg, value());
         } else if (arg == "--budget-crown") {
-            o.budget_crown = parse_integer<std::size_t>(arg, value());
+            o.budget_crown = parse_budget(arg, value());
         } else if (arg == "--budget-leaves") {
-            o.budget_leaves = parse_integer<std::size_t>(arg, value());
+            o.budget_leaves = parse_budget(arg, value());
         } else if (arg == "--crown-shape") {
             const std::string name = value();
             if (name == "auto")

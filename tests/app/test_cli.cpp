@@ -75,6 +75,19 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
 }
 
+// A budget past the triangle_budget range (0 to 10^7) is a usage error: above about 1e18
+// it overflowed and acted like a budget of 1.
+TEST_F(Cli, ABudgetPastItsRangeIsAUsageErrorNamingTheRange) {
+    for (const char* flag : {"--budget", "--budget-trunk", "--budget-crown", "--budget-leaves"}) {
+        Result r =
+            run(std::string("export ") + flag + " 18446744073709551615 -o " + path("tree.glb"));
+        EXPECT_EQ(r.code, 2) << flag << ": " << r.output;
+        EXPECT_NE(r.output.find("0 to 10000000"), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(run("export --budget 10000001 -o " + path("tree.glb")).code, 2);
+    EXPECT_TRUE(listing().empty());
+}
+
 TEST_F(Cli, BrokenGrammarIsExitCode3NamingFileLineAndColumnAndNoFileIsWritten) {
     { std::ofstream(path("broken.lsys")) << "axiom: F\nF -> F[+F]F\nF FF\n"; }
     Result r = run("export -t " + path("broken.lsys") + " -o " + path("tree.obj"));
