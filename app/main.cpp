@@ -316,10 +316,16 @@ void print_parts(const std::vector<NamedMesh>& parts, const std::vector<std::str
 
 int run_export(const Options& o) {
     if (o.output.empty()) throw UsageError("export needs -o OUT.obj|OUT.glb|OUT.ply");
-    const ExportFormat* format = o.format ? o.format : format_from_extension(o.output);
+    const ExportFormat* by_extension = format_from_extension(o.output);
+    const ExportFormat* format = o.format ? o.format : by_extension;
     if (!format)
         throw UsageError("cannot tell the format of '" + o.output +
                          "': use .obj, .glb or .ply, or --format");
+    // PLY bytes in a .glb open in no engine: an extension of another format is a mistake.
+    if (by_extension && by_extension != format)
+        throw UsageError("--format " + std::string(format->name) + " does not match '" + o.output +
+                         "' (a " + std::string(by_extension->name) +
+                         " file name): use the extension " + std::string(format->extension));
     output_target(o.output);  // a directory or device at -o is refused before the work
     TreeTemplate tmpl = configured_template(o);
     FinishSettings finish;

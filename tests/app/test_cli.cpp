@@ -88,6 +88,17 @@ TEST_F(Cli, ABudgetPastItsRangeIsAUsageErrorNamingTheRange) {
     EXPECT_TRUE(listing().empty());
 }
 
+// --format ply -o x.glb wrote PLY bytes into a .glb: a known extension of another format is
+// refused before any work; an extension no format claims still takes --format.
+TEST_F(Cli, AFormatThatContradictsTheExtensionIsAUsageError) {
+    Result r = run("export --format ply -o " + path("tree.glb"));
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find(".ply"), std::string::npos) << r.output;
+    EXPECT_TRUE(listing().empty());
+    r = run("export --format glb --budget 200 -o " + path("tree.glb"));
+    EXPECT_EQ(r.code, 0) << r.output;
+}
+
 TEST_F(Cli, BrokenGrammarIsExitCode3NamingFileLineAndColumnAndNoFileIsWritten) {
     { std::ofstream(path("broken.lsys")) << "axiom: F\nF -> F[+F]F\nF FF\n"; }
     Result r = run("export -t " + path("broken.lsys") + " -o " + path("tree.obj"));
