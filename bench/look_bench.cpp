@@ -56,9 +56,35 @@ double median(std::vector<double> v) {
 }
 
 // "trunk: 3 pieces (1 soup), 2 degenerate, pairs 4-17 4-18 ..."
-void print_detail(const char* part, const SelfIntersections& found) {
+void print_detail(const char* part, const Mesh& mesh, const SelfIntersections& found) {
     std::printf("%s: %zu pieces (%zu soup), %zu degenerate", part, found.pieces, found.soup_pieces,
                 found.degenerate.size());
+    // How the pairs touch: sharing an edge, a corner, or apart (positions welded).
+    std::size_t shared[3] = {0, 0, 0};
+    for (const auto& [a, b] : found.pairs) {
+        int common = 0;
+        for (std::uint32_t i : mesh.triangles[a])
+            for (std::uint32_t j : mesh.triangles[b])
+                common += mesh.positions[i] == mesh.positions[j];
+        ++shared[std::min(common, 2)];
+    }
+    // Pairs whose triangles are joined by shared vertex indices (not only by position).
+    std::vector<std::uint32_t> root(mesh.positions.size());
+    for (std::uint32_t v = 0; v < root.size(); ++v) root[v] = v;
+    const auto find = [&](std::uint32_t v) {
+        while (root[v] != v) v = root[v] = root[root[v]];
+        return v;
+    };
+    for (const auto& t : mesh.triangles) {
+        root[find(t[1])] = find(t[0]);
+        root[find(t[2])] = find(t[0]);
+    }
+    std::size_t joined = 0;
+    for (const auto& [a, b] : found.pairs)
+        joined += find(mesh.triangles[a][0]) == find(mesh.triangles[b][0]);
+    if (!found.pairs.empty())
+        std::printf(" (%zu apart, %zu at a corner, %zu at an edge; %zu in one indexed piece)",
+                    shared[0], shared[1], shared[2], joined);
     if (!found.pairs.empty()) std::printf(", pairs");
     for (std::size_t i = 0; i < std::min<std::size_t>(4, found.pairs.size()); ++i)
         std::printf(" %u-%u", found.pairs[i][0], found.pairs[i][1]);
@@ -182,8 +208,8 @@ int main(int argc, char** argv) {
                     row.crown_fold, row.iou, row.worst_view, pairs_ms, folds_ms, silhouette_ms);
                 if (detail) {
                     std::printf("%20s", "");
-                    print_detail("trunk", trunk_found);
-                    print_detail("; crown", crown_found);
+                    print_detail("trunk", r.trunk, trunk_found);
+                    print_detail("; crown", r.crown, crown_found);
                     std::printf("\n");
                 }
                 rows[k].push_back(row);

@@ -131,11 +131,15 @@ const std::vector<Field>& fields() {
          nullptr,
          &TreeParams::triangle_budget},
         {{"crown_shape",
-          "game mesh crown: auto (convex hulls below 400 triangles when blobs touch in rings), "
-          "blobs (its own surface) or hulls",
+          "game mesh crown: auto (convex hulls when blobs touch in rings, else blobs), blobs "
+          "(its own surface) or hulls",
           0, 2, true, kCrownShapes},
          nullptr,
          &TreeParams::crown_shape},
+        whole("crown_lump_triangles",
+              "game mesh crown as hulls: triangles of the budget per lump (more: fewer, larger "
+              "lumps)",
+              10, 1000, &TreeParams::crown_lump_triangles),
         // Space colonization (seed 000, chapter 3).
         whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
               &TreeParams::attraction_points),

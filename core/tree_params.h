@@ -11,31 +11,32 @@
 namespace sylva {
 
 struct TreeParams {
-    int trunk_resolution = 96;     // P_Tres: marching-cubes cells along the longest side
-    int crown_resolution = 64;     // P_Cres
-    double branch_length = 0.5;    // P_Bl: default step of F and f, meters
-    double branch_width = 0.1;     // P_Bw: starting width (diameter) of the trunk, meters
-    double trunk_taper = 0.95;     // P_r1: width factor per trunk segment
-    double branch_taper = 0.8;     // P_r2: width factor per branch level and segment
-    double sphere_diameter = 0.3;  // P_Sdia
-    double crown_offset = 0.06;    // P_Soff
-    double crown_fusion = 0.01;    // P_Cfus
-    int generations = 6;           // P_Tgen: derivation steps
-    double pitch_angle = 22.5;     // P_alpha, degrees: & ^
-    double yaw_angle = 22.5;       // P_beta, degrees: + - (and roll \ /)
-    double tropism = 0.0;          // elasticity e of the bend towards gravity (ABOP)
-    double tip_width = 0.02;       // pipe width model: diameter at the tips, meters
-    double pipe_exponent = 2.5;    // pipe width model: Murray's exponent g
-    double joint_blend = 0.0;      // trunk joints: smooth-union radius, meters (0 = hard union)
-    int crown_blend = 0;           // CrownBlend: how crown spheres fuse
-    int crown_mesh = 1;            // 1: mesh the crown; 0: leaves only (seed 001, B.6)
-    int crown_merge = 1;           // 1: low budgets merge crown blobs (tree/crown_merge.h)
-    int drop_hidden = 0;           // 1: game meshes leave out what the crown hides (pipeline.h)
-    double leaf_density = 60.0;    // leaves per cubic meter of crown
-    double leaf_size = 0.25;       // leaf length, meters
-    int leaf_shape = 0;            // LeafShape
-    int triangle_budget = 800;     // export: trunk + crown reduced to this (0 = no reduction)
-    int crown_shape = 0;           // CrownShape: how the game mesh draws the crown
+    int trunk_resolution = 96;      // P_Tres: marching-cubes cells along the longest side
+    int crown_resolution = 64;      // P_Cres
+    double branch_length = 0.5;     // P_Bl: default step of F and f, meters
+    double branch_width = 0.1;      // P_Bw: starting width (diameter) of the trunk, meters
+    double trunk_taper = 0.95;      // P_r1: width factor per trunk segment
+    double branch_taper = 0.8;      // P_r2: width factor per branch level and segment
+    double sphere_diameter = 0.3;   // P_Sdia
+    double crown_offset = 0.06;     // P_Soff
+    double crown_fusion = 0.01;     // P_Cfus
+    int generations = 6;            // P_Tgen: derivation steps
+    double pitch_angle = 22.5;      // P_alpha, degrees: & ^
+    double yaw_angle = 22.5;        // P_beta, degrees: + - (and roll \ /)
+    double tropism = 0.0;           // elasticity e of the bend towards gravity (ABOP)
+    double tip_width = 0.02;        // pipe width model: diameter at the tips, meters
+    double pipe_exponent = 2.5;     // pipe width model: Murray's exponent g
+    double joint_blend = 0.0;       // trunk joints: smooth-union radius, meters (0 = hard union)
+    int crown_blend = 0;            // CrownBlend: how crown spheres fuse
+    int crown_mesh = 1;             // 1: mesh the crown; 0: leaves only (seed 001, B.6)
+    int crown_merge = 1;            // 1: low budgets merge crown blobs (tree/crown_merge.h)
+    int drop_hidden = 0;            // 1: game meshes leave out what the crown hides (pipeline.h)
+    double leaf_density = 60.0;     // leaves per cubic meter of crown
+    double leaf_size = 0.25;        // leaf length, meters
+    int leaf_shape = 0;             // LeafShape
+    int triangle_budget = 800;      // export: trunk + crown reduced to this (0 = no reduction)
+    int crown_shape = 0;            // CrownShape: how the game mesh draws the crown
+    int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
     // Space colonization (growth = "colonization", seed 000 chapter 3); the L-system
     // ignores these.
     int attraction_points = 2000;    // N
@@ -90,8 +91,8 @@ enum class CrownBlend { Root = 0, Pasko = 1 };
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
 // Choices of the `crown_shape` parameter: how a reduced crown is drawn (tree/crown_hulls.h).
 enum class CrownShape {
-    Automatic = 0,  // hulls below kCrownHullBudget trunk + crown triangles when the crown
-                    // has handles (blobs touching in rings), else blobs
+    Automatic = 0,  // hulls in a game mesh when the crown has handles (blobs touching in
+                    // rings), else blobs
     Blobs = 1,      // the crown's own surface, reduced
     Hulls = 2,      // the convex hulls of a few clusters of the crown, reduced
 };

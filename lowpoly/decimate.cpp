@@ -103,6 +103,7 @@ struct Reduction {
     // The parts on the way down, at the snapshot count, before relocation (empty unless
     // asked for).
     std::vector<Mesh> snapshot;
+    std::size_t crossing_pairs = 0;  // of faces of one piece (keep_apart could not hold)
 };
 
 // How far a lane (half a part, Lanes below) goes alone: down to its share of what its part
@@ -130,6 +131,7 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     cs.min_foot_vertices = kMinFootVertices;
     cs.lazy_legality = settings.lazy_legality;
     cs.passes = settings.fast_passes;
+    cs.keep_apart = settings.keep_apart;
     const std::size_t alone = std::max(target, snapshot_at);
     std::vector<std::size_t> in_part(meshes.size(), 0);
     for (std::size_t k = 0; k < meshes.size(); ++k) in_part[part_of[k]] += meshes[k].triangles();
@@ -184,6 +186,11 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     });
     throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
+    std::vector<std::size_t> crossing(meshes.size(), 0);
+    if (settings.count_crossings)
+        tbb::parallel_for(std::size_t{0}, meshes.size(),
+                          [&](std::size_t k) { crossing[k] = meshes[k].crossing_pairs(); });
+    out.crossing_pairs = std::accumulate(crossing.begin(), crossing.end(), std::size_t{0});
     out.parts = extract(meshes);
     return out;
 }
@@ -246,6 +253,7 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
                                  target, attempt == 0 && snapshot ? snapshot_at : 0, settings,
                                  min_twice_area, part_of, lane_slack);
             result.parts = std::move(r.parts);
+            result.crossing_pairs = r.crossing_pairs;
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
             const std::string why = broken(result.parts, parts, part_of);
@@ -335,6 +343,11 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
         }
         std::vector<Mesh> cut = std::move(detailed.parts);
         int handles_cut = 0;
+        // A budget below what the handles allow leaves the cut parts no room to keep apart:
+        // the guard there only refuses collapses (and its relaxed end broke pieces, which the
+        // back-off then undid); their crossings are still counted and said.
+        DecimateSettings cut_reduction = quiet;
+        cut_reduction.keep_apart = false;
         for (int round = 0; round < 8 && !result.within_budget && detailed.backoffs == 0; ++round) {
             throw_if_cancelled(settings.cancel);
             // The parts share no vertex: each is measured and cut on a core of its own.
@@ -356,7 +369,7 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
             const std::size_t done = std::accumulate(cuts.begin(), cuts.end(), std::size_t{0});
             if (done == 0) break;
             handles_cut += static_cast<int>(done);
-            DecimateResult again = reduce_with_backoff(cut, part_of, quiet, min_twice_area);
+            DecimateResult again = reduce_with_backoff(cut, part_of, cut_reduction, min_twice_area);
             // Keep the last clean result, and only take a better one.
             if (again.triangles >= result.triangles) break;
             again.handles_cut = handles_cut;
@@ -372,6 +385,11 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
                       (result.handles_cut > 0
                            ? " (after cutting " + std::to_string(result.handles_cut) + " handles)"
                            : std::string());
+    if (result.crossing_pairs > 0)
+        result.note += std::string(result.note.empty() ? "" : "; ") +
+                       std::to_string(result.crossing_pairs) +
+                       " pairs of faces cross inside a piece: the budget left no collapse that "
+                       "keeps them apart (parts closer together than a facet)";
     return result;
 }
 

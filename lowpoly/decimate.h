@@ -68,6 +68,17 @@ struct DecimateSettings {
     // sharper than a right angle (CollapseMesh::unfold(), lowpoly/quadric_collapse.h): a
     // reduced crown of many spheres otherwise reads as a ball of spikes.
     bool unfold = true;
+    // No two faces of a piece cross: from twice the budget on (before, faces are too small
+    // to reach through the surface), a collapse, relocation or flip that would make faces
+    // cross is not made (lowpoly/triangle_crossing.h), checked against the faces near it in
+    // a grid (lowpoly/face_grid.h). A branch folded through itself or its parent reads as a
+    // crease or a hole. Where only crossing collapses are left above the budget (twigs
+    // packed closer than a facet), those are made, cheapest first, and the result says so
+    // (DecimateResult::crossing_pairs). Faces of different pieces may cross.
+    bool keep_apart = true;
+    // Count the pairs of faces of one piece that cross in the result
+    // (DecimateResult::crossing_pairs; about a microsecond per face left).
+    bool count_crossings = true;
     // In the shared order, a part with more triangles than this never goes below it: its
     // collapses stop there and the other parts take the rest of the budget (0: no floor).
     // reduce_tree() keeps trunk and crown at a quarter of the budget each this way, so
@@ -94,6 +105,11 @@ struct DecimateResult {
     // condition and the guards keep the manifold; the back-off is the safety net.
     int backoffs = 0;
     int handles_cut = 0;  // see DecimateSettings::cut_handles
+    // The pairs of faces of one piece that cross (counted on the result:
+    // CollapseMesh::crossing_pairs()), where the budget could only be reached with
+    // collapses that make them cross or the collapses before the guard started did; the
+    // note says so. 0 without count_crossings (not counted).
+    std::size_t crossing_pairs = 0;
     // Empty, or a sentence for people: why the budget was missed, or what was backed off.
     std::string note;
 };

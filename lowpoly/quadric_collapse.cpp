@@ -13,6 +13,7 @@
 #include <numeric>
 
 #include "core/disjoint_sets.h"
+#include "lowpoly/triangle_crossing.h"
 
 namespace sylva {
 
@@ -206,6 +207,9 @@ void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
     min_foot_vertices_ = settings.min_foot_vertices;
     lazy_ = settings.lazy_legality;
     passes_ = settings.passes;
+    keep_apart_ = settings.keep_apart;
+    guarding_ = false;
+    relaxed_ = false;
     cancel_ = cancel;
     const std::size_t nv = position_.size(), nf = face_alive_.size();
 
@@ -269,7 +273,150 @@ void CollapseMesh::fill_heap() {
     for (std::size_t i = 0; i < heap_.size(); ++i)
         heap_position_[heap_[i].vertex] = static_cast<std::uint32_t>(i);
     heap_filled_ = true;
+    if (keep_apart_ && live_faces_ <= guard_from_) start_guard();
     throw_if_cancelled(cancel_);
+}
+
+CollapseMesh::FaceShape CollapseMesh::shape(std::uint32_t face, std::uint32_t v,
+                                            std::uint32_t becomes, const glm::dvec3& p) const {
+    FaceShape s;
+    s.face = face;
+    glm::dvec3 at[3];
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t u = corner_[3 * face + k];
+        s.id[k] = u == v ? becomes : u;
+        at[k] = u == v ? p : position_[u];
+    }
+    s.t = crossing_triangle(at[0], at[1], at[2]);
+    s.lo = glm::min(glm::min(at[0], at[1]), at[2]);
+    s.hi = glm::max(glm::max(at[0], at[1]), at[2]);
+    return s;
+}
+
+void CollapseMesh::start_guard() {
+    // Cells about twice the mean edge: a face then lists in a few cells, and collapses make
+    // faces larger than that only near the end, when few are left.
+    double length = 0.0;
+    std::size_t edges = 0;
+    for (std::uint32_t f = 0; f < face_alive_.size(); ++f) {
+        if (!face_alive_[f]) continue;
+        for (int k = 0; k < 3; ++k)
+            length += glm::distance(position_[corner_[3 * f + k]],
+                                    position_[corner_[3 * f + (k + 1) % 3]]);
+        edges += 3;
+    }
+    guarding_ = false;
+    if (edges == 0 || !(length > 0.0)) return;
+    grid_.reset(2.0 * length / static_cast<double>(edges), face_alive_.size());
+    listed_.resize(face_alive_.size());
+    in_fan_.assign(face_alive_.size(), 0);
+    fan_stamp_ = 0;
+    for (std::uint32_t f = 0; f < face_alive_.size(); ++f)
+        if (face_alive_[f]) grid_place(f);
+    grid_faces_ = live_faces_;
+    guarding_ = true;
+}
+
+bool CollapseMesh::listed_as_now(std::uint32_t face) const {
+    const FaceShape& s = listed_[face];
+    return s.id[0] == corner_[3 * face] && s.id[1] == corner_[3 * face + 1] &&
+           s.id[2] == corner_[3 * face + 2];
+}
+
+void CollapseMesh::grid_place(std::uint32_t face) {
+    listed_[face] = shape(face);
+    grid_.place(face, listed_[face].lo, listed_[face].hi);
+}
+
+namespace {
+
+bool boxes_meet(const glm::dvec3& alo, const glm::dvec3& ahi, const glm::dvec3& blo,
+                const glm::dvec3& bhi) {
+    return alo.x <= bhi.x && blo.x <= ahi.x && alo.y <= bhi.y && blo.y <= ahi.y && alo.z <= bhi.z &&
+           blo.z <= ahi.z;
+}
+
+}  // namespace
+
+inline bool CollapseMesh::shapes_cross(const FaceShape& a, const FaceShape& b) {
+    if (!boxes_meet(a.lo, a.hi, b.lo, b.hi)) return false;
+    int shared = 0, ia = 0, ib = 0;  // the corners they share, and where one of them stands
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (a.id[i] == b.id[j]) {
+                ++shared;
+                ia = i;
+                ib = j;
+            }
+    return triangles_cross(a.t, b.t, shared, ia, ib);
+}
+
+std::size_t CollapseMesh::crossing_pairs() const {
+    std::vector<FaceShape> shapes;
+    double length = 0.0;
+    for (std::uint32_t f = 0; f < face_alive_.size(); ++f)
+        if (face_alive_[f]) {
+            shapes.push_back(shape(f));
+            length += shapes.back().t.size;
+        }
+    if (shapes.empty() || !(length > 0.0)) return 0;
+    FaceGrid grid;
+    grid.reset(2.0 * length / static_cast<double>(shapes.size()), shapes.size());
+    for (std::uint32_t i = 0; i < shapes.size(); ++i) grid.place(i, shapes[i].lo, shapes[i].hi);
+    std::size_t pairs = 0;
+    for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+        const FaceShape& a = shapes[i];
+        grid.near(a.lo, a.hi, [&](std::uint32_t j) {
+            const FaceShape& b = shapes[j];
+            if (j > i && piece_[a.id[0]] == piece_[b.id[0]] && shapes_cross(a, b)) ++pairs;
+        });
+    }
+    return pairs;
+}
+
+bool CollapseMesh::apart(std::span<const FaceShape> faces, std::uint32_t skip_a,
+                         std::uint32_t skip_b) const {
+    glm::dvec3 lo = faces.front().lo, hi = faces.front().hi;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        lo = glm::min(lo, faces[i].lo);
+        hi = glm::max(hi, faces[i].hi);
+        for (std::size_t j = i + 1; j < faces.size(); ++j)
+            if (shapes_cross(faces[i], faces[j])) return false;
+    }
+    if (++fan_stamp_ == 0) {
+        std::fill(in_fan_.begin(), in_fan_.end(), 0);
+        fan_stamp_ = 1;
+    }
+    for (const FaceShape& f : faces) in_fan_[f.face] = fan_stamp_;
+    // Only faces of the same piece: pieces may overlap (a crown's hulls, a trunk's parts).
+    const std::uint32_t piece = piece_[faces.front().id[0]];
+    bool crossed = false;
+    grid_.near(lo, hi, [&](std::uint32_t g) {
+        if (crossed || !face_alive_[g] || g == skip_a || g == skip_b || in_fan_[g] == fan_stamp_)
+            return;
+        const FaceShape& other = listed_[g];
+        if (piece_[other.id[0]] != piece) return;
+        for (const FaceShape& f : faces)
+            if (shapes_cross(f, other)) {
+                crossed = true;
+                return;
+            }
+    });
+    return !crossed;
+}
+
+bool CollapseMesh::keeps_apart(std::uint32_t v, std::uint32_t becomes, const glm::dvec3& p,
+                               std::uint32_t h) const {
+    const std::uint32_t skip_a = h == kNone ? kNone : h / 3;
+    const std::uint32_t skip_b = h == kNone ? kNone : opposite_[h] / 3;
+    fan_.clear();
+    for (std::uint32_t g = outgoing_[v];;) {
+        const std::uint32_t f = g / 3;
+        if (f != skip_a && f != skip_b) fan_.push_back(shape(f, v, becomes, p));
+        g = turn(g);
+        if (g == outgoing_[v]) break;
+    }
+    return fan_.empty() || apart(fan_, skip_a, skip_b);
 }
 
 bool CollapseMesh::topology_allows(std::uint32_t h) const {
@@ -349,8 +496,11 @@ bool CollapseMesh::is_legal(std::uint32_t h, double* volume_change) const {
     if (is_foot(v0) && !(is_foot(v1) && foot_vertices_[piece_[v0]] > min_foot_vertices_))
         return false;
     if (!topology_allows(h)) return false;
-    return fan_allows(v0, position_[v1], h / 3, opposite_[h] / 3, volume_change) &&
-           keeps_volume(v0, *volume_change);
+    if (!fan_allows(v0, position_[v1], h / 3, opposite_[h] / 3, volume_change) ||
+        !keeps_volume(v0, *volume_change))
+        return false;
+    crossing_ = guarding_ && !keeps_apart(v0, v1, position_[v1], h);
+    return !crossing_;
 }
 
 float CollapseMesh::error(std::uint32_t h) const {
@@ -411,15 +561,21 @@ std::uint32_t CollapseMesh::best_legal(std::uint32_t v, float* best, double* vol
     for (int i = 1; i < n; ++i)  // insertion sort: stable, and n is a valence
         for (int j = i; j > 0 && candidates[j].first < candidates[j - 1].first; --j)
             std::swap(candidates[j], candidates[j - 1]);
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n; ++i) {
         if (is_legal(candidates[i].second, volume_change)) {
             *best = candidates[i].first;
             return candidates[i].second;
         }
+        // v's faces would cross another face of its piece: its other collapses move the
+        // same faces over the same ground, and testing each costs more than waiting until a
+        // neighbour changes.
+        if (crossing_) return kNone;
+    }
     return kNone;
 }
 
 void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
+    if (keep_apart_ && !guarding_ && heap_filled_ && live_faces_ <= guard_from_) start_guard();
     const std::uint32_t v0 = corner_[h], v1 = to(h), o = opposite_[h];
     const std::uint32_t piece = piece_[v0];
     piece_volume_[piece] += volume_change;
@@ -450,8 +606,16 @@ void CollapseMesh::collapse(std::uint32_t h, double volume_change) {
     face_alive_[h / 3] = 0;
     face_alive_[o / 3] = 0;
     live_faces_ -= 2;
+    if (guarding_) {
+        grid_.remove(h / 3);
+        grid_.remove(o / 3);
+        // Faces grow as they go: cells for the faces there are now, once half have gone.
+        if (2 * live_faces_ < grid_faces_) start_guard();
+    }
     for (std::uint32_t g = outgoing_[v1];;) {
         update_normal(g / 3);
+        // v0's old faces moved; v1's own kept their place.
+        if (guarding_ && !listed_as_now(g / 3)) grid_place(g / 3);
         g = turn(g);
         if (g == outgoing_[v1]) break;
     }
@@ -580,15 +744,31 @@ void CollapseMesh::collapse_to(std::size_t max_triangles, std::size_t interval,
     // thousand triangles: where each collapse shows, it comes in the order of its error.
     constexpr std::size_t kHeapAtLeast = 4096;
     const std::size_t pass_floor = std::max(2 * max_triangles, kHeapAtLeast);
+    // The guard from twice the count asked for: before, faces are too small to reach
+    // through the surface (every template at 200-3000: as few crossings as a guard from
+    // the heap's start, at a quarter less time).
+    guard_from_ = 2 * max_triangles;
     if (passes_ && !heap_filled_ && live_faces_ > pass_floor &&
         !collapse_in_passes(pass_floor, interval, step_done))
         return;
     prepare_heap();
-    while (!heap_.empty() && live_faces_ > max_triangles) {
-        if (step(std::numeric_limits<float>::infinity()) == 0) continue;
-        if (step_done && interval > 0 && collapses_ % interval == 0 && !step_done(collapses_))
-            break;
+    for (;;) {
+        while (!heap_.empty() && live_faces_ > max_triangles) {
+            if (step(std::numeric_limits<float>::infinity()) == 0) continue;
+            if (step_done && interval > 0 && collapses_ % interval == 0 && !step_done(collapses_))
+                return;
+        }
+        if (live_faces_ <= max_triangles || !relax_guard()) return;
     }
+}
+
+bool CollapseMesh::relax_guard() {
+    if (!guarding_) return false;
+    guarding_ = false;
+    keep_apart_ = false;
+    relaxed_ = true;
+    fill_heap();
+    return !heap_.empty();
 }
 
 void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles, CancelFlag cancel,
@@ -663,7 +843,12 @@ void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles
                 second = front;
             }
         }
-        if (cheapest == meshes.size()) break;  // no collapse left anywhere
+        if (cheapest == meshes.size()) {  // no collapse left anywhere
+            bool relaxed = false;
+            for (CollapseMesh& m : meshes) relaxed = m.relax_guard() || relaxed;
+            if (relaxed) continue;
+            break;
+        }
         const std::size_t removed = meshes[cheapest].step(second);
         in_part[part(cheapest)] -= removed;
         triangles -= removed;
@@ -707,11 +892,13 @@ void CollapseMesh::relocate() {
                 !std::isfinite(candidate.z))
                 break;
             double change = 0.0;
-            if (fan_allows(v, candidate, kNone, kNone, &change) && keeps_volume(v, change)) {
+            if (fan_allows(v, candidate, kNone, kNone, &change) && keeps_volume(v, change) &&
+                (!guarding_ || keeps_apart(v, v, candidate, kNone))) {
                 piece_volume_[piece_[v]] += change;
                 position_[v] = candidate;
                 for (std::uint32_t g = outgoing_[v];;) {
                     update_normal(g / 3);
+                    if (guarding_) grid_place(g / 3);
                     g = turn(g);
                     if (g == outgoing_[v]) break;
                 }
@@ -794,7 +981,21 @@ bool CollapseMesh::flip_unfolds(std::uint32_t h) const {
         before_excess += fold_excess(k == 0 || k == 3 ? oa : ob, beyond, far, corner[k], end);
         after_excess += fold_excess(k < 2 ? ua : ub, beyond, far, corner[k], end);
     }
-    return after_excess < before_excess;
+    if (!(after_excess < before_excess)) return false;
+    if (!guarding_) return true;
+    // The two faces as flip() will leave them.
+    FaceShape faces[2];
+    const std::uint32_t ids[2][3] = {{vl, v0, vr}, {vr, v1, vl}};
+    for (int i = 0; i < 2; ++i) {
+        const glm::dvec3 &a = position_[ids[i][0]], &b = position_[ids[i][1]],
+                         &c = position_[ids[i][2]];
+        faces[i].face = i == 0 ? fa : fb;
+        for (int k = 0; k < 3; ++k) faces[i].id[k] = ids[i][k];
+        faces[i].t = crossing_triangle(a, b, c);
+        faces[i].lo = glm::min(glm::min(a, b), c);
+        faces[i].hi = glm::max(glm::max(a, b), c);
+    }
+    return apart(faces, fa, fb);
 }
 
 void CollapseMesh::flip(std::uint32_t h) {
@@ -821,23 +1022,34 @@ void CollapseMesh::flip(std::uint32_t h) {
     outgoing_[vr] = b;
     update_normal(a / 3);
     update_normal(b / 3);
+    if (guarding_) {
+        grid_place(a / 3);
+        grid_place(b / 3);
+    }
 }
 
 std::size_t CollapseMesh::unfold() {
     constexpr int kMaxSweeps = 8;
+    // Flips keep their faces alive: the live ones are listed once (a reduced mesh keeps a
+    // few hundred of the tens of thousands it came from).
+    std::vector<std::uint32_t> live;
+    live.reserve(live_faces_);
+    for (std::uint32_t f = 0; f < face_alive_.size(); ++f)
+        if (face_alive_[f]) live.push_back(f);
     std::size_t flips = 0;
     for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
         std::size_t made = 0;
-        for (std::uint32_t h = 0; h < corner_.size(); ++h) {
-            if (!face_alive_[h / 3] || opposite_[h] < h) continue;  // each edge once
-            const std::uint32_t o = opposite_[h];
-            if (!sharp_concave(normal_[h / 3], normal_[o / 3], position_[corner_[prev(o)]],
-                               position_[corner_[h]]))
-                continue;
-            if (!flip_unfolds(h)) continue;
-            flip(h);
-            ++made;
-        }
+        for (const std::uint32_t f : live)
+            for (std::uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+                if (opposite_[h] < h) continue;  // each edge once
+                const std::uint32_t o = opposite_[h];
+                if (!sharp_concave(normal_[h / 3], normal_[o / 3], position_[corner_[prev(o)]],
+                                   position_[corner_[h]]))
+                    continue;
+                if (!flip_unfolds(h)) continue;
+                flip(h);
+                ++made;
+            }
         flips += made;
         if (made == 0) break;
     }

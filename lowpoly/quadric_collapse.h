@@ -22,6 +22,8 @@
 
 #include "core/cancel.h"
 #include "core/mesh.h"
+#include "lowpoly/face_grid.h"
+#include "lowpoly/triangle_crossing.h"
 
 namespace sylva {
 
@@ -39,6 +41,10 @@ struct CollapseSettings {
     // See DecimateSettings::fast_passes: collapse_to() makes the bulk of its collapses in
     // passes (collapse_in_passes()).
     bool passes = true;
+    // See DecimateSettings::keep_apart: once collapse_to() is down to twice the count asked
+    // for, no collapse, move or flip makes two faces of a piece cross
+    // (lowpoly/triangle_crossing.h), until relax_guard().
+    bool keep_apart = true;
 };
 
 class CollapseMesh {
@@ -80,6 +86,15 @@ class CollapseMesh {
     // left, each weighed against `max_key` as the other meshes' front; returns the triangles
     // removed.
     std::size_t collapse_up_to(float max_key, std::size_t min_triangles);
+    // When no collapse is left that keeps the faces apart (CollapseSettings::keep_apart),
+    // lets the rest make faces cross: the guard goes off for good and the heap is filed
+    // anew. Returns whether that left a collapse to make (false when it was off already).
+    bool relax_guard();
+    // Whether the guard against crossings was relaxed (relax_guard()).
+    bool relaxed() const { return relaxed_; }
+    // The pairs of faces of one piece that cross (lowpoly/triangle_crossing.h): what the
+    // guard could not keep apart. About a microsecond per face.
+    std::size_t crossing_pairs() const;
     // Moves each vertex to the minimum of its accumulated quadric where the guards allow.
     void relocate();
     // Flips edges where two faces fold inwards sharper than a right angle: of a bent quad's
@@ -127,6 +142,31 @@ class CollapseMesh {
     // sliver; *volume_change gets the change of the enclosed volume.
     bool fan_allows(std::uint32_t v, const glm::dvec3& p, std::uint32_t skip_a,
                     std::uint32_t skip_b, double* volume_change) const;
+    // A face as a change would leave it: its vertices and their positions, and its box.
+    struct FaceShape {
+        std::uint32_t face = 0;
+        std::uint32_t id[3] = {0, 0, 0};
+        CrossingTriangle t;
+        glm::dvec3 lo, hi;
+    };
+    // Face `face` with vertex v as `becomes` at p (v = kNone: as it is).
+    FaceShape shape(std::uint32_t face, std::uint32_t v = kNone, std::uint32_t becomes = kNone,
+                    const glm::dvec3& p = glm::dvec3(0.0)) const;
+    // The guard against crossings (CollapseSettings::keep_apart): every live face in grid_.
+    void start_guard();
+    void grid_place(std::uint32_t face);
+    // grid_ lists `face` with the corners it has now.
+    bool listed_as_now(std::uint32_t face) const;
+    // Two faces cross, told by the corners they share.
+    static bool shapes_cross(const FaceShape& a, const FaceShape& b);
+    // No two of `faces` (faces of one piece) cross, nor any of them a listed face of that piece
+    // near them but those in `faces` and `skip_a`, `skip_b` (faces a change removes or
+    // replaces). Faces of other pieces may cross them.
+    bool apart(std::span<const FaceShape> faces, std::uint32_t skip_a, std::uint32_t skip_b) const;
+    // Moving v to p as `becomes` (collapsing h, which removes its two faces; kNone: a move)
+    // makes no two faces of the piece cross.
+    bool keeps_apart(std::uint32_t v, std::uint32_t becomes, const glm::dvec3& p,
+                     std::uint32_t h) const;
     // The flip of h's edge to the other diagonal of its quad unfolds (unfold()).
     bool flip_unfolds(std::uint32_t h) const;
     void flip(std::uint32_t h);
@@ -169,6 +209,17 @@ class CollapseMesh {
     bool lazy_ = true;
     bool passes_ = true;
     bool heap_filled_ = false;  // since start(): passes come before the heap
+    bool keep_apart_ = true;
+    bool guarding_ = false;  // grid_ lists the live faces; changes are checked against it
+    bool relaxed_ = false;   // relax_guard() turned the guard off
+    FaceGrid grid_;
+    std::vector<FaceShape> listed_;              // per face: as grid_ lists it
+    std::size_t grid_faces_ = 0;                 // live faces when grid_ was made
+    std::size_t guard_from_ = SIZE_MAX;          // live faces from which on the guard runs
+    mutable std::vector<FaceShape> fan_;         // scratch of keeps_apart()
+    mutable std::vector<std::uint32_t> in_fan_;  // scratch of apart(): faces of the change
+    mutable std::uint32_t fan_stamp_ = 0;
+    mutable bool crossing_ = false;  // is_legal() refused for a crossing
     CancelFlag cancel_ = nullptr;
     std::vector<glm::dvec3> normal_;  // per face, unit (or zero)
     std::vector<Quadric> quadric_;    // per vertex

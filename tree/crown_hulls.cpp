@@ -12,9 +12,31 @@
 namespace sylva {
 namespace {
 
+// The nearest of `centers` to p (the first of equals).
+std::uint32_t nearest_center(const glm::vec3& p, const std::vector<glm::vec3>& centers) {
+    std::uint32_t best = 0;
+    float best_d = std::numeric_limits<float>::max();
+    for (std::uint32_t c = 0; c < centers.size(); ++c) {
+        const glm::vec3 d = p - centers[c];
+        const float d2 = glm::dot(d, d);
+        if (d2 < best_d) {
+            best_d = d2;
+            best = c;
+        }
+    }
+    return best;
+}
+
 // Lloyd's k-means on `points`, seeded by farthest-point sampling from the first point
-// (deterministic): the cluster of each point.
-std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& points, std::size_t k) {
+// (deterministic): the cluster of each point. The centres are found on every n-th point,
+// at most kMeansSample of them (a marching-cubes crown lists its vertices in space order,
+// so the sample covers it evenly); then each point joins its nearest centre.
+std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& all, std::size_t k) {
+    constexpr std::size_t kMeansSample = 2048;
+    std::vector<glm::vec3> sample;
+    const std::size_t stride = (all.size() + kMeansSample - 1) / kMeansSample;
+    for (std::size_t i = 0; i < all.size(); i += stride) sample.push_back(all[i]);
+    const std::vector<glm::vec3>& points = sample;
     std::vector<glm::vec3> centers{points.front()};
     std::vector<float> nearest(points.size(), std::numeric_limits<float>::max());
     while (centers.size() < k) {
@@ -30,16 +52,7 @@ std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& points, std::si
     for (int round = 0; round < 20; ++round) {
         bool changed = false;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            std::uint32_t best = 0;
-            float best_d = std::numeric_limits<float>::max();
-            for (std::uint32_t c = 0; c < centers.size(); ++c) {
-                const glm::vec3 d = points[i] - centers[c];
-                const float d2 = glm::dot(d, d);
-                if (d2 < best_d) {
-                    best_d = d2;
-                    best = c;
-                }
-            }
+            const std::uint32_t best = nearest_center(points[i], centers);
             changed |= cluster[i] != best;
             cluster[i] = best;
         }
@@ -53,7 +66,10 @@ std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& points, std::si
         for (std::size_t c = 0; c < centers.size(); ++c)
             if (count[c] > 0) centers[c] = sum[c] / static_cast<float>(count[c]);
     }
-    return cluster;
+    if (stride == 1) return cluster;
+    std::vector<std::uint32_t> of_all(all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) of_all[i] = nearest_center(all[i], centers);
+    return of_all;
 }
 
 }  // namespace
@@ -72,6 +88,7 @@ Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
         std::vector<glm::vec3> members;
         for (std::size_t i = 0; i < points.size(); ++i)
             if (cluster[i] == c) members.push_back(points[i]);
+        if (members.empty()) continue;  // a centre no point is nearest to
         hull_meshes.push_back(extreme_point_hull(members));
         if (hull_meshes.back().triangles.empty()) return crown;  // flat: keep the blobs
     }

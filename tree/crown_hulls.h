@@ -14,15 +14,16 @@
 
 namespace sylva {
 
-// Below this many trunk + crown triangles a game crown is drawn as hulls by default
-// (TreeBudget::crown_shape); above it the blobs' own surface has the triangles it needs.
+// The trunk + crown triangles the hull count assumes where the budget keeps every triangle
+// (a crown drawn as hulls without a reduction).
 inline constexpr std::size_t kCrownHullBudget = 400;
 
-// A game crown's budget buys about one hull per this many trunk + crown triangles: 8 hulls
-// at 200 (fewer hulls fill the crown's hollows, as under a drooping or umbrella crown; more
-// leave each too few triangles after the reduction). Measured with sylva-bench-lowpoly;
-// reduce_tree (tree/lowpoly_tree.h) also tries half as many again.
-inline constexpr std::size_t kTrianglesPerHull = 25;
+// A game crown's budget buys about one hull per this many trunk + crown triangles unless the
+// template says (crown_lump_triangles): 11 lumps at 800, each with enough triangles to read
+// as a faceted volume. Fewer hulls fill the crown's hollows, as under a drooping crown, so
+// curtains and tiers (willow, spruce) ask for more. reduce_tree (tree/lowpoly_tree.h) also
+// tries half as many again at small budgets.
+inline constexpr std::size_t kTrianglesPerHull = 70;
 
 // The crown's vertices split into `hulls` clusters (k-means, seeded by farthest points, so
 // deterministic) and the convex hull of each (core/convex_hull.h's extreme_point_hull: at

@@ -20,6 +20,12 @@
 namespace sylva {
 namespace {
 
+// The trunk + crown triangles of `budget`: its total, or the parts' sum.
+std::size_t solid_budget(const TreeBudget& budget) {
+    return budget.trunk || budget.crown ? budget.trunk.value_or(0) + budget.crown.value_or(0)
+                                        : budget.total;
+}
+
 void append_note(std::string& notes, const std::string& part, const std::string& note) {
     if (note.empty()) return;
     if (!notes.empty()) notes += "; ";
@@ -51,6 +57,7 @@ ReducedTree reduce_parts(const Mesh& trunk, const Mesh& crown, std::size_t trunk
     out.within_budget = t.within_budget && c.within_budget;
     out.backoffs = t.backoffs + c.backoffs;
     out.handles_cut = t.handles_cut + c.handles_cut;
+    out.crossing_pairs = t.crossing_pairs + c.crossing_pairs;
     append_note(out.note, "trunk", t.note);
     append_note(out.note, "crown", c.note);
     return out;
@@ -83,6 +90,7 @@ ReducedTree reduce_solids(const Mesh& trunk, const Mesh& crown, const TreeBudget
         out.within_budget = r.within_budget;
         out.backoffs = r.backoffs;
         out.handles_cut = r.handles_cut;
+        out.crossing_pairs = r.crossing_pairs;
         out.note = r.note;
     }
     out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
@@ -133,6 +141,10 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
         budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
     if (hull_count == 0 || (automatic && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
+    // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
+    // no closer: they alone.
+    if (solid_budget(budget) >= kCrownHullBudget)
+        return reduce_solids(trunk, crown_hulls(hull_source, hull_count), budget, settings);
     // Half as many hulls again and the source's samples are made on one core while the
     // other makes the hulls and starts their reduction.
     Mesh hulls, more_hulls;
@@ -153,7 +165,7 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     alone.progress = nullptr;
     alone.max_triangles = out.crown.triangles.size();
     DecimateResult more = decimate(more_hulls, alone);
-    if (!more.within_budget) return out;
+    if (!more.within_budget || more.crossing_pairs > 0) return out;
     float more_far = 0.0f, out_far = 0.0f;  // measured on a core each
     tbb::parallel_invoke([&] { more_far = (*from_source)(more.parts[0]); },
                          [&] { out_far = (*from_source)(out.crown); });
@@ -167,6 +179,7 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
 // The budget with its crown shape decided: its own, else the tree's (its template's).
 TreeBudget shaped_for(TreeBudget budget, const Tree& tree) {
     budget.crown_shape = budget.crown_shape.value_or(tree.crown_shape);
+    budget.lump_triangles = budget.lump_triangles.value_or(tree.crown_lump_triangles);
     return budget;
 }
 
@@ -237,14 +250,13 @@ std::size_t leaf_budget(const TreeBudget& budget) {
 }
 
 std::size_t crown_hull_count(const TreeBudget& budget) {
-    const std::size_t total = budget.trunk || budget.crown
-                                  ? budget.trunk.value_or(0) + budget.crown.value_or(0)
-                                  : budget.total;
+    const std::size_t total = solid_budget(budget);
     const CrownShape shape = budget.crown_shape.value_or(CrownShape::Automatic);
-    const bool hulls = shape == CrownShape::Automatic ? total > 0 && total < kCrownHullBudget
-                                                      : shape == CrownShape::Hulls;
+    const bool hulls = shape == CrownShape::Automatic ? total > 0 : shape == CrownShape::Hulls;
     if (!hulls) return 0;
-    return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / kTrianglesPerHull);
+    const std::size_t per =
+        std::max<std::size_t>(1, budget.lump_triangles.value_or(kTrianglesPerHull));
+    return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / per);
 }
 
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
@@ -272,6 +284,7 @@ std::vector<TreeBudget> lod_budgets(const TreeBudget& finest, std::size_t levels
         b.total = std::max<std::size_t>(finest.total >> i, 4);
         b.leaves = i < 64 ? leaves >> i : 0;  // SIZE_MAX (every leaf) halves like a number
         b.crown_shape = finest.crown_shape;
+        b.lump_triangles = finest.lump_triangles;
         budgets.push_back(b);
     }
     return budgets;

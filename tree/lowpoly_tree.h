@@ -40,13 +40,17 @@ struct TreeBudget {
     // Whether the crown is reduced as it is or as the hulls of its pieces (CrownShape,
     // core/tree_params.h); unset: the tree's own (Tree::crown_shape, its template's).
     std::optional<CrownShape> crown_shape = std::nullopt;
+    // Triangles of the budget per hull when the crown is drawn as hulls; unset: the tree's
+    // own (Tree::crown_lump_triangles), else kTrianglesPerHull.
+    std::optional<std::size_t> lump_triangles = std::nullopt;
 };
 
 // How many hulls `budget` may draw the crown as (tree/crown_hulls.h): 0 for blobs; with
 // CrownShape::Hulls, or Automatic (or unset) and a trunk + crown budget (total, or the parts' sum)
-// above 0 and below kCrownHullBudget, one per kTrianglesPerHull of that budget (8 at 200).
+// above 0, one per lump_triangles (kTrianglesPerHull unset) of that budget.
 // reduce_tree() then takes these or half as many again, whichever keeps closer to the
-// crown, and in the automatic mode only for a crown with handles.
+// crown, and in the automatic mode only for a crown with handles: a crown of blobs that
+// touch in rings reduces to spikes and folds, convex hulls to clean facets.
 std::size_t crown_hull_count(const TreeBudget& budget);
 
 // The leaf triangles `budget` allows; SIZE_MAX for every leaf.
@@ -58,9 +62,10 @@ struct ReducedTree {
     Mesh leaves;                // the tree's leaves thinned to the leaf budget (open)
     std::size_t triangles = 0;  // trunk + crown
     bool within_budget = true;
-    int backoffs = 0;     // see DecimateResult
-    int handles_cut = 0;  // see DecimateSettings::cut_handles
-    std::string note;     // empty, or why the budget was missed / what was backed off
+    int backoffs = 0;                // see DecimateResult
+    int handles_cut = 0;             // see DecimateSettings::cut_handles
+    std::size_t crossing_pairs = 0;  // see DecimateResult::crossing_pairs
+    std::string note;                // empty, or why the budget was missed / what was backed off
 };
 
 // Trunk + crown decimated together (or per part) and the leaves thinned, as `budget` says.

@@ -524,6 +524,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     growth.progress = options.growth_progress;
     out.skeleton = grow(tree, growth, &mature);
     out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
+    out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     p.trunk_resolution = trunk_resolution_for_budget(p, options.budget);

@@ -32,6 +32,8 @@ struct Tree {
     std::size_t hidden_segments = 0;
     // The template's crown_shape: how a game mesh draws the crown unless its budget says.
     CrownShape crown_shape = CrownShape::Automatic;
+    // The template's crown_lump_triangles: triangles of the budget per hull.
+    std::size_t crown_lump_triangles = 70;
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
     // the last three are made beside each other, each with its own time (stages_wall_ms)
     std::vector<StageTime> times;

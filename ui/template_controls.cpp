@@ -431,15 +431,18 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         for (std::string_view key : {"leaf_size", "leaf_shape"})
             mark(key, "leaf_density is 0: the crown carries no leaves");
     if (p.crown_mesh == 0)
-        for (std::string_view key :
-             {"crown_resolution", "crown_blend", "crown_fusion", "crown_shape"})
+        for (std::string_view key : {"crown_resolution", "crown_blend", "crown_fusion",
+                                     "crown_shape", "crown_lump_triangles"})
             mark(key, "crown_mesh is off: the crown is not meshed (its leaves stay)");
     if (p.triangle_budget == 0)
         mark("crown_shape", "triangle_budget is 0: the game mesh keeps the crown as meshed");
+    if (p.triangle_budget == 0 || static_cast<CrownShape>(p.crown_shape) == CrownShape::Blobs)
+        mark("crown_lump_triangles", "the game mesh draws the crown as blobs, not as lumps");
     if (p.sphere_diameter <= 0.0)
         for (std::string_view key :
              {"crown_resolution", "crown_blend", "crown_fusion", "crown_offset", "leaf_density",
-              "leaf_size", "leaf_shape", "crown_mesh", "crown_merge", "crown_shape"})
+              "leaf_size", "leaf_shape", "crown_mesh", "crown_merge", "crown_shape",
+              "crown_lump_triangles"})
             mark(key, "sphere_diameter is 0: the tree has no crown");
     return inert;
 }

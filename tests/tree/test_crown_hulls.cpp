@@ -78,12 +78,12 @@ TEST(CrownHulls, ZeroHullsOrAFlatCrownKeepsTheCrown) {
     EXPECT_EQ(crown_hulls(flat, 3).triangles, flat.triangles);
 }
 
-TEST(CrownHulls, HullsAreTheDefaultOnlyAtLowBudgetsAndAnOption) {
+TEST(CrownHulls, HullsAreTheDefaultOfGameMeshesAndAnOption) {
     TreeBudget b;
     b.total = 200;
     EXPECT_EQ(crown_hull_count(b), 200u / kTrianglesPerHull);
-    b.total = kCrownHullBudget;
-    EXPECT_EQ(crown_hull_count(b), 0u);
+    b.total = 3000;
+    EXPECT_EQ(crown_hull_count(b), 3000u / kTrianglesPerHull);
     b.crown_shape = CrownShape::Hulls;
     EXPECT_GT(crown_hull_count(b), 0u);
     b.total = 100;
@@ -107,6 +107,7 @@ TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
         options.budget = budget.total;
         const Tree tree = generate_tree(load_template(name), options);
         ASSERT_FALSE(tree.crown.triangles.empty());
+        budget.lump_triangles = tree.crown_lump_triangles;  // the template's lumps
         const ReducedTree reduced = reduce_tree(tree, budget);
         expect_closed_outward(reduced.trunk, "trunk");
         expect_closed_outward(reduced.crown, "crown");

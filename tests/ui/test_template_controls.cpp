@@ -189,8 +189,8 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
         "trunk_resolution", "crown_resolution", "sphere_diameter", "crown_offset",
         "crown_fusion",     "joint_blend",      "crown_blend",     "crown_mesh",
         "crown_merge",      "drop_hidden",      "leaf_density",    "leaf_size",
-        "leaf_shape",       "triangle_budget",  "crown_shape",     "obstacle",
-        "color_variation"};
+        "leaf_shape",       "triangle_budget",  "crown_shape",     "crown_lump_triangles",
+        "obstacle",         "color_variation"};
     for (const TreeTemplate* t : builtin_templates()) {
         const auto inert = inert_params(*t);
         const Skeleton base = grow(*t);
