@@ -1,4 +1,4 @@
-// Parallel rewriting of an L-system's word (SPEC section 1): first matching rule in written
+// Parallel rewriting of an L-system's word (docs/grammar.md): first matching rule in written
 // order, arity matching, ABOP contexts, seeded stochastic choice, and a cap on word size.
 #pragma once
 

@@ -1,4 +1,4 @@
-// A parsed L-system (SPEC section 1): axiom, rules with optional contexts, conditions and
+// A parsed L-system (docs/grammar.md): axiom, rules with optional contexts, conditions and
 // weights, and the symbols context matching skips.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Growth method "lsystem": the template's grammar derived `generations` steps (SPEC section
-// 1), the word read by the turtle (section 2). Registered in tree/growth.cpp.
+// Growth method "lsystem": the template's grammar derived `generations` steps, the word read
+// by the turtle (docs/grammar.md). Registered in tree/growth.cpp.
 #pragma once
 
 #include <functional>
@@ -13,7 +13,7 @@ namespace sylva {
 
 extern const GrowthMethod lsystem_growth;
 
-// Every parameter of SPEC section 7, by its key: the constants the grammar's expressions see.
+// Every parameter of docs/parameters.md, by its key: the constants the grammar's expressions see.
 Constants param_constants(const TreeParams& params);
 
 // The turtle as the template's parameters and modes set it.

@@ -1,4 +1,4 @@
-// Reads the grammar syntax of SPEC section 1 (ABOP/cpfg style) and seed 001's
+// Reads the grammar syntax of docs/grammar.md (ABOP/cpfg style) and Heuer's (2022)
 // "#axiom / #rules" format into an LSystem.
 #pragma once
 

@@ -1,7 +1,7 @@
-// Turtle interpretation (SPEC section 2): walks a derived word and records the skeleton.
+// Turtle interpretation (docs/grammar.md): walks a derived word and records the skeleton.
 //
 // ABOP mode: frame H (heading), L (left), U (up), U = H x L, starting H=(0,1,0),
-// L=(-1,0,0), U=(0,0,1); Y is up. LPTG mode (seed 001, chapter 5.2): an elevation e and an
+// L=(-1,0,0), U=(0,0,1); Y is up. LPTG mode (Heuer 2022, 5.2): an elevation e and an
 // azimuth a; F moves along (cos e cos a, sin e, cos e sin a).
 #pragma once
 
@@ -35,7 +35,7 @@ struct TurtleSettings {
     // modules.
     std::function<void(float)> progress = nullptr;
 
-    // Variation (issue 14, seed 004), from noise seeded by `seed`; every amount 0 draws the
+    // Variation (after Limbach 2004), from noise seeded by `seed`; every amount 0 draws the
     // word exactly as without them. A branch is the trunk or what a '[' starts; each has its
     // own noise, sampled along its length s (meters from where it starts).
     std::uint64_t seed = 1;

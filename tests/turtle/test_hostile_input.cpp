@@ -1,4 +1,4 @@
-// Hostile grammars (issue 16): every one gets a clear error naming its line, or a defined
+// Hostile grammars: every one gets a clear error naming its line, or a defined
 // result; none reaches undefined behaviour.
 #include <gtest/gtest.h>
 
@@ -60,8 +60,8 @@ TEST(HostileGrammar, ColourIndicesOutOfRangeAreClamped) {
     }
 }
 
-// Issue 16, item 5: a 20,000-parameter module ended in bad_alloc; now a GrammarError at the
-// parameter past the cap, on its line.
+// A 20,000-parameter module is a GrammarError at the parameter past the cap, on its line,
+// not a bad_alloc.
 TEST(HostileGrammar, AModuleWithTooManyParametersIsAGrammarErrorAtItsColumn) {
     std::string module = "A(1";
     for (int i = 1; i < 20'000; ++i) module += ",1";
@@ -77,7 +77,7 @@ TEST(HostileGrammar, AModuleWithTooManyParametersIsAGrammarErrorAtItsColumn) {
     EXPECT_NO_THROW(parse_lsystem("axiom: A(1,2,3,4,5,6)\n"));
 }
 
-// Issue 16, item 5: F -> FF grows 2^n; its size is known exactly before deriving, and a word
+// F -> FF grows 2^n; its size is known exactly before deriving, and a word
 // past the cap is refused before the first step (no 4M-module word is built first).
 TEST(HostileGrammar, WordGrowthIsKnownBeforeDerivingAndRefusedEarly) {
     const LSystem ff = parse_lsystem("axiom: !(0.1)F\nF -> FF\n");

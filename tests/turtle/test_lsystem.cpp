@@ -1,4 +1,4 @@
-// L-system parsing and derivation: known words from ABOP and seed 001, errors that name
+// L-system parsing and derivation: known words from ABOP and Heuer 2022, errors that name
 // their place, and the size cap.
 #include <gtest/gtest.h>
 

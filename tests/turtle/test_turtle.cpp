@@ -1,4 +1,4 @@
-// Turtle interpretation: endpoints follow SPEC section 2's frame and formulas.
+// Turtle interpretation: endpoints follow the frame and formulas of docs/grammar.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Turtle variation (issue 14): bend, jitter, width and tropism variation. Zero amounts draw
+// Turtle variation: bend, jitter, width and tropism variation. Zero amounts draw
 // the word exactly as before whatever the seed; otherwise the same seed gives the same
 // skeleton, bending is a smooth curve of the same length, jitter stays within its range,
 // and widths stay continuous along a branch.
