@@ -1,4 +1,4 @@
-// Colour variation (issue 14, seed 004: "die aktuelle Farbe ... variieren"): a template's
+// Colour variation (Limbach 2004: "die aktuelle Farbe ... variieren"): a template's
 // part colours shifted per seed, so trees of one template planted together do not all wear
 // the same green. Crown and leaves share one shift (they stay matched); the trunk has its own.
 #pragma once

@@ -1,8 +1,8 @@
 // Union-find over 0..n-1 with path halving: which vertices, balls or triangles belong
 // together (mesh pieces, crown pieces, handle cutting). A union links the larger root under
 // the smaller: marching cubes numbers a piece's vertices close together, so its trees stay
-// shallow (the ternary trunk's pieces found 27% faster than linking the first under the
-// second). Callers use the sets only, never which element is the root.
+// shallow (faster than linking the first under the second). Callers use the sets only,
+// never which element is the root.
 #pragma once
 
 #include <cstdint>

@@ -46,7 +46,7 @@ class InputError : public std::runtime_error {
     std::string message_;
 };
 
-// An InputError in the grammar language (SPEC section 1).
+// An InputError in the grammar language (docs/grammar.md).
 class GrammarError : public InputError {
   public:
     explicit GrammarError(const std::string& reason, int line = 0, int column = 0,

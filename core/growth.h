@@ -1,5 +1,5 @@
-// The seam between a template and its skeleton: a growth method (SPEC section 3: L-system +
-// turtle, space colonization, ...) turns a template into a Skeleton, which every later stage
+// The seam between a template and its skeleton: a growth method (L-system + turtle, space
+// colonization, ...) turns a template into a Skeleton, which every later stage
 // (fields, meshing, leaves, low poly, export) shares. Each method lives in its own folder
 // and is registered with one line in tree/growth.cpp.
 #pragma once

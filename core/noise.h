@@ -1,8 +1,8 @@
-// Seeded, deterministic coherent noise for variation (seed 004: Perlin noise and L-systems):
-// Ken Perlin's improved gradient noise (2002) in 1, 2 and 3 dimensions, the value noise of
-// seed 004 with linear, cosine and cubic interpolation, and fractal sums of octaves (fbm)
-// with frequency, persistence and lacunarity. Nearby inputs give nearby values, so the noise
-// bends a branch smoothly along its length or makes neighbouring trees alike.
+// Seeded, deterministic coherent noise for variation (Limbach 2004, Perlin noise and
+// L-systems): Ken Perlin's improved gradient noise (2002) in 1, 2 and 3 dimensions, the value
+// noise of Limbach 2004 with linear, cosine and cubic interpolation, and fractal sums of
+// octaves (fbm) with frequency, persistence and lacunarity. Nearby inputs give nearby values,
+// so the noise bends a branch smoothly along its length or makes neighbouring trees alike.
 //
 // Every generator is seeded through core/random.h (splitmix64), so the same seed gives the
 // same values on every machine. Objects are immutable after construction: one generator may
@@ -80,7 +80,7 @@ class ValueNoise {
 };
 
 // Fractal sums, in [-1, 1]. Each octave samples a shifted domain so octaves are not aligned at
-// the origin (seed 004: "each octave needs its own noise function"). Settings are clamped to
+// the origin (Limbach 2004: "each octave needs its own noise function"). Settings are clamped to
 // the ranges of FbmSettings (validate() them where they come from user input).
 double fbm(const GradientNoise& noise, double x, const FbmSettings& s);
 double fbm(const GradientNoise& noise, double x, double y, const FbmSettings& s);

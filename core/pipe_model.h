@@ -1,4 +1,4 @@
-// The pipe model of branch widths (seed 000, 3.4, after Murray): a branch's radius r
+// The pipe model of branch widths (Liebemann 2017, 3.4, after Murray 1926): a branch's radius r
 // satisfies r^g = sum of its children's r^g; tips get r0. Computed on a finished skeleton,
 // so both the turtle and space colonization can use it.
 #pragma once

@@ -1,4 +1,4 @@
-// The turtle's output: a tree graph (seed 000, 2.4.1) of tapered segments plus leaf polygons.
+// The turtle's output: a tree graph (Liebemann 2017, 2.4.1) of tapered segments plus leaf polygons.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Tree age (issue 14, seed 001's outlook: one "tree age" parameter driving many): a mature
+// Tree age (Heuer's 2022 outlook: one "tree age" parameter driving many): a mature
 // skeleton grown back to a younger one, continuously. Every growth method's skeleton goes
 // through here (tree/growth.cpp), so L-system and colonization templates age alike.
 //

@@ -140,7 +140,7 @@ const std::vector<Field>& fields() {
               "game mesh crown as hulls: triangles of the budget per lump (more: fewer, larger "
               "lumps)",
               10, 1000, &TreeParams::crown_lump_triangles),
-        // Space colonization (seed 000, chapter 3).
+        // Space colonization (Liebemann 2017, chapter 3).
         whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
               &TreeParams::attraction_points),
         real("influence_radius", "colonization: d_i, a point attracts nodes this close, meters",
@@ -234,7 +234,7 @@ const std::vector<Field>& fields() {
         real("angle_smoothing",
              "colonization: successors drawn towards their mean direction (0 = not, 1 = fully)", 0,
              1, &TreeParams::angle_smoothing),
-        // Variation and age (issue 14).
+        // Variation and age.
         real("age",
              "tree age: 0 a seedling, 1 the mature tree; grows continuously along the branches", 0,
              1, &TreeParams::age),

@@ -1,4 +1,5 @@
-// The parameters of SPEC section 7 (seed 001, table 4.3), with their ranges and defaults.
+// The parameters of docs/parameters.md (after Heuer 2022, table 4.3), with their ranges and
+// defaults.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +29,7 @@ struct TreeParams {
     double pipe_exponent = 2.5;     // pipe width model: Murray's exponent g
     double joint_blend = 0.0;       // trunk joints: smooth-union radius, meters (0 = hard union)
     int crown_blend = 0;            // CrownBlend: how crown spheres fuse
-    int crown_mesh = 1;             // 1: mesh the crown; 0: leaves only (seed 001, B.6)
+    int crown_mesh = 1;             // 1: mesh the crown; 0: leaves only (Heuer 2022, B.6)
     int crown_merge = 1;            // 1: low budgets merge crown blobs (tree/crown_merge.h)
     int drop_hidden = 0;            // 1: game meshes leave out what the crown hides (pipeline.h)
     double leaf_density = 60.0;     // leaves per cubic meter of crown
@@ -37,7 +38,7 @@ struct TreeParams {
     int triangle_budget = 800;      // export: trunk + crown reduced to this (0 = no reduction)
     int crown_shape = 0;            // CrownShape: how the game mesh draws the crown
     int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
-    // Space colonization (growth = "colonization", seed 000 chapter 3); the L-system
+    // Space colonization (growth = "colonization", Liebemann 2017, chapter 3); the L-system
     // ignores these.
     int attraction_points = 2000;    // N
     double influence_radius = 1.5;   // d_i, meters
@@ -74,7 +75,7 @@ struct TreeParams {
     int weighted_growth = 0;       // 1: step 2D on the trunk down to D at max_depth
     double curve_reduction = 1.0;  // eq. 3.6 dot-product threshold (1 = keep every node)
     double angle_smoothing = 0.0;  // successors drawn together (0 = not at all, 1 = fully)
-    // Variation and age (issue 14; core/noise.h, core/tree_age.h). The defaults change nothing.
+    // Variation and age (core/noise.h, core/tree_age.h). The defaults change nothing.
     double age = 1.0;                // 0: a seedling, 1: the mature tree the template describes
     double bend = 0.0;               // degrees per meter of curvature noise along branches
     double bend_frequency = 0.5;     // noise cycles per meter along a branch

@@ -16,21 +16,22 @@ struct PartColors {
     glm::vec3 leaves{0.30f, 0.55f, 0.20f};
 };
 
-// The turtle's frame (SPEC section 2): ABOP's H, L, U, or seed 001's elevation and azimuth.
+// The turtle's frame (docs/grammar.md): ABOP's H, L, U, or Heuer's (2022) elevation and
+// azimuth.
 enum class TurtleMode { Abop, Lptg };
 
 enum class WidthModel {
     Explicit,  // widths change only through '!'
-    Taper,     // seed 001, 5.3-5.5: every F on the trunk level multiplies the width by
+    Taper,     // Heuer 2022, 5.3-5.5: every F on the trunk level multiplies the width by
                // trunk_taper, deeper levels by branch_taper; '!' still sets the width
-    Pipe,      // seed 000's pipe model on the finished skeleton (core/pipe_model.h)
+    Pipe,      // Liebemann's (2017) pipe model on the finished skeleton (core/pipe_model.h)
 };
 
 struct TreeTemplate {
     std::string name;
     std::string description;
     std::string growth = "lsystem";  // the growth method (tree/growth.h) that makes the skeleton
-    std::string grammar;             // SPEC section 1 syntax
+    std::string grammar;             // the syntax of docs/grammar.md
     TurtleMode mode = TurtleMode::Abop;
     WidthModel width_model = WidthModel::Taper;
     TreeParams params;
