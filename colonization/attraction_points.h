@@ -1,4 +1,4 @@
-// Attraction points (seed 000, 3.3 and 5.3 "random distribution of the points"): N points
+// Attraction points (Liebemann 2017, 3.3 and 5.3 "random distribution of the points"): N points
 // placed in an envelope, either independently uniform or along a low-discrepancy sequence
 // that fills the space more evenly (fewer clumps, fewer empty pockets). Seeded: the same
 // seed gives the same points on every machine.

@@ -1,4 +1,4 @@
-// From the colonization's node graph to a skeleton (seed 000, 3.4 steps 3-4 and 3.5):
+// From the colonization's node graph to a skeleton (Liebemann 2017, 3.4 steps 3-4 and 3.5):
 // successors drawn together, straight runs reduced (eq. 3.6), and Murray radii (eq. 3.4).
 #pragma once
 

@@ -1,5 +1,5 @@
 // A uniform grid of indexed points for radius queries: the spatial index that replaces
-// seed 000's brute-force "nearest node for every attraction point" (6.1.1). Positions
+// Liebemann's (2017) brute-force "nearest node for every attraction point" (6.1.1). Positions
 // outside the grid's box are clamped into its border cells, which keeps every query exact
 // (clamping never moves a point out of the cells a query ball covers), only slower there.
 #pragma once

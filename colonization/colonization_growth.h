@@ -1,4 +1,4 @@
-// Growth method "colonization": seed 000's space colonization (chapter 3) with the crown
+// Growth method "colonization": space colonization (Liebemann 2017, chapter 3) with the crown
 // drawn as an envelope of attraction points. Maps a template's parameters to the
 // algorithm's plain settings. Registered in tree/growth.cpp.
 #pragma once

@@ -1,4 +1,4 @@
-// The space a crown may fill (seed 000, 3.3: "the region of influence"): a simple solid in
+// The space a crown may fill (Liebemann 2017, 3.3: "the region of influence"): a simple solid in
 // which attraction points are placed. Sizes are the solid's full extents, so a template's
 // envelope_size reads as the crown's width, height and depth in metres.
 #pragma once

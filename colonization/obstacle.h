@@ -1,4 +1,4 @@
-// An obstacle (seed 000, 3.3: "obstacles ... which limit the space"): a solid the crown
+// An obstacle (Liebemann 2017, 3.3: "obstacles ... which limit the space"): a solid the crown
 // grows around. No attraction point is placed in it and no node grows into it, so
 // branches stop at a wall or part around a boulder.
 #pragma once

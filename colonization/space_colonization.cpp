@@ -179,7 +179,7 @@ class Colonizer {
         return found;
     }
 
-    // One iteration of seed 000, 3.3. Returns whether any node grew.
+    // One iteration of Liebemann 2017, 3.3. Returns whether any node grew.
     bool iterate() {
         // Step 1: S(v) as the sum of unit directions to v's points (eq. 3.3).
         const size_t existing = nodes_.size();

@@ -1,4 +1,4 @@
-// The space colonization algorithm (Runions, Lane, Prusinkiewicz 2007; seed 000, 3.3-3.5):
+// The space colonization algorithm (Runions, Lane, Prusinkiewicz 2007; Liebemann 2017, 3.3-3.5):
 // a tree graph grows from a root towards attraction points, which die once a node comes
 // within the kill distance. Works on plain settings and points, knows no template.
 #pragma once
@@ -62,7 +62,7 @@ struct ColonizationGraph {
     std::vector<glm::vec3> remaining;     // attraction points still alive at the end
     int iterations = 0;
     // Growth refused because the new node would fall back onto the tree (within D/2 of
-    // another node) or the pulls cancelled out: seed 000 5.3's back-and-forth growth.
+    // another node) or the pulls cancelled out: the back-and-forth growth of Liebemann 2017, 5.3.
     int oscillations = 0;
     ColonizationStop stop = ColonizationStop::NoPointsLeft;
     // What max_no_grow had to act on: passes in which a node that points attract grew

@@ -1,4 +1,4 @@
-// What the studio draws beside a space colonization tree (seed 000, chapter 3): the envelope
+// What the studio draws beside a space colonization tree (Liebemann 2017, chapter 3): the envelope
 // as a wire cage, the attraction points the growth started from, and the skeleton as it
 // stood after a given growth step. Headless: plain points in, line pairs out, so tests check
 // them without a window.

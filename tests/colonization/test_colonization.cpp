@@ -1,5 +1,5 @@
-// Space colonization (seed 000, chapter 3): the acceptance properties on the node
-// graph, the envelopes and points, and the skeleton built from it.
+// Space colonization (Liebemann 2017, chapter 3): properties of the node graph, the
+// envelopes and points, and the skeleton built from it.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -49,7 +49,7 @@ float nearest_node(const ColonizationGraph& g, const glm::vec3& p) {
     return best;
 }
 
-// The ring of seed 000, Fig. 3.2: N random points in an annulus of outer radius r (in the
+// The ring of Liebemann 2017, Fig. 3.2: N random points in an annulus of outer radius r (in the
 // plane z = 0), the root on its bottom edge.
 std::vector<glm::vec3> ring(int count, float r, std::uint64_t seed) {
     Random random(seed);

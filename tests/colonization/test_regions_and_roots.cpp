@@ -1,4 +1,4 @@
-// The optional parts: an envelope given as any solid (an SDF's inside), a tilted
+// Regions and roots: an envelope given as any solid (an SDF's inside), a tilted
 // envelope, an obstacle no point lies in and no node grows into, and several roots each
 // growing one tree of a forest.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Tropism variation on space colonization (issue 14): a seeded 3D noise field added to every
+// Tropism variation on space colonization: a seeded 3D noise field added to every
 // growth direction. Off by default; when on, bounded, coherent in space, deterministic, and
 // it changes the tree.
 #include <gtest/gtest.h>
