@@ -1,6 +1,6 @@
-// Orchard rows for the "orchard" polygons of a ground or layout plan (issue 15's link from
-// layouts to forests): trees on a regular grid whose rows run along the polygon's longest
-// edge, `row_spacing` between rows and `tree_spacing` between trees in a row, clipped to the
+// Orchard rows for the "orchard" polygons of a ground or layout plan (what links layouts to
+// forests): trees on a regular grid whose rows run along the polygon's longest edge,
+// `row_spacing` between rows and `tree_spacing` between trees in a row, clipped to the
 // polygon with a margin.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The angle graph of seed 002 (section 3.2.3) after Merrell 2023: vertices without
+// The angle graph of Schröder 2024 (section 3.2.3) after Merrell 2023: vertices without
 // positions, edges that know only their tangent angle and the colours on their left and
 // right. A partial graph also has half-edges: edges cut open by the split operation (3.2.5),
 // kept at the vertex they leave. Each vertex holds its darts (edges and half-edges leaving

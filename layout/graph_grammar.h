@@ -1,4 +1,4 @@
-// Deriving a graph grammar from one example (seed 002, section 3.3, after Merrell 2023) and
+// Deriving a graph grammar from one example (Schröder 2024, section 3.3, after Merrell 2023) and
 // growing new angle graphs with it (3.4.1).
 //
 // Derivation: the split operation cuts every edge of the example's angle graph; the

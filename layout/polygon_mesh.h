@@ -1,4 +1,4 @@
-// The 2D polygon structure the layout module reads and writes (seed 002, section 3.2.1 and
+// The 2D polygon structure the layout module reads and writes (Schröder 2024, sections 3.2.1 and
 // 4.4.1): vertex positions, polygons as vertex index lists, one colour per polygon. Two
 // text forms are read: the plain `.mesh` form
 //

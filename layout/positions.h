@@ -1,4 +1,4 @@
-// Vertex positions for an angle graph (seed 002, section 3.4.2): every edge e from v0 to v1
+// Vertex positions for an angle graph (Schröder 2024, section 3.4.2): every edge e from v0 to v1
 // with direction u and unknown length s gives v0 + s u = v1. Around each closed face the
 // steps sum to zero, so the lengths lie in the null space of a (2 faces x edges) matrix,
 // found by Gauss-Jordan elimination (reduced row echelon form). Random target lengths near

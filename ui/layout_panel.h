@@ -1,4 +1,4 @@
-// The studio's layout panel (issue 15, layout/): pick a shipped 2D example, see it, the
+// The studio's layout panel (layout/): pick a shipped 2D example, see it, the
 // grammar derived from it (starter rules drawn, rules listed with their boundary strings)
 // and a grid of generated variations; seed and count are editable. Drawn with ImGui draw
 // lists only. Deriving takes well under a second for the shipped examples (see
