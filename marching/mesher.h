@@ -56,7 +56,7 @@ struct VdbSettings {
 struct MeshSettings {
     // Which mesher mesh() runs; the functions of each mesher ignore it.
     Mesher mesher = Mesher::Sparse;
-    // Cells along the longest side of the box (seed 001: P_Tres / P_Cres, 10-200).
+    // Cells along the longest side of the box (Heuer 2022: P_Tres / P_Cres, 10-200).
     int resolution = 64;
     // Extra empty cells added on every side so the surface is never clipped by the box.
     int padding_cells = 2;

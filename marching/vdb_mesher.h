@@ -19,7 +19,7 @@ namespace sylva {
 // that is exact only below some margin and constant above it (sdf/cone_field.h) meshes
 // correctly when the margin exceeds the band; sub-blocks are skipped when it exceeds 5.6
 // cells, whole blocks when it exceeds 9.1 cells (default band). On a cone cloud a margin of
-// 6-7 cells was fastest (7 also lets sparse_marching_cubes() skip 8-cell blocks): each far
+// 6-7 cells is fastest (7 also lets sparse_marching_cubes() skip 8-cell blocks): each far
 // block then costs 9 evaluations, but every evaluation near the cones sees fewer cones.
 //
 // As in marching_cubes(), the outermost layer of nodes and non-finite samples count as
@@ -49,8 +49,8 @@ namespace sylva {
 // [0, 1] or settings.vdb.band_voxels below 1; Cancelled when cancelled.
 //
 // Loading: OpenVDB lives in a module of its own (libsylva_vdb.so, marching/vdb_module.cpp),
-// loaded on the first call: linked into every program, its 61,000 relocations cost each
-// process about 37 ms at start, more than a whole game export of a small tree. The module is
+// loaded on the first call: linked into every program, its relocations would cost each
+// process more at start than a whole game export of a small tree takes. The module is
 // looked for in $SYLVA_VDB_MODULE, next to the running program, then where the build put
 // it; throws IoError naming the places tried when none loads.
 Mesh vdb_mesh(const BatchField& field, const Box& box, const MeshSettings& settings);

@@ -21,10 +21,9 @@ struct Aabb {
 
 // The smallest bin of a field's grid, in multiples of its margin (the distance within which
 // it is exact, which inflates every primitive's box). Smaller bins list each primitive in
-// more bins (its box spans 2 (radius + margin)) without culling much more: with half a
-// margin, a tree meshed for 200 triangles (where the cells, and so the margin, are twice as
-// wide as at 800) spent 7 ms building the bush's trunk field instead of 3 (README "Fields
-// for coarse grids").
+// more bins (its box spans 2 (radius + margin)) without culling much more, so on the coarse
+// grids of low budgets (wide cells, so a wide margin) building the field would cost more
+// than the culling saves.
 inline constexpr float kMinBinInMargins = 0.9f;
 
 class BinGrid {

@@ -1,4 +1,4 @@
-// The crown: spheres joined by seed 001's smooth union ("root smooth min" after Inigo
+// The crown: spheres joined by Heuer's (2022) smooth union ("root smooth min" after Inigo
 // Quilez), evaluated fast through a bin grid like the trunk's cones.
 //
 // root_smooth_min(a, b, k) = (a + b - sqrt((a - b)^2 + k^2)) / 2 lies below min(a, b) by at
@@ -48,8 +48,8 @@ std::vector<Ball> merge_coincident_balls(std::vector<Ball> balls, float toleranc
 
 // How the spheres fuse.
 enum class SphereBlend {
-    RootSmoothMin,   // seed 001's choice; 1-Lipschitz (see above)
-    PaskoSavchenko,  // seed 001, eq. 2.13: (a + b - sqrt(a^2 + b^2 - 2 alpha a b)) / (1 + alpha)
+    RootSmoothMin,   // Heuer's (2022) choice; 1-Lipschitz (see above)
+    PaskoSavchenko,  // Heuer 2022, eq. 2.13: (a + b - sqrt(a^2 + b^2 - 2 alpha a b)) / (1 + alpha)
 };
 
 // Seed 001's equation 2.13 on signed distances (negative inside): alpha = 1 is the hard
@@ -73,7 +73,7 @@ inline float local_root_smooth_min(float a, float b, float k) {
 
 class SphereField {
   public:
-    // blend = k of root_smooth_min (seed 001: P_Cfus), or alpha of the Pasko-Savchenko
+    // blend = k of root_smooth_min (Heuer 2022: P_Cfus), or alpha of the Pasko-Savchenko
     // union; blend 0 with RootSmoothMin gives the hard union.
     SphereField(std::vector<Ball> balls, float blend, float margin,
                 SphereBlend kind = SphereBlend::RootSmoothMin);
