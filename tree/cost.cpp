@@ -15,8 +15,8 @@
 namespace sylva {
 namespace {
 
-// Measured with `sylva export` and `sylva skeleton` on two cores (README, "Limits"):
-// the default template at resolutions 150-450, and F -> FF at 18-21 steps.
+// Fitted to `sylva export` and `sylva skeleton` on two cores (docs/cli.md, "Limits"): the
+// default template at resolutions 150-450, and F -> FF at 18-21 steps.
 constexpr double kBaseBytes = 3.0e7;
 constexpr double kBytesPerModule = 40.0;      // the word, twice while deriving
 constexpr double kBytesPerSegment = 1300.0;   // skeleton, fields, skeleton.json text
@@ -24,12 +24,12 @@ constexpr double kBytesPerCellSquared = 850;  // per resolution^2: the sparse me
 constexpr double kSecondsPerModule = 2.0e-6;
 constexpr double kSecondsPerSegment = 34.0e-6;
 constexpr double kMeshSecondsPerCellSquared = 6.0e-6;
-// The default template at budget 800: about 1.8 resolution^2 raw triangles, reduced at
-// 1.2 us each at 160k triangles and 2.2 us at 640k (memory-bound; resolution 600: 1.42 s).
+// The default template at budget 800 makes about 1.8 resolution^2 raw triangles. Reducing
+// a triangle costs more on larger meshes (memory-bound), so the rate is a large mesh's.
 constexpr double kReduceSecondsPerCellSquared = 4.0e-6;
 constexpr double kReduceSecondsPerTriangle = 2.2e-6;
-// Cutting h handles adds about 0.26 us * h^2 (ternary tree at generations 6, 7, 8: 126,
-// 645, 1845 handles in 97k, 200k, 318k triangles reduce in 0.12, 0.38, 1.26 s).
+// Cutting h handles adds about 0.26 us * h^2 (fitted on the ternary tree at generations
+// 6-8).
 constexpr double kReduceSecondsPerHandleSquared = 2.6e-7;
 constexpr double kReduceBytesPerTriangle = 400.0;  // corner table, heap, quadrics, copies
 

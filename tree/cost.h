@@ -29,16 +29,15 @@ struct CostLimits {
 
 // Cheap (no derivation, no grid). `budget` is the trunk + crown triangle budget the meshes
 // will be reduced to (0: not reduced), `mesh` false for a skeleton alone. The memory and time
-// model was calibrated on this project's default template (bench figures in README): a
-// rough guide, never below the true word and segment counts. A grammar that does not parse
+// model is fitted to this project's default template: a rough guide, never below the true
+// word and segment counts. A grammar that does not parse
 // costs nothing here; generating it reports the error.
 Cost estimate_cost(const TreeTemplate& tree, std::size_t budget = 0, bool mesh = true);
 
 // The reduction of meshes already made (the slow stage of a game mesh, known only once the
 // meshes are): its time from their triangles and handles (where branches cross; every one
 // is cut, at a cost that grows with the count), 0 when nothing is reduced. Fitted on the
-// ternary tree at generations 6-8 (126-1845 handles, 1-47 s) and plain trees to 450,000
-// triangles.
+// ternary tree at generations 6-8 and plain trees to 450,000 triangles.
 Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t budget);
 
 // "2097152 modules, 2097152 segments, 8.0e+06 cells, about 2.7 GB and 71 s".

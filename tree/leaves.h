@@ -1,4 +1,4 @@
-// Leaves (seed 001, 5.5): walk a grid over the crown's box and, at every (jittered) grid
+// Leaves (Heuer 2022, 5.5): walk a grid over the crown's box and, at every (jittered) grid
 // point inside the crown field, place a small flat leaf with a random orientation and size.
 // Each leaf is its outline fanned into triangles once, one-sided (two triangles for the
 // simplest shape): a back-facing copy would double the triangles, and sharing vertices with

@@ -64,10 +64,9 @@ std::optional<ConeField> trunk_field(std::span<const Segment> segments, float ce
 constexpr float kFieldMarginInCells = 3.0f;
 // A trunk without a joint blend, a hard union (the min is exact however the fold starts), is
 // exact within 2 cells, still more than marching cubes interpolates along a cell's edge: its
-// bins are smaller and list fewer cones (measured side by side: the ternary's trunk meshed
-// 22% faster at 3000 triangles, the bush's 15% at 800; every template's meshes the same
-// bytes). With a joint blend, values near the surface blend with where the fold starts (the
-// baobab's trunk came out different), so it keeps kFieldMarginInCells.
+// bins are smaller and list fewer cones, so it meshes faster into the same bytes. With a
+// joint blend, values near the surface blend with where the fold starts (the mesh would
+// change), so it keeps kFieldMarginInCells.
 constexpr float kHardUnionMarginInCells = 2.0f;
 
 float cell_size(const Box& box, int resolution) {
@@ -183,11 +182,10 @@ struct BridgedCrown {
 // a radius apart) lies at least its radius inside the crown; a twig thinner than half a
 // cell (drawn a cell wide) when its axis lies inside the crown. They are most of a dense
 // crown's twigs, and where twigs cross they make the handles that cost a reduction most of
-// its time (README "Meshed for the budget" has the figures).
+// its time.
 std::vector<std::uint8_t> visible_segments(const Skeleton& skeleton, const SphereField& crown,
                                            float cell) {
-    // Each segment on its own: the thousands of a conifer's on both cores (the fir's 1,937
-    // took 3-4 ms on one).
+    // Each segment on its own, in parallel: a conifer has thousands.
     std::vector<std::uint8_t> shown(skeleton.segments.size());
     tbb::parallel_for(std::size_t{0}, skeleton.segments.size(), [&](std::size_t i) {
         const Segment& s = skeleton.segments[i];
@@ -239,7 +237,7 @@ std::vector<std::uint8_t> trunk_groups(const Skeleton& skeleton,
         total += own[i];
     }
     // (ra + rb) L is a cone side's area over pi; marching cubes makes 5-9 triangles per
-    // square cell of it (14 templates measured), so this is about 8,000 triangles: below,
+    // square cell of it (on the built-in templates), so this is about 8,000 triangles: below,
     // the reduction would not split the trunk (kSplitAtLeast in lowpoly/decimate.cpp).
     constexpr double kGroupAtLeast = 1000.0;  // square cells
     // A joint blend rounds every joint: pieces would lose the fillets where they meet.
@@ -343,11 +341,9 @@ double share_cells(std::size_t budget) {
 
 // The crown's cells for `budget` triangles: share_cells up to 800; above, 40 cells times the
 // fourth root of budget / 800 (56 at 3000 instead of 78). A crown of blobs is smooth, and at
-// such budgets the trunk sets the error: measured at 3000 (sylva-bench-lowpoly --budget 3000
-// --fidelity-only) against the cube root (63 cells), the mean error of the cypress +13%
-// (0.075 -> 0.085%, still the smallest of all), of the spruce +6%, the others' within 4%,
-// and the exports of the crowned conifers, birch and willow 8-16 ms faster (README "Crowns
-// above 800"); the cube root had been within 3% of 78 cells but the cypress's +10%.
+// such budgets the trunk sets the error: the coarser crown costs the mean error little
+// (sylva-bench-lowpoly --budget 3000 --fidelity-only shows it) and the crowned trees export
+// faster.
 double crown_cells(std::size_t budget) {
     if (budget <= kTrunkDetailBudget) return share_cells(budget);
     return share_cells(kTrunkDetailBudget) *
@@ -358,9 +354,9 @@ double crown_cells(std::size_t budget) {
 }  // namespace
 
 int crown_resolution_for_budget(int resolution, std::size_t budget) {
-    // Measured at 800 (sylva-bench-lowpoly --fidelity-only): the mean error within 6% of
-    // 2.4 times (48 cells) on every template (the cypress +6%), and that within 4% of the
-    // template's resolution; the crowned trees export 1-15 ms faster at 800 (README).
+    // At 800 the crown's 40 cells keep the mean error close to that of finer crowns and of
+    // the template's resolution on every template (sylva-bench-lowpoly --fidelity-only), and
+    // the crowned trees export faster.
     return budget == 0 ? resolution : capped(resolution, crown_cells(budget));
 }
 
@@ -368,19 +364,16 @@ int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget) {
     int resolution = params.trunk_resolution;
     if (budget == 0) return resolution;
     // Below 800 triangles the template's resolution draws detail no budget keeps: the cells
-    // grow with the budget's square root (twice as wide at 200). Measured at 200 on every
-    // template against the template's resolution (sylva-bench-lowpoly --budget 200): the
-    // Hausdorff distance at most 15% of the height and at most 0.7 points higher (ternary
-    // 14.5 -> 12.4%), the mean error at most 0.31 points higher (the palm's smooth trunk).
+    // grow with the budget's square root (twice as wide at 200), which costs little fidelity
+    // against the template's resolution (sylva-bench-lowpoly --budget 200 shows it).
     if (budget < kTrunkDetailBudget)
         resolution = capped(resolution, std::sqrt(static_cast<double>(budget) /
                                                   static_cast<double>(kTrunkDetailBudget)) *
                                             resolution);
     const bool hidden =
         params.drop_hidden != 0 && params.crown_mesh != 0 && params.sphere_diameter > 0.0;
-    // Measured at 800 against the template's resolution: the mean error both ways within
-    // 3% on the elm, maple, spruce and willow, and 2-6% smaller on the fir (README "Meshed
-    // for the budget").
+    // With the hidden branches left out, these cells keep the mean error about that of the
+    // template's resolution.
     if (hidden) resolution = capped(resolution, 1.5 * share_cells(budget));  // 60 at 800
     return resolution;
 }

@@ -4,7 +4,7 @@
 //   name = "oak"
 //   description = "..."
 //   growth = "lsystem"       # the growth method (tree/growth.h); lsystem is the default
-//   turtle = "abop"          # abop | lptg (seed 001's elevation/azimuth turtle)
+//   turtle = "abop"          # abop | lptg (Heuer's 2022 elevation/azimuth turtle)
 //   widths = "explicit"      # explicit | taper | pipe
 //   grammar = '''
 //   axiom: A

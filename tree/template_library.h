@@ -20,9 +20,9 @@ const std::vector<const TreeTemplate*>& builtin_templates();
 // that keeps them; empty for an unknown name.
 std::string_view builtin_template_text(std::string_view name);
 
-// `-t` semantics (SPEC section 8): a built-in template's name ("default" is the default
-// tree), else a file: a template file (.toml, template_file.h) or a bare grammar in the
-// syntax of SPEC section 1 whose parameters take their defaults.
+// `-t` semantics (docs/cli.md): a built-in template's name ("default" is the default tree),
+// else a file: a template file (.toml, template_file.h) or a bare grammar in the syntax of
+// docs/grammar.md whose parameters take their defaults.
 // The user names the file, so any path is taken; it must be a regular file within
 // input_size_limit() (core/input_file.h).
 // Throws InputError for an unknown name or bad content, IoError when the file cannot be read.
