@@ -82,7 +82,7 @@ TEST(ConeField, BatchEvaluationEqualsPointWise) {
 }
 
 }  // namespace
-// Issue 16, item 5: F -> [F][F][F][F] draws thousands of copies of one segment; the field
+// F -> [F][F][F][F] draws thousands of copies of one segment; the field
 // keeps one, so a sample visits one cone, not thousands.
 TEST(ConeField, CoincidentCopiesAreMergedIntoOneCone) {
     std::vector<CappedCone> cones(4096, CappedCone{{0, 0, 0}, {0, 1, 0}, 0.05f, 0.04f});

@@ -136,9 +136,9 @@ TEST(SphereField, TheOrderOfTheSpheresDoesNotMatter) {
     EXPECT_GT(blended, 500);  // the points tried include many where order could matter
 }
 
-// Issue 16: a thousand spheres at one place folded the blend a thousand times, swelling the
-// union by about 4 k, past the box the crown is meshed in (an open crown). The fold stays
-// within k/2 of the hard union, as for two spheres.
+// A thousand spheres at one place must not fold the blend a thousand times, which would
+// swell the union by about 4 k, past the box the crown is meshed in (an open crown). The
+// fold stays within k/2 of the hard union, as for two spheres.
 TEST(SphereField, ManySpheresAtOnePlaceSwellNoMoreThanTwo) {
     const float k = 0.1f;
     std::vector<Ball> balls(1000, Ball{{0, 0, 0}, 0.5f});

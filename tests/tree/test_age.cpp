@@ -79,8 +79,8 @@ TEST(TemplateAge, EveryTemplateGrowsMonotonicallyInHeightAndTriangles) {
         for (size_t i = 1; i < sweep.size(); ++i) {
             // Branches only grow: the skeleton rises strictly. Crown spheres sit at the tips,
             // and a tip the front passes hands its sphere to the tips beyond it, which may
-            // stand a little lower (measured: 4 mm of the maple's 9.2 m): the grown height
-            // never falls by more than 0.5 % of the mature height.
+            // stand a little lower: the grown height never falls by more than 0.5 % of the
+            // mature height.
             EXPECT_GT(sweep[i].skeleton, sweep[i - 1].skeleton) << tree.name << shown;
             EXPECT_GT(sweep[i].height, sweep[i - 1].height - 0.005f * sweep.back().height)
                 << tree.name << shown;

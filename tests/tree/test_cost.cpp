@@ -1,4 +1,4 @@
-// Cost is known before work starts (issue 16, item 5): every reproducer is either bounded
+// Cost is known before work starts: every reproducer is either bounded
 // (few primitives per sample, a bounded leaf grid) or refused at once with the estimate.
 #include <gtest/gtest.h>
 
@@ -20,7 +20,8 @@ TreeTemplate grammar(const std::string& text, int generations) {
     return t;
 }
 
-// Took 33 s (118 s one step further): 4^n copies of one segment and of one tip sphere.
+// 4^n copies of one segment and of one tip sphere give one cone and one sphere, not minutes
+// of meshing.
 TEST(Cost, CoincidentSegmentsGiveOneConeAndOneSphere) {
     const TreeTemplate t = grammar("axiom: !(0.1)F\nF -> [F][F][F][F]\n", 7);
     const Tree tree = generate_tree(t);
@@ -32,7 +33,8 @@ TEST(Cost, CoincidentSegmentsGiveOneConeAndOneSphere) {
     EXPECT_FALSE(tree.trunk.triangles.empty());
 }
 
-// Spent 117 s scattering leaves over a crown box 1e10 m long; now refused by its extent.
+// A crown box 1e10 m long would take minutes of scattering leaves: it is refused by its
+// extent.
 TEST(Cost, ATreeOfTenMillionKilometresIsRefused) {
     EXPECT_THROW(generate_tree(grammar("axiom: !(0.1)[F(1e10)]|F(1e10)\n", 0)), InputError);
 }
@@ -56,8 +58,8 @@ TEST(Cost, TheLeafGridIsBoundedByMaxLeaves) {
     }
 }
 
-// skeleton --steps 21 of F -> FF took 2.6 GB and 68 s: the estimate knows the word exactly
-// and is over the default limits; raising them lets it through.
+// skeleton --steps 21 of F -> FF would take gigabytes and a minute: the estimate knows the
+// word exactly and is over the default limits; raising them lets it through.
 TEST(Cost, DoublingGrammarIsEstimatedAndRefusedBeforeDeriving) {
     const TreeTemplate t = grammar("axiom: !(0.1)F\nF -> FF\n", 21);
     const Cost cost = estimate_cost(t, 0, false);
@@ -86,7 +88,7 @@ TEST(Cost, CountsOfOneAreSingular) {
     EXPECT_EQ(cost_text(two).rfind("2 modules, 2 segments, about ", 0), 0u) << cost_text(two);
 }
 
-// Resolution 2000 needed 5.65 GB and 103 s; 1500 froze the studio for 68 s.
+// Resolutions of 1500 and more take gigabytes and minutes: over the default limits.
 TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
     TreeTemplate t = default_template();
     t.params.drop_hidden = 0;  // a trunk meshed at its own resolution, not for the budget
@@ -110,9 +112,9 @@ TEST(Cost, EveryBuiltInTemplateIsWithinTheDefaultLimits) {
     }
 }
 
-// The ternary tree at generations 8 crosses its branches 1845 times: its reduction took 44
-// s (1.3 s since the flat-array reducer) while the estimate before any work said much less.
-// Once the meshes are made, their handles tell: over a 1-second limit there with every
+// The ternary tree at generations 8 crosses its branches many times, and each crossing makes
+// the reduction slower than an estimate before any work can know. Once the meshes are made,
+// their handles tell: over a 1-second limit there with every
 // branch meshed, well within it at the template's own 6 generations, and within it too when
 // the branches the crown hides are left out (drop_hidden, the template's own setting).
 TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
@@ -134,8 +136,8 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     EXPECT_TRUE(within(hidden_cost, one_second)) << cost_text(hidden_cost);
 
     t.params.drop_hidden = 0;
-    // The trunk's grid as the template had it before its 80 cells (which bind only above
-    // 1,422 triangles with drop_hidden): 1,822 handles, not 1,285.
+    // A finer trunk grid than the template's 80 cells (which bind only above 1,422
+    // triangles with drop_hidden): more handles.
     t.params.trunk_resolution = 96;
     // What the grammar alone can tell.
     EXPECT_TRUE(within(estimate_cost(t, 800), one_second)) << cost_text(estimate_cost(t, 800));

@@ -1,5 +1,5 @@
 // Low budgets draw the crown as a few convex hulls (tree/crown_hulls.h), and neither part of
-// a low-budget tree shrinks to a token (tree/lowpoly_tree.h). Issue 11.
+// a low-budget tree shrinks to a token (tree/lowpoly_tree.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,8 +96,9 @@ TEST(CrownHulls, HullsAreTheDefaultOfGameMeshesAndAnOption) {
 
 // The many-blob crowns (ternary: hundreds of tip spheres; willow: a hanging curtain; maple:
 // a dense round mass over a trunk in pieces; all with handles where blobs touch in rings) at
-// the budget where issue 11 saw a spray of shards: a few closed outward hulls within the
-// tree's box, and a trunk and a crown that each keep a real share of the budget.
+// a budget where reducing the blobs alone would leave a spray of shards: a few closed outward
+// hulls within the tree's box, and a trunk and a crown that each keep a real share of the
+// budget.
 TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
     for (const std::string name : {"ternary", "willow", "maple"}) {
         SCOPED_TRACE(name);
@@ -120,9 +121,9 @@ TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
         hi = glm::max(hi, trunk_hi);
         bounds(reduced.crown, crown_lo, crown_hi);
         // The hulls lie within the tree's box; the reduction's quadric-optimal placement
-        // moves a hull's corners out to where its tangent planes meet (3.5% of the height
-        // on the ternary), not more. Without that placement the hulls stay inside but
-        // lose more of the crown (a worse Hausdorff distance, measured).
+        // moves a hull's corners out to where its tangent planes meet (a few percent of the
+        // height), not more. Without that placement the hulls stay inside but lose more of
+        // the crown (a worse Hausdorff distance).
         const glm::vec3 size = hi - lo;
         const float slack = 0.05f * std::max({size.x, size.y, size.z});
         for (int axis = 0; axis < 3; ++axis) {
@@ -213,7 +214,7 @@ TEST(CrownHulls, ALowBudgetLodChainMeetsEveryLevelsBudget) {
 namespace sylva {
 namespace {
 
-// crown_bridges as it was before Kruskal took over the search: the growth bisected with
+// A reference for crown_bridges, without Kruskal's search: the growth bisected with
 // count_crown_pieces to 1% of the crown's size, then Kruskal's order over the pairs closer
 // than twice that growth (all pairs tried here, not a grid).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> bisected_bridges(std::span<const Ball> balls,

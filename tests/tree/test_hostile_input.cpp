@@ -1,4 +1,4 @@
-// Hostile templates and parameters (issue 16): clear errors naming what and where, and
+// Hostile templates and parameters: clear errors naming what and where, and
 // budgets that mean what they say.
 #include <gtest/gtest.h>
 
@@ -28,8 +28,8 @@ TEST(HostileTemplate, AnIntegerNoDoubleHoldsIsRejectedWithKeyAndLine) {
     }
 }
 
-// A seed must be a TOML integer: a float is refused before any cast (seed = 1e308 was cast
-// to an integer first, which is undefined), naming the key and line.
+// A seed must be a TOML integer: a float is refused before any cast (casting seed = 1e308 to
+// an integer would be undefined), naming the key and line.
 TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
     for (const char* seed : {"1e308", "2.5", "-1", "\"7\""}) {
         const std::string text =
@@ -90,9 +90,9 @@ TEST(HostileBudget, AVeryFineTrunkGridStillReduces) {
     EXPECT_FALSE(r.trunk.triangles.empty());
 }
 
-// Issue 16, item 5's near-coincident form: 4096 copies of a branch turned by 0.01 degrees
-// made an open crown ("not a closed 2-manifold", exit 3) after 2.4 s of meshing; the copies
-// are merged and the smooth union bounded, so it is one closed blob on one closed stem.
+// Near-coincident copies: 4096 copies of a branch turned by 0.01 degrees would fold the
+// blend into an open crown ("not a closed 2-manifold"); the copies are merged and the smooth
+// union bounded, so it is one closed blob on one closed stem.
 TEST(HostileGrammar, NearCoincidentCopiesGiveOneClosedTree) {
     TreeTemplate t = default_template();
     t.grammar = "axiom: !(0.1)F\nF -> [+(0.01)F][-(0.01)F][&(0.01)F][^(0.01)F]\n";

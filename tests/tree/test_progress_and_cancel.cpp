@@ -1,4 +1,4 @@
-// Issue 17's cost awareness, headless: the growth reports a rising fraction that ends at 1
+// Cost awareness, headless: the growth reports a rising fraction that ends at 1
 // (the studio's progress bar and time left), and a heavy reduction answers a cancel set
 // from another thread long before it would have finished. The 100 ms goal is measured by
 // sylva-bench-cancel; the bound here is looser so it holds under sanitizers on a loaded
