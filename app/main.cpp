@@ -1,4 +1,4 @@
-// sylva: the headless command-line interface (SPEC section 8).
+// sylva: the headless command-line interface (docs/cli.md).
 // Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_invoke.h>
@@ -277,7 +277,7 @@ TreeTemplate configured_template(const Options& o) {
     for (const auto& [key, value] : o.sets) set_param(tree.params, key, value);
     if (o.seed) tree.params.seed = *o.seed;
     if (o.steps) tree.params.generations = *o.steps;
-    tree.colors = tree_colors(tree);  // colour variation (issue 14): per seed
+    tree.colors = tree_colors(tree);  // colour variation: per seed
     return tree;
 }
 

@@ -1,6 +1,6 @@
 // Per-engine export conventions (`--profile generic|unity|unreal|godot`): how collision
 // meshes are named, which glTF channel carries the wind data, whether collision is written
-// by default, and the unit of OBJ files. The README's profile table says the same.
+// by default, and the unit of OBJ files. docs/engines.md's profile table says the same.
 #pragma once
 
 #include <optional>

@@ -195,7 +195,7 @@ class GltfBuilder {
         for (const Vec& value : values)
             for (int c = 0; c < Vec::length(); ++c) {
                 // Rounded half up, as lround does for these non-negative values (the sum is
-                // exact in double), without its library call (7% of writing a glb); NaN as 0.
+                // exact in double), without its library call (costly in a hot loop); NaN as 0.
                 const float scaled = (value[c] > 0.0f ? std::min(value[c], 1.0f) : 0.0f) * top;
                 ints.push_back(static_cast<Int>(static_cast<double>(scaled) + 0.5));
             }

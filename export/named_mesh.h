@@ -25,8 +25,8 @@ struct PartAttributes {
     // Per vertex, multiplies the part's colour (each channel in [0, 1]): colour variation
     // and crown occlusion. Empty: the flat part colour.
     std::vector<glm::vec3> tint;
-    // Per vertex, the wind data (sway, flex, phase, flutter), each in [0, 1]; see README
-    // "Wind" and docs/wind.glsl.
+    // Per vertex, the wind data (sway, flex, phase, flutter), each in [0, 1]; see
+    // docs/engines.md and docs/wind.glsl.
     std::vector<glm::vec4> wind;
 };
 

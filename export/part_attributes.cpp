@@ -272,8 +272,8 @@ TreeFrame tree_frame(const Mesh& trunk, const Mesh& crown, const Mesh& leaves) {
 
 namespace {
 
-// On every core: each vertex scans the segments of its cell (a dense twig tree's trunk took
-// a millisecond alone).
+// On every core: each vertex scans the segments of its cell, which is slow on a dense twig
+// tree's trunk.
 std::vector<int> owning_segments(const Mesh& mesh, const SegmentGrid& grid) {
     std::vector<int> owner(mesh.positions.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, owner.size(), 256), [&](const auto& r) {

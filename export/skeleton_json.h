@@ -1,5 +1,5 @@
-// skeleton.json (SPEC section 8): the skeleton with the parameters in effect, for other tools
-// and for checking. Positions and radii are exactly those the SDF stage uses.
+// skeleton.json (docs/skeleton-json.md): the skeleton with the parameters in effect, for
+// other tools and for checking. Positions and radii are exactly those the SDF stage uses.
 #pragma once
 
 #include <filesystem>

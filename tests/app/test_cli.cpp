@@ -138,7 +138,7 @@ TEST_F(Cli, BrokenRuleInATemplateFileNamesTheFilesLine) {
     EXPECT_FALSE(fs::exists(path("tree.obj")));
 }
 
-// Cost is known before work starts (issue 16): a derivation that would take gigabytes is
+// Cost is known before work starts: a derivation that would take gigabytes is
 // refused at once, naming the estimate and the overrides, and runs when they are raised.
 TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     { std::ofstream(path("ff.lsys")) << "axiom: !(0.1)F(0.001)\nF(l) -> F(l)F(l)\n"; }
@@ -148,8 +148,8 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
     // A reduction's cost shows once the meshes are made: refused before it starts.
-    // (1,822 handles at 96 cells; the template's own 80 cells bind only above 1,422 triangles
-    // with drop_hidden.)
+    // (96 cells make more handles than the template's own 80, which bind only above 1,422
+    // triangles with drop_hidden.)
     r =
         run("export -t ternary --set generations=8 --set drop_hidden=0 --set trunk_resolution=96 "
             "--max-seconds 1 -o " +
@@ -328,7 +328,7 @@ std::string loaded_at_start() {
 
 }  // namespace
 
-// OpenVDB's relocations cost a process 37 ms at start: the program loads it only when the
+// OpenVDB's relocations slow every process start: the program loads it only when the
 // vdb mesher is asked for (marching/vdb_mesher.h), and then it still meshes.
 TEST_F(Cli, StartsWithoutOpenVdbAndLoadsItForTheVdbMesher) {
     const std::string libraries = loaded_at_start();
