@@ -514,7 +514,7 @@ TEST(ExportAllOrNothing, AnObjThatFailsOnAFullDiskKeepsTheOldObjAndMtl) {
 }
 
 // A chain whose third level cannot be written (a folder in its place) leaves no level, no
-// .mtl and no staging folder; before, LOD0, LOD1 and the .mtl stayed.
+// .mtl and no staging folder, not LOD0, LOD1 and the .mtl of a half-written chain.
 TEST(ExportAllOrNothing, AChainThatFailsAtLod2LeavesNoLevel) {
     const SmallTree& t = small_tree();
     for (const char* name : {"oak.obj", "oak.ply"}) {
