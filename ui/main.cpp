@@ -444,7 +444,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // while anything moves it draws every frame. While workers run (a slider held still,
         // say) it draws when one has something to show (state.wake) or input comes, and for
         // the progress bar at most a tenth of the time: a software renderer (Xvfb's llvmpipe
-        // takes 30-80 ms of both cores per frame) would otherwise take the worker's cores.
+        // spends both cores on every frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
                              state.export_job.valid() || forest_preview_running(forest);
         const bool animating = (options.screenshot_path && !bench) || state.view.wind ||

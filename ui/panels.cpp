@@ -276,7 +276,7 @@ bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& r
 }
 
 // One parameter's widget with its help and range as a tooltip.
-// The age slider and the noise controls (issue 14), shown above the other parameters.
+// The age slider and the noise controls, shown above the other parameters.
 bool is_variation_key(std::string_view key) {
     for (std::string_view k : {"age", "bend", "bend_frequency", "jitter", "width_variation",
                                "tropism_variation", "color_variation"})
@@ -326,7 +326,7 @@ void parameter_section(StudioState& state) {
         }
         if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
     };
-    // Issue 14: the age slider and the noise controls first, the other parameters below.
+    // The age slider and the noise controls first, the other parameters below.
     for (const ParamInfo& info : param_infos())
         if (is_variation_key(info.key)) row(info);
     ImGui::Separator();
@@ -533,7 +533,7 @@ void view_section(StudioState& state) {
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
 }
 
-// The engine whose conventions the export follows (README "Engine profiles").
+// The engine whose conventions the export follows (docs/engines.md, "Engine profiles").
 void profile_combo(EngineProfile& profile) {
     ImGui::SetNextItemWidth(110.0f);
     if (ImGui::BeginCombo("profile", std::string(profile_info(profile).name).c_str())) {

@@ -482,7 +482,7 @@ void start_generation(StudioState& state) {
     }
     state.requested = state.tree_template;
     state.requested_budget = budget;
-    // A job the estimate puts over the limits (resolution 1500 took 68 s) waits for "run
+    // A job the estimate puts over the limits (a very fine resolution, say) waits for "run
     // anyway"; the tree on screen stays.
     const Cost cost = estimate_cost(state.tree_template, budget);
     state.estimate = cost;

@@ -191,9 +191,9 @@ struct StudioState {
     bool run_costly = false;
     // Where the studio asks first: over the CLI's limits, or over ask_segments skeleton
     // segments. The time estimate is a lower bound that misses most of what many segments
-    // cost (the oak at generations 12: 16 000 segments, estimated 0.9 s, took 12 s on a
-    // shared machine), so the segment count asks well before the time limit would; every
-    // built-in template's default stays under both (tests/ui checks).
+    // cost (the oak at generations 12 takes many times its estimate), so the segment count
+    // asks well before the time limit would; every built-in template's default stays under
+    // both (tests/ui checks).
     CostLimits ask_limits;
     double ask_segments = 10000;
     // The estimate of the edited template (before any job starts) and of the running job,
