@@ -1,4 +1,4 @@
-// How soon each stage stops once the cancel flag is set (issue 17: cancel always within
+// How soon each stage stops once the cancel flag is set (the goal: cancel always within
 // 100 ms). For each heavy case one full run marks where its stages begin and end (the
 // tree's stage times, then the reduction); then, for every stage longer than 30 ms, the
 // flag is set from another thread every 10% into it (9 runs) and the time from setting it

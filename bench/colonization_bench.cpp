@@ -1,4 +1,4 @@
-// Space colonization to a finished skeleton (issue 13's targets: 10,000 points <= 20 ms,
+// Space colonization to a finished skeleton (targets: 10,000 points <= 20 ms,
 // 100,000 points <= 200 ms), the grid against the brute-force nearest-node reference in
 // the same run. Prints the times, the ratio, and whether both grew the same tree.
 //   build/bench/sylva-bench-colonization [repeats]

@@ -1,12 +1,12 @@
-// The game mesh, end to end (issue 11): for every built-in template and budgets 200, 800
+// The game mesh, end to end: for every built-in template and budgets 200, 800
 // and 3000, the whole `sylva export -o tree.glb` path (derive, turtle, fields, meshing,
 // leaves, reduction, LOD-free finish, glb written) timed, side by side with meshoptimizer's
 // meshopt_simplify called alone on the same raw trunk and crown (each part to its share of
 // the budget by triangle count), and whether meshopt's parts stay closed 2-manifolds
 // (check_topology). Speed goals live here, not in unit tests. One untimed export of the
 // first template comes first: it starts the thread pool and faults in the heap, which the
-// first timed template would otherwise pay alone (the oak at 200: about 25 instead of
-// 15 ms); `sylva export`'s fresh process pays them once per tree. Each export is then made
+// first timed template would otherwise pay alone; `sylva export`'s fresh process pays them
+// once per tree. Each export is then made
 // kRuns times in a row (the first of a tree larger than any before still grows the heap)
 // and the fastest counts.
 //

@@ -1,4 +1,4 @@
-// A planted forest (issue 14's target: 1,000 trees of 5 species x 8 variants, budget 800
+// A planted forest (the target: 1,000 trees of 5 species x 8 variants, budget 800
 // each, written in <= 3 s on 2 cores; the unique variants dominate, instances cost
 // nothing). Prints the time split: planning (Poisson disk, stands, variant choice), variant
 // generation (oneTBB over the 40 variants), and writing the glb scene + placement lists.

@@ -1,4 +1,4 @@
-// How the game meshes look (issue "Game meshes that look made by hand"): for every built-in
+// How the game meshes look (made by hand, not broken by the reduction): for every built-in
 // template, the tree is meshed and finished as `sylva export` does it at each budget
 // (generate_tree with the budget's resolutions, then finish_tree), and the reduced trunk
 // and crown are measured for what a player sees as broken, the whole tree for what it kept

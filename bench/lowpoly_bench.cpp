@@ -1,4 +1,4 @@
-// Low poly for real (issue 6): every built-in template at its "game" setting (its default
+// Low poly for real: every built-in template at its "game" setting (its default
 // resolutions, trunk + crown reduced to at most 800 triangles) against its resolution-200
 // surface, and plain marching cubes at the resolution that reaches the same mean error.
 // Then the time to reduce a ~100k-triangle tree.

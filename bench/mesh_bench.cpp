@@ -1,6 +1,6 @@
-// Reproduces seed 001's table 6.1 (marching cubes on its spruce, appendix B.1) and measures
+// Reproduces Heuer's (2022) table 6.1 (marching cubes on its spruce, appendix B.1) and measures
 // Sylva's meshers against it, on this machine, in one run:
-//   baseline  the seed's way: 8 field evaluations per cube, every primitive, all threads
+//   baseline  Heuer's way: 8 field evaluations per cube, every primitive, all threads
 //   dense     Sylva's marching cubes, every grid node once, culled field, all threads
 //   sparse    Sylva's marching cubes skipping blocks the distance bound proves empty
 //   vdb       OpenVDB narrow band + tools::volumeToMesh
@@ -39,7 +39,7 @@ using namespace sylva;
 
 struct SeedRow {
     int resolution;
-    double trunk_s, crown_s;  // MCA_opt, 16 threads (seed 001, table 6.1)
+    double trunk_s, crown_s;  // MCA_opt, 16 threads (Heuer 2022, table 6.1)
     int trunk_triangles, crown_triangles;
 };
 constexpr SeedRow kSeed[] = {

@@ -1,5 +1,5 @@
-// Noise throughput (issue 14's target: >= 50 M 3D samples/s per core): Sylva's improved
-// gradient noise and seed 004's value noise (linear, cosine, cubic) in 1, 2 and 3 dimensions,
+// Noise throughput (the target: >= 50 M 3D samples/s per core): Sylva's improved gradient
+// noise and Limbach's (2004) value noise (linear, cosine, cubic) in 1, 2 and 3 dimensions,
 // 4-octave fbm, and GLM's unseeded glm::perlin beside them for reference. One thread.
 //   build/bench/sylva-bench-noise [million samples per row, default 20]
 #include <cstdio>

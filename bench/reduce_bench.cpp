@@ -1,4 +1,4 @@
-// The reduction alone (issue 11): finish_tree (trunk + crown decimated to the budget,
+// The reduction alone: finish_tree (trunk + crown decimated to the budget,
 // handles cut where needed, leaves thinned) for every built-in template at budgets 200,
 // 800 and 3000, each tree meshed as the export meshes it for that budget. The best of
 // `--repeat` runs (default 3), as wall time and as the calling thread's CPU time; the CPU
