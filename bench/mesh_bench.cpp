@@ -86,7 +86,7 @@ struct Part {
     const char* name;
     Box box;
     std::function<float(const glm::vec3&)> culled;       // Sylva's field
-    std::function<float(const glm::vec3&)> brute_force;  // every primitive, seed style
+    std::function<float(const glm::vec3&)> brute_force;  // every primitive, as Heuer 2022 does
 };
 
 BatchField batch_of(const std::function<float(const glm::vec3&)>& f) {
@@ -95,7 +95,7 @@ BatchField batch_of(const std::function<float(const glm::vec3&)>& f) {
     };
 }
 
-// The seed's marching cubes cost: every cube evaluates its 8 corners with every primitive.
+// Heuer's (2022) marching cubes cost: every cube evaluates its 8 corners with every primitive.
 // Returns the number of cubes the surface crosses (the triangles themselves are not built:
 // their cost is negligible next to the evaluations).
 std::size_t baseline(const Part& part, int resolution) {
@@ -157,7 +157,7 @@ std::vector<Part> tree_parts(const TreeFields& fields) {
         parts.push_back({"crown", fields.crown_box,
                          [&crown](const glm::vec3& p) { return crown(p); },
                          [&crown](const glm::vec3& p) {
-                             // The seed folds its root smooth min over every sphere.
+                             // Heuer 2022 folds its root smooth min over every sphere.
                              float d = std::numeric_limits<float>::max();
                              bool first = true;
                              for (const Ball& b : crown.balls()) {

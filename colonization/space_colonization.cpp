@@ -163,7 +163,7 @@ class Colonizer {
         }
     }
 
-    // Seed 000 5.3: a new node that lands back on the tree (within D/2 of a node) is
+    // Liebemann 2017, 5.3: a new node that lands back on the tree (within D/2 of a node) is
     // growth going back and forth between equally distant points; refuse it.
     bool crowded(const glm::vec3& p) const {
         const float limit2 = 0.25f * s_.step_size * s_.step_size;

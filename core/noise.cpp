@@ -109,7 +109,7 @@ inline double cosine_t(double t) {
     return (1.0 - std::cos(t * std::numbers::pi)) * 0.5;
 }
 
-// Seed 004's cubic through v1 (t = 0) and v2 (t = 1) using the outer neighbours v0 and v3.
+// Limbach's (2004) cubic through v1 (t = 0) and v2 (t = 1) using the outer neighbours v0 and v3.
 inline double cubic(double v0, double v1, double v2, double v3, double t) {
     const double p = (v3 - v2) - (v0 - v1);
     const double q = (v0 - v1) - p;

@@ -51,7 +51,7 @@ class GradientNoise {
     std::array<std::uint8_t, 512> perm_{};  // the permutation twice, so p[p[x] + y] needs no mask
 };
 
-// Seed 004's value noise: a random value in [-1, 1] at every lattice point, interpolated.
+// Limbach's (2004) value noise: a random value in [-1, 1] at every lattice point, interpolated.
 enum class Interpolation {
     linear,  // (1 - t) a + t b: continuous, kinks at lattice points
     cosine,  // t' = (1 - cos(pi t)) / 2: smooth, flat at lattice points

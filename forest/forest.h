@@ -1,4 +1,4 @@
-// `sylva forest`: planting a ground area (ground.h) with a few species. Seed 000's outlook:
+// `sylva forest`: planting a ground area (ground.h) with a few species. Liebemann's (2017) outlook:
 // generate a limited number of plants and spread them so nobody notices they repeat.
 //
 //  1. Where: Poisson disk points (poisson_disk.h) at least `spacing` apart over the forest

@@ -111,7 +111,7 @@ Example make_example(const PolygonMesh& mesh);
 // A code equal for two graphs exactly when they are the same labelled planar graph.
 std::vector<int> canonical_code(const AngleGraph& g);
 
-// The seed's notation: half-edges as e<label> (theta in [0, 180)) or e<label>' (reversed),
+// Schröder's (2024) notation: half-edges as e<label> (theta in [0, 180)) or e<label>' (reversed),
 // turns as ^ and v.
 std::string boundary_string(const Boundary& b, const Directions& dirs);
 // The sorted star of darts at v as labels (the vertex's neighbourhood).

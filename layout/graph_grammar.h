@@ -14,7 +14,7 @@
 //     L leaves the hierarchy, since the rule reduces it;
 //   - else L stays and grows in the next generation.
 // Growth stops when no graph is left, or at the limits in DeriveSettings (the hierarchy of
-// most inputs does not empty itself; the grammar is then partial, as the seed says).
+// most inputs does not empty itself; the grammar is then partial, as Schröder 2024 says).
 //
 // Generation: a starter rule gives a complete graph; then random rules are applied in either
 // direction: the matched side is cut out (its half-edges become the DPO interface) and the

@@ -6,7 +6,7 @@
 // Its reach is unbounded, though: a sphere far away still lowers the value by about
 // k^2 / (4 |a - b|), so which spheres a sample sees would show as jumps in the field. The
 // crown therefore fades the blend width out between |a - b| = 2k and 4k
-// (local_root_smooth_min): identical to the seed's blend where spheres meet, exactly min
+// (local_root_smooth_min): identical to Heuer's blend where spheres meet, exactly min
 // farther away, still 1-Lipschitz, and spheres beyond the margin cannot matter.
 //
 // The fold starts at the margin and goes nearest sphere first: a sphere at least 4 k beyond the
@@ -52,7 +52,7 @@ enum class SphereBlend {
     PaskoSavchenko,  // Heuer 2022, eq. 2.13: (a + b - sqrt(a^2 + b^2 - 2 alpha a b)) / (1 + alpha)
 };
 
-// Seed 001's equation 2.13 on signed distances (negative inside): alpha = 1 is the hard
+// Heuer's (2022) equation 2.13 on signed distances (negative inside): alpha = 1 is the hard
 // union, smaller alpha blends more. Not a distance bound: it can steepen the field up to
 // (2 + sqrt(2 (1 - alpha))) / (1 + alpha) times, so meshers must not skip space with it.
 float pasko_savchenko_union(float a, float b, float alpha);

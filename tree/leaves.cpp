@@ -53,7 +53,7 @@ void add_leaf(Mesh& mesh, const std::vector<glm::vec2>& outline, const glm::vec3
     for (const glm::vec2& p : outline)
         mesh.positions.push_back(base + (along * p.x + across * p.y) * length);
     const auto n = static_cast<std::uint32_t>(outline.size());
-    if (n == 4) {  // the seed's quad: two triangles, no centre
+    if (n == 4) {  // Heuer's (2022) quad: two triangles, no centre
         mesh.triangles.push_back({ring, ring + 1, ring + 2});
         mesh.triangles.push_back({ring, ring + 2, ring + 3});
         return;

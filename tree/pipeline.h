@@ -126,7 +126,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
 // The resolution that meshes `box` with cells of `cell` (its longest side over the cell).
 int cells_along(const Box& box, float cell);
 
-// Seed 001's crown primitives: a sphere of diameter sphere_diameter at every tip's end,
+// Heuer's (2022) crown primitives: a sphere of diameter sphere_diameter at every tip's end,
 // raised by crown_offset on Y.
 std::vector<Ball> crown_spheres(const Skeleton& skeleton, const TreeParams& params);
 

@@ -1,5 +1,5 @@
-// Draws line segments or points in one colour: the skeleton (the turtle graphic of seed
-// 001's table 4.4) over or through the meshes, the colonization envelope and its points.
+// Draws line segments or points in one colour: the skeleton (the turtle graphic of Heuer
+// 2022, table 4.4) over or through the meshes, the colonization envelope and its points.
 #pragma once
 
 #include <glm/mat4x4.hpp>

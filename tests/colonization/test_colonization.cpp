@@ -232,7 +232,7 @@ TEST(Colonization, Seed000Figure32RingTerminatesAndIsColonised) {
 }
 
 TEST(Colonization, EquallyDistantPointsDoNotMakeItOscillate) {
-    // Seed 000, 5.3: a node between two points at the same distance.
+    // Liebemann 2017, 5.3: a node between two points at the same distance.
     ColonizationSettings s;
     s.influence_radius = 3.0f;
     s.kill_distance = 0.1f;

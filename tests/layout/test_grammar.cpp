@@ -146,7 +146,7 @@ TEST(LayoutGrammar, RulesSidesShareTheirBoundary) {
 }
 
 TEST(LayoutGrammar, GridYieldsTheWallRuleFromTwoComposedBoundaries) {
-    // The seed's example of R1 v R2: a wall across a plot (two T-junctions and the edge
+    // Schröder's (2024) example of R1 v R2: a wall across a plot (two T-junctions and the edge
     // between them) has the boundary of two separate edges put together with one extra
     // negative turn, so it can replace them (and be replaced by them).
     const Grammar& g = grammar_of("grid_of_plots");
@@ -189,7 +189,7 @@ TEST(LayoutPositions, NullSpaceOfTheSeedsExample) {
             for (int c = 0; c < 5; ++c) dot += a[r * 5 + c] * x[c];
             EXPECT_NEAR(dot, 0.0, 1e-9);
         }
-    const std::vector<double> first = {2, -2, -1, 1, 0};  // the seed's t vector
+    const std::vector<double> first = {2, -2, -1, 1, 0};  // Schröder's (2024) t vector
     for (int c = 0; c < 5; ++c) EXPECT_NEAR(basis[0][c], first[c], 1e-9);
 }
 

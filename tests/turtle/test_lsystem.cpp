@@ -65,12 +65,12 @@ TEST(LSystem, AcropetalSignalWithLeftContext) {
 }
 
 TEST(LSystem, Seed001RuleFormat) {
-    // Seed 001, pattern 1: "#axiom" then the axiom, "#rules" then rules, identity rules too.
+    // Heuer 2022, pattern 1: "#axiom" then the axiom, "#rules" then rules, identity rules too.
     const std::string grammar =
         "#axiom\nA\n#rules\nA -> ^^FB\nB -> C+++C---\nC -> [^F&B]\nF -> F\n+ -> +\n- -> -\n"
         "[ -> [\n] -> ]\n^ -> ^\n& -> &\n";
     Word w = derive_text(grammar, 5);
-    // Seed 001's word (5.2) after 5 steps, symbol for symbol. (Its text says 54 symbols;
+    // Heuer's (2022) word (5.2) after 5 steps, symbol for symbol. (Its text says 54 symbols;
     // the printed word has 55.)
     EXPECT_EQ(w.to_string(), "^^F[^F&[^F&B]+++[^F&B]---]+++[^F&[^F&B]+++[^F&B]---]---");
 }
