@@ -240,7 +240,7 @@ int interrupt_export(const fs::path& dir, const std::vector<std::string>& args, 
     return status;
 }
 
-// Before, the .mtl was already replaced and `tree.obj.tmp-PID` stayed; now the CLI removes
+// Interrupted, the CLI leaves the old .mtl as it was and no `tree.obj.tmp-PID`: it removes
 // its staging folder and dies by the signal.
 TEST_F(Cli, AnInterruptedExportLeavesNothingNew) {
     { std::ofstream(path("tree.mtl")) << "old mtl\n"; }

@@ -482,8 +482,8 @@ std::vector<std::string> listing(const fs::path& dir) {
 }
 
 // A full disk, simulated: a child process whose files cannot grow past 4 KiB writes an OBJ
-// (about 100 KiB) whose .mtl (under 1 KiB) would fit. Before, the .mtl was replaced first
-// and the failed OBJ left it changed.
+// (about 100 KiB) whose .mtl (under 1 KiB) would fit: the failed OBJ must not leave the .mtl
+// changed.
 TEST(ExportAllOrNothing, AnObjThatFailsOnAFullDiskKeepsTheOldObjAndMtl) {
     const auto parts = small_tree().parts();
     const fs::path dir = temp_dir() / "full";
@@ -651,7 +651,7 @@ TEST(ExportLod, OneObjPerLevelGroundedWithOneMtl) {
 }
 
 TEST(ExportLod, EveryLevelStandsWhereTheTreeStands) {
-    // Seeds and a coarse mesh where independent reductions used to lift LOD1's trunk.
+    // Seeds and a coarse mesh where independent reductions would lift LOD1's trunk.
     for (std::uint64_t seed : {1u, 2u, 3u, 7u}) {
         TreeTemplate tmpl = load_template("oak");
         tmpl.params.seed = seed;

@@ -92,7 +92,8 @@ TEST(LayoutMesh, RefusesSelfIntersectingAndOverlappingInput) {
     EXPECT_NE(error_of(std::string(kSquare) + "p #00ff00 0 1 2 3\n").reason().find("overlaps"),
               std::string::npos);
     // A plot whose edge runs through a path from corner to corner of it: no vertex inside,
-    // no crossing (a fuzz finding: the reader took it, the angle graph did not).
+    // no crossing, yet no angle graph can be made of it (a fuzz finding), so the reader
+    // refuses it.
     const InputError through = error_of(
         "v 0 0\nv 30 0\nv 30 3\nv 20 3\nv 10 3\nv 0 3\nv 10 26\nv 20 13\n"
         "p #a1987f 0 1 2 3 4 5\np #9ccc65 4 0 3 7 6\n");

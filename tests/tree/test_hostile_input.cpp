@@ -77,7 +77,7 @@ TEST(HostileBudget, APartBudgetOfZeroKeepsThatPartLikeTheWholeBudgetDoes) {
     EXPECT_LE(r.trunk.triangles.size(), budget.total);
 }
 
-// Marching cubes on a very fine grid makes slivers of zero area; the reduction used to
+// Marching cubes on a very fine grid makes slivers of zero area; the reduction must not
 // refuse them as "not a closed 2-manifold" (an internal error for valid input).
 TEST(HostileBudget, AVeryFineTrunkGridStillReduces) {
     TreeTemplate t = load_template("seed_spruce");
