@@ -280,9 +280,9 @@ TEST(ConvexHull, OfACubesCornersAndInnerPointsIsTheCube) {
 }
 
 // Six marching-cubes-like points (two coordinates on a grid, so several lie almost on one
-// plane), the smallest of the sets that made a hull with edges shared three ways: random
-// low-budget exports failed with "decimate: part 0 is not a closed 2-manifold" on such a
-// crown hull (3 of 14,000; the fir at seed 66, budget 200, among them).
+// plane), the smallest of the sets found that can make a hull with edges shared three ways,
+// which the reduction refuses as "not a closed 2-manifold" (the fir's crown hulls at seed 66,
+// budget 200, are such points).
 TEST(ConvexHull, PointsAlmostOnOnePlaneGiveAClosedHull) {
     const std::vector<glm::vec3> points{
         {-1.48449051f, 1.75744891f, -0.848280311f}, {-1.27242041f, 2.40075374f, -0.636210203f},
