@@ -10,6 +10,7 @@
 #include <chrono>
 #include <thread>
 
+#include "tests/ui/wait_for_generations.h"
 #include "tree/template_file.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
@@ -17,8 +18,6 @@
 
 namespace sylva::studio {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // F -> FF at 14 generations: 16384 segments, over the 10000 the studio runs unasked.
 constexpr const char* kExpensive = R"(name = "doubling"
@@ -57,16 +56,6 @@ bool frame(StudioState& state, RulesEditorState& editor) {
     const bool open = cost_dialog_open();
     ImGui::Render();
     return open;
-}
-
-bool wait_for_generations(StudioState& state) {
-    const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
-    while (Clock::now() < end) {
-        poll_jobs(state);
-        if (!generation_running(state) && state.stale.empty()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return false;
 }
 
 TEST(StudioPanels, TheCostDialogOpensInTheFirstFrameAndRunsTheJob) {

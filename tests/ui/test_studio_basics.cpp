@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "tests/ui/wait_for_generations.h"
 #include "tree/cost.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
@@ -19,16 +20,6 @@ namespace sylva::studio {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool wait_for_generations(StudioState& state) {
-    const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
-    while (Clock::now() < end) {
-        poll_jobs(state);
-        if (!generation_running(state) && state.stale.empty()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return false;
-}
 
 std::string read_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
