@@ -103,7 +103,6 @@ struct Reduction {
     // The parts on the way down, at the snapshot count, before relocation (empty unless
     // asked for).
     std::vector<Mesh> snapshot;
-    std::size_t crossing_pairs = 0;  // of faces of one piece (keep_apart could not hold)
 };
 
 // How far a lane (half a part, Lanes below) goes alone: down to its share of what its part
@@ -186,11 +185,6 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     });
     throw_if_cancelled(settings.cancel);
     if (settings.progress) settings.progress(1.0f);
-    std::vector<std::size_t> crossing(meshes.size(), 0);
-    if (settings.count_crossings)
-        tbb::parallel_for(std::size_t{0}, meshes.size(),
-                          [&](std::size_t k) { crossing[k] = meshes[k].crossing_pairs(); });
-    out.crossing_pairs = std::accumulate(crossing.begin(), crossing.end(), std::size_t{0});
     out.parts = extract(meshes);
     return out;
 }
@@ -253,7 +247,6 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
                                  target, attempt == 0 && snapshot ? snapshot_at : 0, settings,
                                  min_twice_area, part_of, lane_slack);
             result.parts = std::move(r.parts);
-            result.crossing_pairs = r.crossing_pairs;
             throw_if_cancelled(settings.cancel);
             if (attempt == 0 && snapshot) *snapshot = std::move(r.snapshot);
             const std::string why = broken(result.parts, parts, part_of);
@@ -385,6 +378,17 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
                       (result.handles_cut > 0
                            ? " (after cutting " + std::to_string(result.handles_cut) + " handles)"
                            : std::string());
+    // Counted once, on what is returned (the reductions on the way may be several).
+    if (settings.count_crossings) {
+        std::vector<std::size_t> crossing(result.parts.size(), 0);
+        tbb::parallel_for(std::size_t{0}, result.parts.size(), [&](std::size_t k) {
+            const Mesh* one[] = {&result.parts[k]};
+            CollapseMesh m;
+            if (!result.parts[k].triangles.empty() && m.build(one))
+                crossing[k] = m.crossing_pairs();
+        });
+        result.crossing_pairs = std::accumulate(crossing.begin(), crossing.end(), std::size_t{0});
+    }
     if (result.crossing_pairs > 0)
         result.note += std::string(result.note.empty() ? "" : "; ") +
                        std::to_string(result.crossing_pairs) +

@@ -21,11 +21,19 @@ std::int64_t cell_of(double x) {
 void FaceGrid::reset(double cell, std::size_t faces) {
     inverse_cell_ = 1.0 / cell;
     cells_.clear();
-    range_.assign(faces, Range{});
-    large_flag_.assign(faces, 0);
     large_.clear();
-    seen_.assign(faces, 0);
-    stamp_ = 0;
+    if (range_.size() != faces) {
+        range_.assign(faces, Range{});
+        large_flag_.assign(faces, 0);
+        seen_.assign(faces, 0);
+        stamp_ = 0;
+    } else {  // the same faces again: only those placed since need clearing
+        for (std::uint32_t f : placed_) {
+            range_[f] = Range{};
+            large_flag_[f] = 0;
+        }
+    }
+    placed_.clear();
 }
 
 std::uint64_t FaceGrid::key(std::int64_t x, std::int64_t y, std::int64_t z) {
@@ -36,14 +44,15 @@ std::uint64_t FaceGrid::key(std::int64_t x, std::int64_t y, std::int64_t z) {
 FaceGrid::Range FaceGrid::range_of(const glm::dvec3& lo, const glm::dvec3& hi) const {
     Range r;
     for (int k = 0; k < 3; ++k) {
-        r.lo[k] = cell_of(lo[k] * inverse_cell_);
-        r.hi[k] = cell_of(hi[k] * inverse_cell_);
+        r.lo[k] = static_cast<std::int32_t>(cell_of(lo[k] * inverse_cell_));
+        r.hi[k] = static_cast<std::int32_t>(cell_of(hi[k] * inverse_cell_));
     }
     return r;
 }
 
 void FaceGrid::place(std::uint32_t face, const glm::dvec3& lo, const glm::dvec3& hi) {
     remove(face);
+    placed_.push_back(face);
     const Entry entry{face, lo, hi};
     const Range r = range_of(lo, hi);
     if (r.cells() > kMaxFaceCells) {

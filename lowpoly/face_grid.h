@@ -66,10 +66,10 @@ class FaceGrid {
         }
     };
     struct Range {
-        std::int64_t lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};  // empty: not listed
+        std::int32_t lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};  // empty: not listed
         bool listed() const { return lo[0] <= hi[0]; }
         std::int64_t cells() const {
-            return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+            return std::int64_t{hi[0] - lo[0] + 1} * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
         }
     };
     Range range_of(const glm::dvec3& lo, const glm::dvec3& hi) const;
@@ -80,6 +80,7 @@ class FaceGrid {
     std::vector<Range> range_;  // per face
     std::vector<std::uint8_t> large_flag_;
     std::vector<Entry> large_;
+    std::vector<std::uint32_t> placed_;  // faces placed since reset() (repeats allowed)
     mutable std::vector<std::uint32_t> seen_;
     mutable std::uint32_t stamp_ = 0;
 };

@@ -309,8 +309,10 @@ void CollapseMesh::start_guard() {
     if (edges == 0 || !(length > 0.0)) return;
     grid_.reset(2.0 * length / static_cast<double>(edges), face_alive_.size());
     listed_.resize(face_alive_.size());
-    in_fan_.assign(face_alive_.size(), 0);
-    fan_stamp_ = 0;
+    if (in_fan_.size() != face_alive_.size()) {
+        in_fan_.assign(face_alive_.size(), 0);
+        fan_stamp_ = 0;
+    }
     for (std::uint32_t f = 0; f < face_alive_.size(); ++f)
         if (face_alive_[f]) grid_place(f);
     grid_faces_ = live_faces_;
