@@ -74,7 +74,8 @@ struct DecimateSettings {
     // a grid (lowpoly/face_grid.h). A branch folded through itself or its parent reads as a
     // crease or a hole. Where only crossing collapses are left above the budget (twigs
     // packed closer than a facet), those are made, cheapest first, and the result says so
-    // (DecimateResult::crossing_pairs). Faces of different pieces may cross.
+    // (DecimateResult::crossing_pairs). Faces of different pieces may cross. Handle
+    // cutting's reductions of the cut parts run without it.
     bool keep_apart = true;
     // Count the pairs of faces of one piece that cross in the result
     // (DecimateResult::crossing_pairs; about a microsecond per face left).

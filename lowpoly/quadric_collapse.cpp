@@ -209,7 +209,6 @@ void CollapseMesh::start(const CollapseSettings& settings, CancelFlag cancel) {
     passes_ = settings.passes;
     keep_apart_ = settings.keep_apart;
     guarding_ = false;
-    relaxed_ = false;
     cancel_ = cancel;
     const std::size_t nv = position_.size(), nf = face_alive_.size();
 
@@ -768,7 +767,6 @@ bool CollapseMesh::relax_guard() {
     if (!guarding_) return false;
     guarding_ = false;
     keep_apart_ = false;
-    relaxed_ = true;
     fill_heap();
     return !heap_.empty();
 }

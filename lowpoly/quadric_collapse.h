@@ -2,14 +2,16 @@
 // index arrays: closed triangle meshes as corner tables (halfedge h = 3 * face + corner,
 // with its opposite), one binary heap of vertices keyed by their cheapest legal halfedge
 // collapse (Garland-Heckbert quadrics, the error measured at the kept vertex), the link
-// condition, the fold-over and sliver guards, the per-piece volume floor and the foot.
-// The rules are those of OpenMesh's DecimaterT with ModQuadricT as decimate() used them
-// before; the arrays make a collapse several times cheaper than OpenMesh's kernel, whose
-// property lookups and handle checks dominated the run (Debian builds it without NDEBUG).
+// condition, the fold-over and sliver guards, the per-piece volume floor, the foot, and
+// near the budget a guard that keeps the faces of a piece from crossing each other. The
+// rules are those of OpenMesh's DecimaterT with ModQuadricT; the arrays make a collapse
+// several times cheaper than OpenMesh's kernel, whose property lookups and handle checks
+// dominated the run (Debian builds it without NDEBUG).
 //
 // A CollapseMesh is built once from the parts (which checks that each is a closed
 // 2-manifold) and can be copied, reduced in steps (collapse_to() twice: a snapshot on the
-// way down costs no second reduction), relocated and extracted.
+// way down costs no second reduction), relocated, unfolded and extracted. Not thread-safe:
+// one mesh per thread (collapse_together() gives each its own).
 #pragma once
 
 #include <cstddef>
@@ -90,8 +92,6 @@ class CollapseMesh {
     // lets the rest make faces cross: the guard goes off for good and the heap is filed
     // anew. Returns whether that left a collapse to make (false when it was off already).
     bool relax_guard();
-    // Whether the guard against crossings was relaxed (relax_guard()).
-    bool relaxed() const { return relaxed_; }
     // The pairs of faces of one piece that cross (lowpoly/triangle_crossing.h): what the
     // guard could not keep apart. About a microsecond per face.
     std::size_t crossing_pairs() const;
@@ -99,10 +99,11 @@ class CollapseMesh {
     void relocate();
     // Flips edges where two faces fold inwards sharper than a right angle: of a bent quad's
     // two diagonals one folds in and one out, and the one out fills the valley. A flip is
-    // made where it leaves fewer such folds among the quad's five edges, adds volume, and
-    // keeps the mesh a closed 2-manifold (no vertex below valence 3, no edge twice); in
-    // sweeps over all edges until none is left (at most 8). Vertices do not move. Returns
-    // the flips made.
+    // made where the quad's five edges fold inwards less after it (past a right angle,
+    // weighted by length), it adds volume, keeps the mesh a closed 2-manifold (no vertex
+    // below valence 3, no edge twice) and, while the guard runs, crosses no face; in sweeps
+    // over the live faces until none is left (at most 8). Vertices do not move. Returns the
+    // flips made.
     std::size_t unfold();
     // The parts as meshes: used vertices in their original order, triangles likewise.
     std::vector<Mesh> extract() const;
@@ -211,7 +212,6 @@ class CollapseMesh {
     bool heap_filled_ = false;  // since start(): passes come before the heap
     bool keep_apart_ = true;
     bool guarding_ = false;  // grid_ lists the live faces; changes are checked against it
-    bool relaxed_ = false;   // relax_guard() turned the guard off
     FaceGrid grid_;
     std::vector<FaceShape> listed_;              // per face: as grid_ lists it
     std::size_t grid_faces_ = 0;                 // live faces when grid_ was made
