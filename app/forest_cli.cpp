@@ -65,6 +65,14 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+constexpr const char* kRaiseLimits = "raise the limits with --max-memory MB / --max-seconds S";
+
+std::string figure(double n) {
+    char text[32];
+    std::snprintf(text, sizeof text, n < 1e7 ? "%.0f" : "%.3g", n);
+    return text;
+}
+
 template <class T>
 T parse_number(const std::string& flag, const std::string& text) {
     T value{};
@@ -83,7 +91,7 @@ struct TreeFlags {
     bool lod = false;
     const ExportFormat* format = nullptr;
     ExportOptions export_options;
-    CostLimits limits;
+    std::optional<double> max_bytes, max_seconds;  // --max-memory, --max-seconds
     std::string output;
     std::uint64_t seed = 1;
     double jitter = 0.1;
@@ -117,9 +125,9 @@ struct TreeFlags {
                 throw UsageError("--shading expects flat or smooth, not '" + name + "'");
             export_options.shading = name == "flat" ? Shading::Flat : Shading::Smooth;
         } else if (arg == "--max-memory") {
-            limits.max_bytes = 1e6 * static_cast<double>(parse_number<std::uint64_t>(arg, value()));
+            max_bytes = 1e6 * static_cast<double>(parse_number<std::uint64_t>(arg, value()));
         } else if (arg == "--max-seconds") {
-            limits.max_seconds = static_cast<double>(parse_number<std::uint64_t>(arg, value()));
+            max_seconds = static_cast<double>(parse_number<std::uint64_t>(arg, value()));
         } else if (arg == "-o" || arg == "--output") {
             output = value();
         } else {
@@ -142,9 +150,19 @@ struct TreeFlags {
         return f;
     }
 
+    // The flags over `defaults`: a tree's limits, or a whole job's (kManyTreeLimits).
+    CostLimits limits(CostLimits defaults) const {
+        if (max_bytes) defaults.max_bytes = *max_bytes;
+        if (max_seconds) defaults.max_seconds = *max_seconds;
+        return defaults;
+    }
+
+    // Each tree within a tree's limits, and the whole job within a job's, before any work.
     void check(const TreeTemplate& tree, const FinishSettings& f) const {
-        check_cost(estimate_cost(tree, game_budget(f)), limits,
-                   "raise the limits with --max-memory MB / --max-seconds S");
+        check_cost(estimate_cost(tree, game_budget(f)), limits(CostLimits{}), kRaiseLimits);
+    }
+    void check_job(const Cost& job, const std::string& what) const {
+        check_cost(job, limits(kManyTreeLimits), kRaiseLimits, what);
     }
 };
 
@@ -209,6 +227,10 @@ int run_batch_command(int argc, char** argv) {
         settings.jitter = flags.jitter;
         settings.finish = flags.finish(settings.tree);
         flags.check(settings.tree, settings.finish);
+        // The whole shard, before a single item is planned (a count of 1e9 ended in bad_alloc).
+        flags.check_job(
+            estimate_batch_cost(settings),
+            "this batch of " + figure(static_cast<double>(shard_size(settings))) + " trees");
         settings.format = flags.format;
         settings.export_options = flags.export_options;
         settings.shard = shard;
@@ -339,6 +361,13 @@ int run_forest_command(int argc, char** argv) {
         }
         settings.seed = flags.seed;
         settings.jitter = flags.jitter;
+        // Every variant and every tree together, before any is planted.
+        flags.check_job(estimate_forest_cost(settings),
+                        "this forest of up to " + figure(forest::estimated_trees(settings)) +
+                            " trees and " +
+                            figure(static_cast<double>(settings.variants) *
+                                   static_cast<double>(settings.species.size())) +
+                            " variants");
         settings.export_options = flags.export_options;
         settings.instancing =
             instancing == "gpu" ? forest::Instancing::Gpu : forest::Instancing::Nodes;

@@ -114,7 +114,8 @@ Usage:
                    the cost is estimated before any work starts (word, segments, grid
                    cells, memory, time on two cores); export, skeleton and derive refuse
                    (exit 3, naming the estimate) a tree estimated above 2000 MB or 10 s
-                   unless these limits are raised
+                   unless these limits are raised; batch and forest also refuse a whole
+                   job (every tree together) above 2000 MB or 600 s
 
 Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 

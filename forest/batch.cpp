@@ -69,6 +69,18 @@ std::string manifest_file_name(const Shard& shard) {
            ".json";
 }
 
+std::size_t shard_size(const BatchSettings& settings) {
+    const Shard& shard = settings.shard;
+    if (shard.count == 0 || shard.index >= settings.count) return 0;
+    return (settings.count - shard.index - 1) / shard.count + 1;
+}
+
+Cost estimate_batch_cost(const BatchSettings& settings) {
+    const std::size_t budget = game_budget(settings.finish);
+    return many_trees_cost(estimate_cost(settings.tree, budget),
+                           static_cast<double>(shard_size(settings)), budget);
+}
+
 std::vector<BatchItem> plan_batch(const BatchSettings& settings) {
     if (settings.count == 0) throw InputError("a batch needs a count of at least 1");
     if (settings.shard.count == 0 || settings.shard.index >= settings.shard.count)

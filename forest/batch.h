@@ -18,6 +18,7 @@
 #include "core/cancel.h"
 #include "core/tree_template.h"
 #include "export/export_tree.h"
+#include "tree/cost.h"
 #include "tree/pipeline.h"
 
 namespace sylva {
@@ -62,6 +63,13 @@ struct BatchItem {
 // core/data_paths.h), the index zero-padded to the width of count - 1 (at least 4).
 // Throws InputError for a count of 0 or a bad jitter.
 std::vector<BatchItem> plan_batch(const BatchSettings& settings);
+
+// How many items the settings' shard holds (0 for a bad shard), counted, not listed.
+std::size_t shard_size(const BatchSettings& settings);
+
+// The shard's cost before any of it is made or planned: shard_size() trees of the template,
+// every one kept until the shard is written (tree/cost.h's many_trees_cost).
+Cost estimate_batch_cost(const BatchSettings& settings);
 
 // `manifest.json`, or `manifest_<I>of<N>.json` for a shard of more than one.
 std::string manifest_file_name(const Shard& shard);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -165,8 +166,78 @@ std::filesystem::path placements_json_path(const std::filesystem::path& glb) {
     return glb.parent_path() / (glb.stem().string() + ".placements.json");
 }
 
+namespace {
+
+// The densest disk packing of `spacing` over the box of the polygons of class `cls`.
+double packed_trees(const Ground& ground, std::string_view cls, double spacing) {
+    const GroundBounds box = forest_bounds(ground, cls);
+    const glm::dvec2 size = box.hi - box.lo;
+    if (!(size.x > 0.0 && size.y > 0.0)) return 0.0;
+    return 1.2 * ((size.x + spacing) / spacing) * ((size.y + spacing) / spacing);
+}
+
+// Placements, their scene nodes and both lists, per tree.
+constexpr double kBytesPerTree = 2000.0;
+constexpr double kSecondsPerTree = 2.0e-5;
+
+}  // namespace
+
+double estimated_trees(const ForestSettings& s) {
+    bool forest_species = false, orchard_species = false;
+    for (const Species& sp : s.species)
+        (sp.cls == kOrchardClass ? orchard_species : forest_species) = true;
+    double trees = 0.0;
+    if (forest_species) {
+        double forest = packed_trees(s.ground, kForestClass, s.spacing);
+        if (s.trees) forest = std::min(forest, static_cast<double>(*s.trees));
+        if (s.density) {
+            const GroundBounds box = forest_bounds(s.ground);
+            const glm::dvec2 size = box.hi - box.lo;
+            forest = std::min(forest, *s.density * size.x * size.y / 1e4);
+        }
+        trees += forest;
+        if (s.layout && s.layout->meadow_density > 0.0)
+            trees += packed_trees(s.ground, kMeadowClass, 3.0 * s.spacing);
+    }
+    if (s.layout && orchard_species)
+        for (const GroundPolygon& polygon : s.ground.polygons)
+            if (polygon.cls == kOrchardClass)
+                trees += orchard_lattice_points(polygon, s.layout->orchard);
+    return std::isnan(trees) ? std::numeric_limits<double>::infinity() : trees;
+}
+
+Cost estimate_forest_cost(const ForestSettings& s) {
+    const std::size_t budget = game_budget(s.finish);
+    Cost total;
+    double peak = 0.0, kept = 0.0;  // one variant is made at a time; every one is kept
+    for (const Species& sp : s.species) {
+        const Cost each = estimate_cost(sp.tree, budget);
+        const Cost variants = many_trees_cost(each, static_cast<double>(s.variants), budget);
+        total.modules += variants.modules;
+        total.segments += variants.segments;
+        total.cells += variants.cells;
+        total.seconds += variants.seconds;
+        peak = std::max(peak, each.bytes);
+        kept += variants.bytes - each.bytes;
+    }
+    const double trees = estimated_trees(s);
+    total.bytes = peak + kept + kBytesPerTree * trees;
+    total.seconds += kSecondsPerTree * trees;
+    return total;
+}
+
 ForestPlan plan_forest(const ForestSettings& s) {
     validate(s);
+    // Every class together, before any tree is placed: an orchard lattice of 1e-9 m spacing
+    // would otherwise be walked point by point.
+    const double trees = estimated_trees(s);
+    if (!(trees <= kMaxForestTrees)) {
+        char figure[160];
+        std::snprintf(figure, sizeof figure,
+                      "this ground and spacing would plant up to %.3g trees; the limit is %.0f",
+                      trees, kMaxForestTrees);
+        throw InputError(figure);
+    }
     ForestPlan plan;
     const std::size_t k_count = s.variants;
     const bool layout = s.layout.has_value();

@@ -30,6 +30,7 @@
 #include "forest/forest_scene.h"
 #include "forest/ground.h"
 #include "forest/orchard.h"
+#include "tree/cost.h"
 #include "tree/pipeline.h"
 
 namespace sylva::forest {
@@ -107,9 +108,23 @@ struct ForestPlan {
 // Everything but the trees' geometry: fast and deterministic for the settings. Trees come
 // in this order: forest, orchard rows (polygon by polygon), meadow. --density and --trees
 // apply to the forest polygons only. Throws InputError for no species, a weight that is
-// not positive, bad spacing, density, tree count or K, an age the template cannot take, and
-// a ground with nothing to plant.
+// not positive, bad spacing, density, tree count or K, an age the template cannot take, a
+// ground with nothing to plant, and more than kMaxForestTrees estimated (naming the figure,
+// before any tree is placed).
 ForestPlan plan_forest(const ForestSettings& settings);
+
+// At most this many trees in a forest, every class together.
+inline constexpr double kMaxForestTrees = 1e6;
+
+// How many trees the settings may plant, every class together, before any is placed: the
+// densest disk packing over the forest and meadow boxes, thinned to --trees or --density,
+// plus every orchard lattice point. An upper bound, in doubles (never an overflowed count).
+// Throws InputError for bad orchard spacings.
+double estimated_trees(const ForestSettings& settings);
+
+// The whole job before any of it is made: every variant of every species (tree/cost.h's
+// many_trees_cost at the finish budget) and the placements of estimated_trees().
+Cost estimate_forest_cost(const ForestSettings& settings);
 
 struct ForestTimes {
     double plan_ms = 0, variants_ms = 0, write_ms = 0;

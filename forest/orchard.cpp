@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -65,23 +66,60 @@ glm::dvec2 row_origin(const GroundPolygon& polygon, const OrchardSettings& s) {
     return cu * u + cv * v;
 }
 
+namespace {
+
+// The lattice index ranges of the polygon's rows (i along a row, j across), in doubles.
+struct Lattice {
+    glm::dvec2 origin{0.0}, u{1.0, 0.0}, v{0.0, 1.0};
+    double i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+    double points() const { return (i1 - i0 + 1.0) * (j1 - j0 + 1.0); }
+};
+
+Lattice lattice(const GroundPolygon& polygon, const OrchardSettings& s) {
+    Lattice l;
+    l.u = row_direction(polygon);
+    l.v = glm::dvec2(-l.u.y, l.u.x);
+    l.origin = row_origin(polygon, s);
+    double u1 = std::numeric_limits<double>::lowest(), v1 = u1;
+    double u0 = std::numeric_limits<double>::max(), v0 = u0;
+    for (glm::dvec2 p : polygon.points) {
+        u0 = std::min(u0, glm::dot(p - l.origin, l.u));
+        u1 = std::max(u1, glm::dot(p - l.origin, l.u));
+        v0 = std::min(v0, glm::dot(p - l.origin, l.v));
+        v1 = std::max(v1, glm::dot(p - l.origin, l.v));
+    }
+    l.i0 = std::floor(u0 / s.tree_spacing), l.i1 = std::ceil(u1 / s.tree_spacing);
+    l.j0 = std::floor(v0 / s.row_spacing), l.j1 = std::ceil(v1 / s.row_spacing);
+    return l;
+}
+
+}  // namespace
+
+double orchard_lattice_points(const GroundPolygon& polygon, const OrchardSettings& s) {
+    validate(s);
+    if (polygon.points.size() < 3) return 0.0;
+    const double n = lattice(polygon, s).points();
+    return std::isfinite(n) ? n : std::numeric_limits<double>::infinity();
+}
+
 std::vector<glm::dvec2> orchard_rows(const GroundPolygon& polygon, const Ground& ground,
                                      const OrchardSettings& s) {
     validate(s);
     std::vector<glm::dvec2> trees;
     if (polygon.points.size() < 3) return trees;
-    const glm::dvec2 u = row_direction(polygon), v(-u.y, u.x);
-    const glm::dvec2 origin = row_origin(polygon, s);
-    double u1 = std::numeric_limits<double>::lowest(), v1 = u1;
-    double u0 = std::numeric_limits<double>::max(), v0 = u0;
-    for (glm::dvec2 p : polygon.points) {
-        u0 = std::min(u0, glm::dot(p - origin, u)), u1 = std::max(u1, glm::dot(p - origin, u));
-        v0 = std::min(v0, glm::dot(p - origin, v)), v1 = std::max(v1, glm::dot(p - origin, v));
+    const Lattice l = lattice(polygon, s);
+    const glm::dvec2 origin = l.origin, u = l.u, v = l.v;
+    // Compared as a double before the casts: a spacing of 1e-9 m is 1e+20 points.
+    if (!(l.points() <= kMaxOrchardLattice)) {
+        char figure[160];
+        std::snprintf(figure, sizeof figure,
+                      "a tree spacing of %g m and a row spacing of %g m would plant up to %.3g "
+                      "trees in an orchard polygon; the limit is %.0f",
+                      s.tree_spacing, s.row_spacing, l.points(), kMaxOrchardLattice);
+        throw InputError(figure);
     }
-    const long i0 = static_cast<long>(std::floor(u0 / s.tree_spacing));
-    const long i1 = static_cast<long>(std::ceil(u1 / s.tree_spacing));
-    const long j0 = static_cast<long>(std::floor(v0 / s.row_spacing));
-    const long j1 = static_cast<long>(std::ceil(v1 / s.row_spacing));
+    const long i0 = static_cast<long>(l.i0), i1 = static_cast<long>(l.i1);
+    const long j0 = static_cast<long>(l.j0), j1 = static_cast<long>(l.j1);
     for (long j = j0; j <= j1; ++j)
         for (long i = i0; i <= i1; ++i) {
             const glm::dvec2 p = origin + static_cast<double>(i) * s.tree_spacing * u +

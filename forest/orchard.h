@@ -26,10 +26,19 @@ glm::dvec2 row_direction(const GroundPolygon& polygon);
 // lattice is centred on the polygon's extent along u and v.
 glm::dvec2 row_origin(const GroundPolygon& polygon, const OrchardSettings& settings);
 
+// At most this many lattice points per orchard polygon (the forest's tree cap).
+inline constexpr double kMaxOrchardLattice = 1e6;
+
+// How many lattice points orchard_rows() visits for the polygon: an upper bound on its trees,
+// in doubles (a spacing of 1e-9 m gives 1e+20, never an overflowed integer). 0 for fewer
+// than 3 points. Throws InputError for a bad spacing or margin.
+double orchard_lattice_points(const GroundPolygon& polygon, const OrchardSettings& settings);
+
 // The trees of one orchard polygon: lattice points inside it, at least `margin` from its
 // edges and inside no polygon of `ground` whose class is neither "orchard" nor "forest" (a
 // path drawn over it). Rows in order, trees along each row. Throws InputError for a spacing
-// or margin that is not a positive (margin: non-negative) finite number.
+// or margin that is not a positive (margin: non-negative) finite number, and for a lattice
+// of more than kMaxOrchardLattice points (naming the figure), before any is visited.
 std::vector<glm::dvec2> orchard_rows(const GroundPolygon& polygon, const Ground& ground,
                                      const OrchardSettings& settings);
 

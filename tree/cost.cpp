@@ -32,6 +32,8 @@ constexpr double kReduceSecondsPerTriangle = 2.2e-6;
 // 6-8).
 constexpr double kReduceSecondsPerHandleSquared = 2.6e-7;
 constexpr double kReduceBytesPerTriangle = 400.0;  // corner table, heap, quadrics, copies
+// A finished triangle kept for writing: three corners of position, normal, UV and colour.
+constexpr double kKeptBytesPerTriangle = 150.0;
 
 std::string format_number(double n) {
     char text[32];
@@ -89,6 +91,22 @@ Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t b
     return cost;
 }
 
+Cost many_trees_cost(const Cost& each, double count, std::size_t budget) {
+    Cost cost;
+    if (!(count > 0.0)) return cost;
+    // Trunk + crown, as many leaf triangles, and the LOD levels' half again.
+    const double kept = budget > 0 ? kKeptBytesPerTriangle * 3.0 * static_cast<double>(budget)
+                                   : std::max(0.0, each.bytes - kBaseBytes);
+    cost.modules = each.modules * count;
+    cost.segments = each.segments * count;
+    cost.cells = each.cells * count;
+    cost.triangles = each.triangles * count;
+    cost.handles = each.handles * count;
+    cost.bytes = each.bytes + kept * count;
+    cost.seconds = each.seconds * count;
+    return cost;
+}
+
 std::string cost_text(const Cost& cost) {
     char tail[96];
     std::snprintf(tail, sizeof tail, "about %.2g GB and %.3g s", cost.bytes / 1e9, cost.seconds);
@@ -106,13 +124,14 @@ bool within(const Cost& cost, const CostLimits& limits) {
     return cost.bytes <= limits.max_bytes && cost.seconds <= limits.max_seconds;
 }
 
-void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override) {
+void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override,
+                const std::string& what) {
     if (within(cost, limits)) return;
     char limit[96];
     std::snprintf(limit, sizeof limit, "%.0f MB and %.3g s", limits.max_bytes / 1e6,
                   limits.max_seconds);
-    throw InputError("this tree is estimated at " + cost_text(cost) + ", over the limit of " +
-                     limit + " (lower the steps or resolutions, or " + how_to_override + ")");
+    throw InputError(what + " is estimated at " + cost_text(cost) + ", over the limit of " + limit +
+                     " (lower the steps or resolutions, or " + how_to_override + ")");
 }
 
 }  // namespace sylva

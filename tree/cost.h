@@ -27,6 +27,11 @@ struct CostLimits {
     double max_seconds = 10.0;
 };
 
+// The default limits of a job of many trees (a batch, a forest) as a whole: the same memory,
+// and time for a few hundred trees, so a hundred variants need no flag but a billion are
+// refused before the first.
+inline constexpr CostLimits kManyTreeLimits{2.0e9, 600.0};
+
 // Cheap (no derivation, no grid). `budget` is the trunk + crown triangle budget the meshes
 // will be reduced to (0: not reduced), `mesh` false for a skeleton alone. The memory and time
 // model is fitted to this project's default template: a rough guide, never below the true
@@ -40,13 +45,20 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget = 0, bool mesh =
 // ternary tree at generations 6-8 and plain trees to 450,000 triangles.
 Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t budget);
 
+// `count` trees of cost `each` made in one job and kept until it writes them (a batch, a
+// forest's variants): their time and counts add up; the memory is one tree's peak plus what
+// every tree keeps, its finished meshes at `budget` triangles (trunk + crown, leaves and LOD
+// levels beside them), or its raw meshes when `budget` is 0.
+Cost many_trees_cost(const Cost& each, double count, std::size_t budget);
+
 // "2097152 modules, 2097152 segments, 8.0e+06 cells, about 2.7 GB and 71 s".
 std::string cost_text(const Cost& cost);
 
 bool within(const Cost& cost, const CostLimits& limits);
 
-// Throws InputError naming the estimate, the limit and `how_to_override` when the cost is
-// over a limit.
-void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override);
+// Throws InputError naming `what` ("this tree", "this batch of 1000000000 trees"), the
+// estimate, the limit and `how_to_override` when the cost is over a limit.
+void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override,
+                const std::string& what = "this tree");
 
 }  // namespace sylva

@@ -23,8 +23,12 @@ struct Result {
     std::string output;
 };
 
-Result run(const std::string& args) {
-    const std::string command = std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
+// `seconds` > 0: killed after that long (a hang fails the test instead of stalling it).
+Result run(const std::string& args, int seconds = 0) {
+    const std::string timeout =
+        seconds > 0 ? "timeout -s KILL " + std::to_string(seconds) + " " : std::string();
+    const std::string command =
+        timeout + std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
     Result r;
     FILE* pipe = popen(command.c_str(), "r");
     char buffer[4096];
@@ -134,6 +138,41 @@ TEST_F(CliForest, AnInterruptedBatchLeavesNothing) {
     ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
     EXPECT_EQ(WTERMSIG(status), SIGINT);
     EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
+// A batch or forest is estimated as a whole before any work: a billion trees ended in
+// bad_alloc after 26 s, a forest of many variants was checked one variant at a time, and an
+// orchard spacing of 1e-9 m hung. Each is refused at once (exit 3) with the figure.
+TEST_F(CliForest, ManyTreeJobsAreRefusedWholeBeforeAnyWork) {
+    const auto start = std::chrono::steady_clock::now();
+    const Result billion = run("batch -t spruce --count 1000000000 -o " + path("b"), 20);
+    EXPECT_EQ(billion.code, 3) << billion.output;
+    EXPECT_NE(billion.output.find("this batch of 1e+09 trees is estimated at"), std::string::npos)
+        << billion.output;
+    EXPECT_NE(billion.output.find("--max-seconds"), std::string::npos) << billion.output;
+    EXPECT_EQ(billion.output.find("batch: 1/"), std::string::npos) << billion.output;
+    EXPECT_FALSE(fs::exists(path("b")));
+
+    // --max-seconds holds for the whole batch and forest, not for each tree.
+    const Result twenty = run("batch -t spruce --count 20 --max-seconds 1 -o " + path("b"), 20);
+    EXPECT_EQ(twenty.code, 3) << twenty.output;
+    EXPECT_NE(twenty.output.find("this batch of 20 trees"), std::string::npos) << twenty.output;
+    const Result variants =
+        run("forest --area 30x20 --species spruce,pine --variants 50 --max-seconds 1 -o " +
+                path("f.glb"),
+            20);
+    EXPECT_EQ(variants.code, 3) << variants.output;
+    EXPECT_NE(variants.output.find("100 variants"), std::string::npos) << variants.output;
+    EXPECT_EQ(variants.output.find("forest: variant"), std::string::npos) << variants.output;
+
+    const std::string plan = std::string(SYLVA_SOURCE_DIR) + "/tests/forest/data/farm_plan.json";
+    const Result orchard =
+        run("forest --layout " + plan + " --tree-spacing 1e-9 -o " + path("f.glb"), 20);
+    EXPECT_EQ(orchard.code, 3) << orchard.output;
+    EXPECT_NE(orchard.output.find("trees"), std::string::npos) << orchard.output;
+    EXPECT_NE(orchard.output.find("limit"), std::string::npos) << orchard.output;
+    EXPECT_FALSE(fs::exists(path("f.glb")));
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
 }
 
 }  // namespace

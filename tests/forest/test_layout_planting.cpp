@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -202,6 +203,41 @@ TEST_F(LayoutScene, PlacementListsRecordClassesAndRepeat) {
     plant_forest(s, dir_ / "again" / "farm.glb");
     for (const char* name : {"farm.glb", "farm.placements.csv", "farm.placements.json"})
         EXPECT_EQ(read(dir_ / name), read(dir_ / "again" / name)) << name;
+}
+
+// An orchard spacing of 1e-9 m walked 1e+20 lattice points (sylva forest --layout PLAN
+// --tree-spacing 1e-9 hung): the whole forest's trees are estimated together and refused
+// with the figure before any is placed.
+TEST(LayoutPlanting, AnOrchardPastTheTreeLimitIsRefusedBeforePlanting) {
+    ForestSettings s = farm_settings();
+    s.layout->orchard.tree_spacing = 1e-9;
+    EXPECT_GT(estimated_trees(s), kMaxForestTrees);
+    const auto start = std::chrono::steady_clock::now();
+    std::string message;
+    try {
+        plan_forest(s);
+    } catch (const InputError& e) {
+        message = e.what();
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+    EXPECT_NE(message.find("e+"), std::string::npos) << message;
+    EXPECT_NE(message.find("limit is 1000000"), std::string::npos) << message;
+    for (const GroundPolygon& polygon : s.ground.polygons) {
+        if (polygon.cls != kOrchardClass) continue;
+        EXPECT_THROW(orchard_rows(polygon, s.ground, s.layout->orchard), InputError);
+    }
+}
+
+// The estimate is an upper bound: every tree planted was counted.
+TEST(LayoutPlanting, TheTreeEstimateBoundsThePlantedTrees) {
+    ForestSettings s = farm_settings();
+    s.layout->meadow_density = 4.0;
+    const ForestPlan plan = plan_forest(s);
+    EXPECT_GE(estimated_trees(s), static_cast<double>(plan.placements.size()));
+    // The job counts every variant: twice the variants, about twice the time.
+    const Cost two = estimate_forest_cost(s);
+    s.variants = 4;
+    EXPECT_GT(estimate_forest_cost(s).seconds, 1.8 * two.seconds);
 }
 
 }  // namespace

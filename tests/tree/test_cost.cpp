@@ -150,4 +150,27 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
 }
 
 }  // namespace
+// A job of many trees adds their time and keeps every finished tree: a batch of 1e9 trees is
+// refused at once, however cheap each is.
+TEST(Cost, ManyTreesAddUpTimeAndKeptMemory) {
+    const TreeTemplate t = default_template();
+    const Cost each = estimate_cost(t, 800);
+    const Cost hundred = many_trees_cost(each, 100, 800);
+    EXPECT_DOUBLE_EQ(hundred.seconds, 100 * each.seconds);
+    EXPECT_GT(hundred.bytes, each.bytes);
+    EXPECT_GT(many_trees_cost(each, 100, 0).bytes, hundred.bytes);  // raw meshes are kept
+    EXPECT_TRUE(within(hundred, kManyTreeLimits));
+    const Cost billion = many_trees_cost(each, 1e9, 800);
+    EXPECT_FALSE(within(billion, kManyTreeLimits));
+    try {
+        check_cost(billion, kManyTreeLimits, "raise them", "this batch of 1e+09 trees");
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("this batch of 1e+09 trees is estimated at"), std::string::npos)
+            << message;
+        EXPECT_NE(message.find("600 s"), std::string::npos) << message;
+    }
+}
+
 }  // namespace sylva
