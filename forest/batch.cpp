@@ -14,6 +14,7 @@
 #include "core/signal_cleanup.h"
 #include "export/export.h"
 #include "export/glb_writer.h"
+#include "forest/output_folder.h"
 #include "forest/variation.h"
 
 namespace sylva {
@@ -107,6 +108,7 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     BatchResult result;
     result.items = plan_batch(settings);
     const std::size_t n = result.items.size();
+    OutputFolder folder(dir);  // made before the trees are, gone again if they fail
 
     MeshOptions mesh = settings.mesh;
     mesh.budget = game_budget(settings.finish);
@@ -141,7 +143,6 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
 
     // Write: every file staged, then moved into place, with signals held back meanwhile so
     // an interrupt leaves all of the shard or none of it.
-    std::filesystem::create_directories(dir);
     SignalDeferral deferral;
     FileSet files;
     nlohmann::ordered_json items = nlohmann::ordered_json::array();
@@ -178,6 +179,7 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     files.add(dir / manifest_file_name(settings.shard),
               [&](std::ostream& out) { out << manifest.dump(2) << '\n'; });
     result.files = files.commit();
+    folder.keep();
     return result;
 }
 

@@ -79,9 +79,10 @@ struct BatchResult {
     std::vector<std::filesystem::path> files;  // every file written, the manifest last
 };
 
-// Generates the shard's trees and writes them and the manifest into `dir` (created when
-// missing). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N], "format",
-// "jittered": [keys], "items": [{"index", "file", "seed", "parameters": {key: value},
+// Generates the shard's trees and writes them and the manifest into `dir`, made (or refused
+// with IoError naming it) before any tree is generated and removed again on failure
+// (forest/output_folder.h). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N],
+// "format", "jittered": [keys], "items": [{"index", "file", "seed", "parameters": {key: value},
 // "triangles"}]}, where "parameters" are the jittered keys' values (with the template and
 // `--set` they reproduce the tree: `sylva export -t T --seed SEED --set KEY=VALUE...`).
 // Throws InputError, IoError, Cancelled; on any of them no file is left.

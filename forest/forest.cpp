@@ -20,6 +20,7 @@
 #include "core/noise.h"
 #include "core/random.h"
 #include "core/stopwatch.h"
+#include "forest/output_folder.h"
 #include "forest/poisson_disk.h"
 #include "forest/variation.h"
 
@@ -409,6 +410,11 @@ ForestPlan plan_forest(const ForestSettings& s) {
 }
 
 ForestResult plant_forest(const ForestSettings& s, const std::filesystem::path& glb) {
+    // Where the files go, made or refused before any tree is.
+    OutputFolder folder(glb.parent_path());
+    for (const std::filesystem::path& file :
+         {glb, placements_csv_path(glb), placements_json_path(glb)})
+        output_target(file);
     ForestResult result;
     Stopwatch clock;
     result.plan = plan_forest(s);
@@ -508,6 +514,7 @@ ForestResult plant_forest(const ForestSettings& s, const std::filesystem::path& 
         out << doc.dump(1) << '\n';
     });
     result.files = files.commit();
+    folder.keep();
     result.times.write_ms = clock.lap_ms();
     return result;
 }

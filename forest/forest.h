@@ -146,7 +146,10 @@ std::filesystem::path placements_json_path(const std::filesystem::path& glb);
 // index,species,variant,x,y,z,yaw_degrees,scale,age,class (species: the template name,
 // variant: its name, class: the polygon's). JSON: {"species": [{"name", "weight", "class"}],
 // "variants": [{"name", "species", "seed", "age", "triangles"}], "placements": [{"species",
-// "variant", "position": [x, y, z], "yaw_degrees", "scale", "age", "class"}]}.
+// "variant", "position": [x, y, z], "yaw_degrees", "scale", "age", "class"}]}. The folder
+// of `glb` is made (and the three targets checked) before any work: a file, device or an
+// unwritable folder on the way is an IoError naming it, and a folder made for a forest that
+// then fails is removed again.
 // Throws InputError, IoError, Cancelled.
 ForestResult plant_forest(const ForestSettings& settings, const std::filesystem::path& glb);
 

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <filesystem>
+#include <system_error>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/file_set.h"
@@ -46,6 +48,48 @@ long long parse_int(const std::string& flag, const std::string& value, long long
                          {flag});
     return v;
 }
+
+// The folder `generate` writes into, made (or refused, naming it) before any layout is, and
+// removed again if the job fails (forest/output_folder.h does the same for batches; layout
+// does not link forest).
+class OutputFolder {
+  public:
+    explicit OutputFolder(const std::filesystem::path& dir) {
+        namespace fs = std::filesystem;
+        std::vector<fs::path> missing;  // outermost first
+        std::error_code ec;
+        for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+            const fs::file_status status = fs::status(p, ec);
+            if (fs::is_directory(status)) break;
+            if (fs::exists(status))
+                throw IoError("cannot write into '" + dir.string() + "': '" + p.string() +
+                                  "' is not a folder",
+                              dir);
+            missing.insert(missing.begin(), p);
+            if (p == p.parent_path()) break;
+        }
+        for (const fs::path& p : missing) {
+            if (!fs::create_directory(p, ec) && ec) {
+                remove_made();
+                throw IoError("cannot write into '" + dir.string() + "': " + ec.message(), dir);
+            }
+            made_.push_back(p);
+        }
+    }
+    ~OutputFolder() { remove_made(); }
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+    void keep() { made_.clear(); }
+
+  private:
+    void remove_made() {
+        std::error_code ec;
+        for (auto p = made_.rbegin(); p != made_.rend(); ++p)
+            if (std::filesystem::is_empty(*p, ec)) std::filesystem::remove(*p, ec);
+        made_.clear();
+    }
+    std::vector<std::filesystem::path> made_;
+};
 
 }  // namespace
 
@@ -110,6 +154,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
     if (input.empty()) return usage("layout " + sub + " needs an EXAMPLE");
     if (output.empty()) return usage("layout " + sub + " needs -o");
     if (sub == "derive") {
+        output_target(output);  // a folder or device at -o is refused before the work
         const auto start = std::chrono::steady_clock::now();
         const Grammar grammar = derive_grammar(make_example(load_example(input)), derive);
         const double ms =
@@ -126,6 +171,8 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         return 0;
     }
     if (sub == "generate") {
+        const std::filesystem::path dir(output);
+        OutputFolder folder(dir);
         const Grammar grammar = is_grammar_file(input)
                                     ? read_grammar_json(read_text(input), input)
                                     : derive_grammar(make_example(load_example(input)), derive);
@@ -133,8 +180,6 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         settings.steps = static_cast<int>(steps);
         const std::vector<PolygonMesh> layouts =
             generate_layouts(grammar, static_cast<int>(count), seed, settings);
-        const std::filesystem::path dir(output);
-        std::filesystem::create_directories(dir);
         FileSet files;
         for (std::size_t i = 0; i < layouts.size(); ++i) {
             char name[32];
@@ -145,6 +190,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
                       [&](std::ostream& o) { o << write_mesh_svg(layouts[i]); });
         }
         files.commit();
+        folder.keep();
         std::fprintf(out, "wrote %zu layouts to %s\n", layouts.size(), output.c_str());
         return 0;
     }

@@ -137,7 +137,7 @@ TEST_F(CliForest, AnInterruptedBatchLeavesNothing) {
     ::waitpid(child, &status, 0);
     ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
     EXPECT_EQ(WTERMSIG(status), SIGINT);
-    EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+    EXPECT_FALSE(fs::exists(out));  // nor the folder made for it
 }
 
 // A batch or forest is estimated as a whole before any work: a billion trees ended in
@@ -173,6 +173,31 @@ TEST_F(CliForest, ManyTreeJobsAreRefusedWholeBeforeAnyWork) {
     EXPECT_NE(orchard.output.find("limit"), std::string::npos) << orchard.output;
     EXPECT_FALSE(fs::exists(path("f.glb")));
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+}
+
+// The output folder is made, or refused with exit 4 naming it, before any tree is generated
+// (a batch found out only after every tree); a job that fails leaves no folder it made.
+TEST_F(CliForest, OutputFoldersAreRefusedFirstAndNotLeftBehind) {
+    { std::ofstream(path("plain")) << "x"; }
+    const std::string blocked = path("plain") + "/b";
+    const Result batch = run("batch -t spruce --count 3 -o " + blocked, 60);
+    EXPECT_EQ(batch.code, 4) << batch.output;
+    EXPECT_NE(batch.output.find(blocked), std::string::npos) << batch.output;
+    EXPECT_EQ(batch.output.find("batch: 1/"), std::string::npos) << batch.output;
+    const Result forest =
+        run("forest --area 20x20 --variants 1 -o " + path("plain") + "/f/forest.glb", 60);
+    EXPECT_EQ(forest.code, 4) << forest.output;
+    EXPECT_NE(forest.output.find(path("plain") + "/f"), std::string::npos) << forest.output;
+    EXPECT_EQ(forest.output.find("forest: variant"), std::string::npos) << forest.output;
+    const Result layout = run("layout generate village --count 1 -o " + blocked, 60);
+    EXPECT_EQ(layout.code, 4) << layout.output;
+    EXPECT_NE(layout.output.find(blocked), std::string::npos) << layout.output;
+
+    // A grammar that fails only when grown: the batch fails after its folder was made.
+    { std::ofstream(path("bad.txt")) << "axiom: F\nF -> F[\n"; }
+    const Result bad = run("batch -t " + path("bad.txt") + " --count 2 -o " + path("new/b"), 60);
+    EXPECT_EQ(bad.code, 3) << bad.output;
+    EXPECT_FALSE(fs::exists(path("new"))) << bad.output;
 }
 
 }  // namespace

@@ -283,5 +283,34 @@ TEST(LayoutCli, GenerateWritesJsonAndSvgForEveryVariation) {
     std::filesystem::remove_all(dir);
 }
 
+// The output folder is made or refused before any layout is derived, and a generate that
+// fails leaves no folder it made.
+TEST(LayoutCli, TheOutputFolderIsRefusedFirstAndNotLeftBehind) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("sylva_layout_out_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::FILE* null = std::fopen("/dev/null", "w");
+    { std::ofstream(dir / "plain") << "x"; }
+    // A file on the way: an IoError naming the path, before the example is even read.
+    const fs::path under_file = dir / "plain" / "out";
+    try {
+        run_layout_cli({"layout", "generate", "no_such_example", "-o", under_file.string()}, null,
+                       null);
+        ADD_FAILURE() << "accepted";
+    } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find(under_file.string()), std::string::npos) << e.what();
+    }
+    // A generate that fails (no such example) after the folder was made removes it.
+    const fs::path made = dir / "a" / "b";
+    EXPECT_THROW(
+        run_layout_cli({"layout", "generate", "no_such_example", "-o", made.string()}, null, null),
+        InputError);
+    EXPECT_FALSE(fs::exists(dir / "a"));
+    std::fclose(null);
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace sylva::layout

@@ -1,0 +1,36 @@
+// The folder a many-tree job writes into, made (or refused) before any work: a batch of
+// trees took minutes before it found that its folder could not be created. Folders it made
+// are removed again unless the job keeps them, so a failed job leaves no empty folder.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "core/signal_cleanup.h"
+
+namespace sylva {
+
+class OutputFolder {
+  public:
+    // Makes `dir` and any missing parents. Throws IoError naming `dir` when something other
+    // than a folder is there or on the way, it cannot be made, or it is not writable.
+    // An empty path is the working folder.
+    explicit OutputFolder(const std::filesystem::path& dir);
+    // Removes the folders it made, when empty (an interrupt does as well: each is
+    // registered with signal_cleanup.h).
+    ~OutputFolder();
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+
+    // The job succeeded: the folders stay.
+    void keep() { made_.clear(), registrations_.clear(); }
+
+  private:
+    void remove_made();
+
+    std::vector<std::filesystem::path> made_;  // outermost first
+    std::vector<std::unique_ptr<TempRegistration>> registrations_;
+};
+
+}  // namespace sylva
