@@ -380,6 +380,9 @@ class Parser {
 }  // namespace
 
 LSystem parse_lsystem(std::string_view text, const Constants& constants) {
+    // Editors on Windows save UTF-8 with a byte order mark; it is no part of the grammar,
+    // and columns on the first line count from after it.
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     return Parser(constants).parse(text);
 }
 

@@ -105,5 +105,21 @@ TEST(HostileGrammar, WordGrowthIsKnownBeforeDerivingAndRefusedEarly) {
     EXPECT_EQ(derive(guarded, {.steps = 10}).size(), 8u);
 }
 
+// Editors on Windows save UTF-8 with a byte order mark: the grammar reads as without it, and
+// an error on the first line counts its column from after the mark.
+TEST(HostileGrammar, AByteOrderMarkAtTheStartIsSkipped) {
+    const std::string bom = "\xEF\xBB\xBF";
+    const LSystem plain = parse_lsystem("axiom: F\nF -> FF\n");
+    const LSystem marked = parse_lsystem(bom + "axiom: F\nF -> FF\n");
+    EXPECT_EQ(marked.axiom.size(), plain.axiom.size());
+    EXPECT_EQ(marked.rules.size(), plain.rules.size());
+    EXPECT_EQ(derive_text(bom + "axiom: F\nF -> FF\n", 3).to_string(),
+              derive_text("axiom: F\nF -> FF\n", 3).to_string());
+    const GrammarError with = error_of(bom + "axiom: F(\n");
+    const GrammarError without = error_of("axiom: F(\n");
+    EXPECT_EQ(with.line(), 1);
+    EXPECT_EQ(with.column(), without.column());
+}
+
 }  // namespace
 }  // namespace sylva
