@@ -193,6 +193,15 @@ void print_forest_help(std::FILE* to) {
     std::fputs(kForestHelp, to);
 }
 
+void print_forest_command_help(const std::string& command, std::FILE* to) {
+    const std::string text = kForestHelp;
+    const std::size_t at = text.find("  sylva " + command + " ");
+    const std::size_t next = text.find("\n  sylva ", at + 1);
+    std::fputs("Usage:\n", to);
+    std::fputs(
+        text.substr(at, next == std::string::npos ? std::string::npos : next + 1 - at).c_str(), to);
+}
+
 int run_batch_command(int argc, char** argv) {
     TreeFlags flags;
     std::string tree_name = "default";

@@ -4,11 +4,15 @@
 #pragma once
 
 #include <cstdio>
+#include <string>
 
 namespace sylva {
 
 // Usage text of both commands, for `sylva --help`.
 void print_forest_help(std::FILE* to);
+
+// The usage of one of them ("batch" or "forest"), for `sylva batch --help`.
+void print_forest_command_help(const std::string& command, std::FILE* to);
 
 // argv[1] is "batch" or "forest". Returns the exit code: 0, or 2 for a usage error (printed
 // here); other errors are thrown as the rest of the CLI throws them (InputError, IoError).

@@ -58,8 +58,11 @@ Usage:
   sylva layout   examples | derive EXAMPLE -o grammar.json |
                  generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
                  (2D layouts from one example, seed 002; see docs/layout.md)
-  sylva --help
+  sylva --help, sylva COMMAND --help
+)";
 
+// The flags of export, derive and skeleton (and the tree flags batch and forest share).
+constexpr const char* kOptions = R"(
   -t NAME|FILE     a built-in template (see `sylva templates`) or a grammar file;
                    default: the built-in default tree
   --set KEY=VALUE  override a parameter (keys below); may be repeated
@@ -284,12 +287,53 @@ TreeTemplate configured_template(const Options& o) {
 
 constexpr const char* kRaiseLimits = "raise the limits with --max-memory MB / --max-seconds S";
 
-void print_help(std::FILE* to) {
-    std::fputs(kHelp, to);
+void print_parameters(std::FILE* to) {
     for (const ParamInfo& p : param_infos())
         std::fprintf(to, "  %-17s %s (%g to %g)\n", std::string(p.key).c_str(),
                      std::string(p.help).c_str(), p.min, p.max);
+}
+
+void print_help(std::FILE* to) {
+    std::fputs(kHelp, to);
+    std::fputs(kOptions, to);
+    print_parameters(to);
     print_forest_help(to);
+}
+
+// `sylva COMMAND --help`: the command's usage lines from kHelp (a line "  sylva COMMAND"
+// and the indented lines under it), then the flags it takes. False for no such command.
+bool print_command_help(const std::string& command, std::FILE* to) {
+    if (command == "batch" || command == "forest") {
+        print_forest_command_help(command, to);
+        std::fputs("\nTree flags, as export takes them:", to);
+        std::fputs(kOptions, to);
+        print_parameters(to);
+        return true;
+    }
+    const std::string text = kHelp, head = "  sylva " + command;
+    std::size_t at = text.find(head + " ");
+    if (at == std::string::npos) at = text.find(head + "\n");
+    if (at == std::string::npos) return false;
+    std::string usage = "Usage:\n";
+    for (std::size_t line = at; line < text.size();) {
+        const std::size_t end = std::min(text.find('\n', line), text.size());
+        const std::string row = text.substr(line, end - line);
+        if (line != at && (row.rfind("  sylva ", 0) == 0 || row.rfind("    ", 0) != 0)) break;
+        usage += row + "\n";
+        line = end + 1;
+    }
+    std::fputs(usage.c_str(), to);
+    if (command == "templates") return true;
+    std::fputs(kOptions, to);
+    print_parameters(to);
+    return true;
+}
+
+// `--help` or `-h` anywhere after the command.
+bool asks_for_help(int argc, char** argv) {
+    for (int i = 2; i < argc; ++i)
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") return true;
+    return false;
 }
 
 // What each part is: "closed", "NOT closed" or its leaf count; the solid parts are checked
@@ -424,6 +468,12 @@ int run_skeleton(const Options& o) {
 }
 
 int run(int argc, char** argv) {
+    // `sylva export --help`: that command's usage (layout prints its own).
+    if (argc >= 3 && asks_for_help(argc, argv) && std::string(argv[1]) != "layout") {
+        if (!print_command_help(argv[1], stdout))
+            throw UsageError("unknown command '" + std::string(argv[1]) + "'");
+        return kOk;
+    }
     // The many-tree commands parse their own flags (app/forest_cli.h).
     if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
     if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);

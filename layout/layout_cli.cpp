@@ -94,15 +94,20 @@ class OutputFolder {
 }  // namespace
 
 int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
+    const char* const synopsis =
+        "usage: sylva layout examples\n"
+        "       sylva layout derive EXAMPLE [--max-graphs N] [--max-vertices N] -o grammar.json\n"
+        "       sylva layout generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/\n"
+        "(docs/layout.md)\n";
     auto usage = [&](const std::string& why) {
-        std::fprintf(err,
-                     "sylva: %s\nusage: sylva layout examples\n       sylva layout derive EXAMPLE "
-                     "-o grammar.json\n"
-                     "       sylva layout generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps "
-                     "K] -o DIR/\n",
-                     why.c_str());
+        std::fprintf(err, "sylva: %s\n%s", why.c_str(), synopsis);
         return 2;
     };
+    for (const std::string& a : args)
+        if (a == "--help" || a == "-h") {
+            std::fputs(synopsis, out);
+            return 0;
+        }
     if (args.size() < 2) return usage("layout needs a subcommand");
     const std::string& sub = args[1];
     if (sub == "examples") {

@@ -75,6 +75,31 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
 }
 
+// Help after a command is that command's usage, exit 0 (it was "unknown option '--help'").
+TEST_F(Cli, HelpAfterACommandPrintsItsUsage) {
+    const Result exporting = run("export --help");
+    EXPECT_EQ(exporting.code, 0) << exporting.output;
+    EXPECT_NE(exporting.output.find("sylva export   [-t NAME|FILE]"), std::string::npos)
+        << exporting.output;
+    EXPECT_NE(exporting.output.find("--budget N"), std::string::npos) << exporting.output;
+    EXPECT_EQ(exporting.output.find("sylva batch"), std::string::npos) << exporting.output;
+    EXPECT_FALSE(fs::exists(path("x.obj")));
+    const Result skeleton = run("skeleton -t oak -h");
+    EXPECT_EQ(skeleton.code, 0) << skeleton.output;
+    EXPECT_NE(skeleton.output.find("sylva skeleton"), std::string::npos) << skeleton.output;
+    const Result batch = run("batch --help");
+    EXPECT_EQ(batch.code, 0) << batch.output;
+    EXPECT_NE(batch.output.find("--count N"), std::string::npos) << batch.output;
+    EXPECT_EQ(batch.output.find("sylva forest"), std::string::npos) << batch.output;
+    const Result forest = run("forest --help");
+    EXPECT_EQ(forest.code, 0) << forest.output;
+    EXPECT_NE(forest.output.find("--tree-spacing"), std::string::npos) << forest.output;
+    const Result layout = run("layout generate --help");
+    EXPECT_EQ(layout.code, 0) << layout.output;
+    EXPECT_NE(layout.output.find("sylva layout generate"), std::string::npos) << layout.output;
+    EXPECT_EQ(run("frobnicate --help").code, 2);
+}
+
 // A budget past the triangle_budget range (0 to 10^7) is a usage error: above about 1e18
 // it overflowed and acted like a budget of 1.
 TEST_F(Cli, ABudgetPastItsRangeIsAUsageErrorNamingTheRange) {
