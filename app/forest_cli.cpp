@@ -276,6 +276,9 @@ int run_forest_command(int argc, char** argv) {
             const std::size_t colon = item.rfind(':');
             if (colon != std::string::npos) {
                 weight = parse_number<double>(flag + " weight", item.substr(colon + 1));
+                if (!(weight > 0.0))
+                    throw UsageError(flag + ": the weight of '" + item.substr(0, colon) +
+                                     "' must be positive, not " + item.substr(colon + 1));
                 item.resize(colon);
             }
             if (item.empty()) throw UsageError(flag + " expects NAME[:WEIGHT],...");
@@ -286,8 +289,35 @@ int run_forest_command(int argc, char** argv) {
     };
     std::string species_file;
     std::string instancing = "nodes";
+    // --area, --ground and --layout each say where to plant: one of them, once.
+    std::string ground_flag;
+    auto where = [&](const std::string& flag) {
+        if (!ground_flag.empty() && ground_flag != flag)
+            throw UsageError(ground_flag + " and " + flag +
+                             " both say where to plant: give one of them");
+        ground_flag = flag;
+    };
+    // A flag's bad value is a usage error (exit 2), whether it is no number or out of range;
+    // the ranges are plan_forest()'s and orchard_rows()'s.
+    auto positive = [](const std::string& flag, const std::string& text) {
+        const double v = parse_number<double>(flag, text);
+        if (!(v > 0.0)) throw UsageError(flag + " must be a positive number, not " + text);
+        return v;
+    };
+    auto non_negative = [](const std::string& flag, const std::string& text) {
+        const double v = parse_number<double>(flag, text);
+        if (!(v >= 0.0)) throw UsageError(flag + " must be 0 or more, not " + text);
+        return v;
+    };
+    auto fraction = [](const std::string& flag, const std::string& text, double hi) {
+        const double v = parse_number<double>(flag, text);
+        if (!(v >= 0.0 && v <= hi))
+            throw UsageError(flag + " must be from 0 to " + figure(hi) + ", not " + text);
+        return v;
+    };
     auto parse = [&](const std::string& arg, const std::function<std::string()>& value) {
         if (flags.parse(arg, value)) return true;
+        if (arg == "--area" || arg == "--ground" || arg == "--layout") where(arg);
         if (arg == "--area") {
             const std::string text = value();
             const std::size_t x = text.find('x');
@@ -309,31 +339,34 @@ int run_forest_command(int argc, char** argv) {
         } else if (arg == "--orchard-species") {
             orchard_species = species_list(arg, value());
         } else if (arg == "--row-spacing") {
-            layout.orchard.row_spacing = parse_number<double>(arg, value());
+            layout.orchard.row_spacing = positive(arg, value());
         } else if (arg == "--tree-spacing") {
-            layout.orchard.tree_spacing = parse_number<double>(arg, value());
+            layout.orchard.tree_spacing = positive(arg, value());
         } else if (arg == "--orchard-margin") {
-            layout.orchard.margin = parse_number<double>(arg, value());
+            layout.orchard.margin = non_negative(arg, value());
         } else if (arg == "--meadow-density") {
-            layout.meadow_density = parse_number<double>(arg, value());
+            layout.meadow_density = non_negative(arg, value());
         } else if (arg == "--species") {
             species = species_list(arg, value());
         } else if (arg == "--species-file") {
             species_file = value();
         } else if (arg == "--variants") {
             settings.variants = parse_number<std::size_t>(arg, value());
+            if (settings.variants < 1 || settings.variants > 1000)
+                throw UsageError("--variants must be 1 to 1000, not " +
+                                 std::to_string(settings.variants));
         } else if (arg == "--spacing") {
-            settings.spacing = parse_number<double>(arg, value());
+            settings.spacing = positive(arg, value());
         } else if (arg == "--density") {
-            settings.density = parse_number<double>(arg, value());
+            settings.density = positive(arg, value());
         } else if (arg == "--trees") {
             settings.trees = parse_number<std::size_t>(arg, value());
         } else if (arg == "--stand-size") {
-            settings.stand_size = parse_number<double>(arg, value());
+            settings.stand_size = positive(arg, value());
         } else if (arg == "--min-age") {
-            settings.min_age = parse_number<double>(arg, value());
+            settings.min_age = fraction(arg, value(), 1.0);
         } else if (arg == "--scale-jitter") {
-            settings.scale_jitter = parse_number<double>(arg, value());
+            settings.scale_jitter = fraction(arg, value(), 0.9);
         } else if (arg == "--instancing") {
             instancing = value();
             if (instancing != "nodes" && instancing != "gpu")
@@ -345,6 +378,8 @@ int run_forest_command(int argc, char** argv) {
     };
     return with_flags(argc, argv, parse, [&] {
         if (flags.output.empty()) throw UsageError("forest needs -o FOREST.glb");
+        if (settings.density && settings.trees)
+            throw UsageError("--density and --trees both say how many trees: give one of them");
         if (flags.format && flags.format->name != "glb")
             throw UsageError("forest writes a .glb scene; --format must be glb");
         if (!species_file.empty()) {

@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <system_error>
+#include <type_traits>
 #include <vector>
 
 #include "core/errors.h"
@@ -34,7 +36,9 @@ bool is_grammar_file(const std::string& path) {
     return read_text(path).find("\"sylva-layout-grammar\"") != std::string::npos;
 }
 
-long long parse_int(const std::string& flag, const std::string& value, long long lo, long long hi) {
+// A flag's whole number in lo..hi, or nothing: a bad value is a usage error (exit 2), as
+// every other flag's.
+std::optional<long long> parse_int(const std::string& value, long long lo, long long hi) {
     std::size_t used = 0;
     long long v = 0;
     try {
@@ -42,10 +46,7 @@ long long parse_int(const std::string& flag, const std::string& value, long long
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != value.size() || v < lo || v > hi)
-        throw InputError("expected an integer in " + std::to_string(lo) + ".." +
-                             std::to_string(hi) + ", got '" + value + "'",
-                         {flag});
+    if (value.empty() || used != value.size() || v < lo || v > hi) return std::nullopt;
     return v;
 }
 
@@ -103,6 +104,19 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         std::fprintf(err, "sylva: %s\n%s", why.c_str(), synopsis);
         return 2;
     };
+    // Sets `*to` from the flag's value; false (after printing why) when it is not a whole
+    // number in lo..hi.
+    auto whole = [&](const std::string& flag, const std::string& value, long long lo, long long hi,
+                     auto* to) {
+        const std::optional<long long> v = parse_int(value, lo, hi);
+        if (!v) {
+            usage(flag + " expects a whole number from " + std::to_string(lo) + " to " +
+                  std::to_string(hi) + ", not '" + value + "'");
+            return false;
+        }
+        *to = static_cast<std::remove_pointer_t<decltype(to)>>(*v);
+        return true;
+    };
     for (const std::string& a : args)
         if (a == "--help" || a == "-h") {
             std::fputs(synopsis, out);
@@ -134,20 +148,21 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         } else if (a == "--count") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
-            count = parse_int(a, *v, 1, 10000);
+            if (!whole(a, *v, 1, 10000, &count)) return 2;
         } else if (a == "--seed") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
-            seed = static_cast<std::uint64_t>(parse_int(a, *v, 0, 9223372036854775807LL));
+            if (!whole(a, *v, 0, 9223372036854775807LL, &seed)) return 2;
         } else if (a == "--steps") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
-            steps = parse_int(a, *v, 0, 1000);
+            if (!whole(a, *v, 0, 1000, &steps)) return 2;
         } else if (a == "--max-graphs" || a == "--max-vertices") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
-            (a == "--max-graphs" ? derive.max_graphs : derive.max_vertices) =
-                static_cast<int>(parse_int(a, *v, 1, 1000000));
+            if (!whole(a, *v, 1, 1000000,
+                       a == "--max-graphs" ? &derive.max_graphs : &derive.max_vertices))
+                return 2;
         } else if (!a.empty() && a[0] == '-') {
             return usage("unknown option '" + a + "'");
         } else if (input.empty()) {

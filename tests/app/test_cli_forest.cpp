@@ -90,7 +90,7 @@ TEST_F(CliForest, ForestWritesSceneAndPlacements) {
     EXPECT_NE(csv.find(",pine,pine_v0,"), std::string::npos);
     EXPECT_TRUE(fs::exists(path("f.placements.json")));
     EXPECT_EQ(run("forest --area 30 -o " + path("g.glb")).code, 2);
-    EXPECT_EQ(run("forest --species spruce:0 -o " + path("g.glb")).code, 3);
+    EXPECT_EQ(run("forest --species spruce:0 -o " + path("g.glb")).code, 2);  // a flag's value
     { std::ofstream(path("ground.json")) << "{\"polygons\": [\n  {\"points\": 3}\n]}"; }
     const Result bad = run("forest --ground " + path("ground.json") + " -o " + path("g.glb"));
     EXPECT_EQ(bad.code, 3);
@@ -113,7 +113,7 @@ TEST_F(CliForest, ForestPlantsALayoutPlan) {
     EXPECT_EQ(csv.find(",meadow\n"), std::string::npos);
     EXPECT_EQ(run("forest --layout-scale 3 -o " + path("g.glb")).code, 2);  // without --layout
     EXPECT_EQ(run("forest --layout " + plan + " --layout-scale 0 -o " + path("g.glb")).code, 2);
-    EXPECT_EQ(run("forest --layout " + plan + " --tree-spacing -1 -o " + path("g.glb")).code, 3);
+    EXPECT_EQ(run("forest --layout " + plan + " --tree-spacing -1 -o " + path("g.glb")).code, 2);
     EXPECT_FALSE(fs::exists(path("g.glb")));
 }
 
@@ -198,6 +198,48 @@ TEST_F(CliForest, OutputFoldersAreRefusedFirstAndNotLeftBehind) {
     const Result bad = run("batch -t " + path("bad.txt") + " --count 2 -o " + path("new/b"), 60);
     EXPECT_EQ(bad.code, 3) << bad.output;
     EXPECT_FALSE(fs::exists(path("new"))) << bad.output;
+}
+
+// A flag's bad value is a usage error (exit 2) whether it is no number or out of range
+// (--spacing abc was 2, --spacing 0 was 3), and flags that say the same thing twice over
+// are refused naming both (--area with --layout planted the layout silently).
+TEST_F(CliForest, ForestFlagsAreUsageErrorsNamingTheFlags) {
+    const std::string plan = std::string(SYLVA_SOURCE_DIR) + "/tests/forest/data/farm_plan.json";
+    const std::string out = " -o " + path("g.glb");
+    for (const std::string bad :
+         {"--spacing abc", "--spacing 0", "--spacing -4", "--density 0", "--stand-size 0",
+          "--min-age 2", "--scale-jitter 1", "--variants 0", "--row-spacing 0", "--tree-spacing 0",
+          "--orchard-margin -1", "--meadow-density -1", "--species oak:-1"}) {
+        const Result r = run("forest " + bad + out);
+        EXPECT_EQ(r.code, 2) << bad << ": " << r.output;
+        EXPECT_NE(r.output.find(bad.substr(0, bad.find(' '))), std::string::npos) << r.output;
+    }
+    const Result area_layout = run("forest --area 30x20 --layout " + plan + out);
+    EXPECT_EQ(area_layout.code, 2) << area_layout.output;
+    EXPECT_NE(area_layout.output.find("--area and --layout"), std::string::npos)
+        << area_layout.output;
+    const Result ground_area = run("forest --ground " + plan + " --area 30x20" + out);
+    EXPECT_EQ(ground_area.code, 2) << ground_area.output;
+    EXPECT_NE(ground_area.output.find("--ground and --area"), std::string::npos)
+        << ground_area.output;
+    const Result count = run("forest --density 50 --trees 10" + out);
+    EXPECT_EQ(count.code, 2) << count.output;
+    EXPECT_NE(count.output.find("--density and --trees"), std::string::npos) << count.output;
+    EXPECT_FALSE(fs::exists(path("g.glb")));
+}
+
+// Every usage error of `sylva layout` exits 2, as the other commands' do (bad flag values
+// exited 3).
+TEST_F(CliForest, LayoutUsageErrorsExitTwo) {
+    const std::string out = " -o " + path("l");
+    for (const std::string bad : {"generate village --count abc", "generate village --count 0",
+                                  "generate village --steps -1", "generate village --seed x",
+                                  "derive village --max-graphs 0", "generate village --bogus",
+                                  "generate", "frobnicate village"}) {
+        const Result r = run("layout " + bad + out);
+        EXPECT_EQ(r.code, 2) << bad << ": " << r.output;
+    }
+    EXPECT_FALSE(fs::exists(path("l")));
 }
 
 }  // namespace
