@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/forest_cli.h"
+#include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
@@ -50,7 +51,7 @@ Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
                  [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
                  -o OUT.{obj,glb,ply}
-  sylva derive   [-t NAME|FILE] [--steps N] [--seed N]
+  sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [-o WORD.txt]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
   sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
@@ -445,6 +446,7 @@ int run_export(const Options& o) {
 }
 
 int run_derive(const Options& o) {
+    if (!o.output.empty()) output_target(o.output);  // refused before the work, as export's
     const TreeTemplate tree = configured_template(o);
     if (tree.growth != lsystem_growth.name)
         throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
@@ -452,7 +454,12 @@ int run_derive(const Options& o) {
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     std::string text = derive_word(tree).to_string();
     text.push_back('\n');
-    std::fwrite(text.data(), 1, text.size(), stdout);
+    if (o.output.empty()) {
+        std::fwrite(text.data(), 1, text.size(), stdout);
+    } else {
+        write_file_atomically(o.output, [&](std::ostream& out) { out << text; });
+        std::printf("wrote %s: %zu characters\n", o.output.c_str(), text.size() - 1);
+    }
     return kOk;
 }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -73,6 +74,21 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("export --bogus -o x.obj").code, 2);
     EXPECT_EQ(run("export -o " + path("x.fbx")).code, 2);  // no such format
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
+}
+
+// derive takes -o like every other command (it was ignored and the word went to stdout).
+TEST_F(Cli, DeriveWritesTheWordToOutput) {
+    const Result printed = run("derive -t spruce --steps 2");
+    ASSERT_EQ(printed.code, 0) << printed.output;
+    const Result written = run("derive -t spruce --steps 2 -o " + path("word.txt"));
+    ASSERT_EQ(written.code, 0) << written.output;
+    std::ifstream in(path("word.txt"));
+    std::stringstream word;
+    word << in.rdbuf();
+    EXPECT_EQ(word.str(), printed.output);
+    EXPECT_EQ(written.output.find(word.str()), std::string::npos);  // not on stdout as well
+    fs::create_directories(path("folder"));
+    EXPECT_EQ(run("derive -t spruce -o " + path("folder")).code, 4);
 }
 
 // Help after a command is that command's usage, exit 0 (it was "unknown option '--help'").
