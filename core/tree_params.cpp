@@ -316,15 +316,16 @@ const Field& known_field(std::string_view key) {
 void set_param(TreeParams& params, std::string_view key, double value) {
     const Field& f = known_field(key);
     const ParamInfo& info = f.info;
-    std::ostringstream shown;
-    shown << value;
+    // The shortest text that reads back as `value`: 10.0000000001 is not shown as "10".
+    char digits[32];
+    const std::string shown(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
     if (!std::isfinite(value) || value < info.min || value > info.max)
-        throw InputError("parameter " + std::string(key) + " = " + shown.str() +
-                         " is out of range " + range_text(info));
+        throw InputError("parameter " + std::string(key) + " = " + shown + " is out of range " +
+                         range_text(info));
     if (info.integer) {
         if (value != std::floor(value))
             throw InputError("parameter " + std::string(key) + " must be a whole number, not " +
-                             shown.str());
+                             shown);
         params.*(f.integer) = static_cast<int>(value);
     } else {
         params.*(f.real) = value;

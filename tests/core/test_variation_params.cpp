@@ -46,6 +46,25 @@ TEST(VariationParams, OutOfRangeValuesNameTheKey) {
     EXPECT_EQ(p.bend, 30.0);
 }
 
+// The value in a refusal reads back as what was given: "not 10" for 10.0000000001 would
+// say nothing.
+TEST(VariationParams, ARefusedValueIsShownAsGiven) {
+    TreeParams p;
+    try {
+        set_param(p, "generations", 10.0000000001);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("not 10.0000000001"), std::string::npos) << e.what();
+    }
+    try {
+        set_param(p, "age", 1.0000001);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("= 1.0000001 is out of range"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(ColorVariation, ZeroKeepsTheColoursAndSeedsDiffer) {
     const PartColors base;
     const PartColors same = varied_colors(base, 0.0, 99);
