@@ -14,7 +14,7 @@
 #include "core/signal_cleanup.h"
 #include "export/export.h"
 #include "export/glb_writer.h"
-#include "forest/output_folder.h"
+#include "core/output_folder.h"
 #include "forest/variation.h"
 
 namespace sylva {

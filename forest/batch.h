@@ -81,7 +81,7 @@ struct BatchResult {
 
 // Generates the shard's trees and writes them and the manifest into `dir`, made (or refused
 // with IoError naming it) before any tree is generated and removed again on failure
-// (forest/output_folder.h). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N],
+// (core/output_folder.h). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N],
 // "format", "jittered": [keys], "items": [{"index", "file", "seed", "parameters": {key: value},
 // "triangles"}]}, where "parameters" are the jittered keys' values (with the template and
 // `--set` they reproduce the tree: `sylva export -t T --seed SEED --set KEY=VALUE...`).

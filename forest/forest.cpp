@@ -20,7 +20,7 @@
 #include "core/noise.h"
 #include "core/random.h"
 #include "core/stopwatch.h"
-#include "forest/output_folder.h"
+#include "core/output_folder.h"
 #include "forest/poisson_disk.h"
 #include "forest/variation.h"
 

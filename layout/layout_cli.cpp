@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/input_file.h"
+#include "core/output_folder.h"
 #include "layout/graph_grammar.h"
 #include "layout/positions.h"
 
@@ -49,48 +50,6 @@ std::optional<long long> parse_int(const std::string& value, long long lo, long 
     if (value.empty() || used != value.size() || v < lo || v > hi) return std::nullopt;
     return v;
 }
-
-// The folder `generate` writes into, made (or refused, naming it) before any layout is, and
-// removed again if the job fails (forest/output_folder.h does the same for batches; layout
-// does not link forest).
-class OutputFolder {
-  public:
-    explicit OutputFolder(const std::filesystem::path& dir) {
-        namespace fs = std::filesystem;
-        std::vector<fs::path> missing;  // outermost first
-        std::error_code ec;
-        for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
-            const fs::file_status status = fs::status(p, ec);
-            if (fs::is_directory(status)) break;
-            if (fs::exists(status))
-                throw IoError("cannot write into '" + dir.string() + "': '" + p.string() +
-                                  "' is not a folder",
-                              dir);
-            missing.insert(missing.begin(), p);
-            if (p == p.parent_path()) break;
-        }
-        for (const fs::path& p : missing) {
-            if (!fs::create_directory(p, ec) && ec) {
-                remove_made();
-                throw IoError("cannot write into '" + dir.string() + "': " + ec.message(), dir);
-            }
-            made_.push_back(p);
-        }
-    }
-    ~OutputFolder() { remove_made(); }
-    OutputFolder(const OutputFolder&) = delete;
-    OutputFolder& operator=(const OutputFolder&) = delete;
-    void keep() { made_.clear(); }
-
-  private:
-    void remove_made() {
-        std::error_code ec;
-        for (auto p = made_.rbegin(); p != made_.rend(); ++p)
-            if (std::filesystem::is_empty(*p, ec)) std::filesystem::remove(*p, ec);
-        made_.clear();
-    }
-    std::vector<std::filesystem::path> made_;
-};
 
 }  // namespace
 

@@ -1,4 +1,4 @@
-#include "forest/output_folder.h"
+#include "core/output_folder.h"
 
 #include <unistd.h>
 

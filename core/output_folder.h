@@ -1,6 +1,6 @@
-// The folder a many-tree job writes into, made (or refused) before any work: a batch of
-// trees took minutes before it found that its folder could not be created. Folders it made
-// are removed again unless the job keeps them, so a failed job leaves no empty folder.
+// The folder a job writes into (a batch, a forest, layouts), made (or refused) before any
+// work, so a job does not find out at its end that it cannot write. Folders it made are
+// removed again unless the job keeps them, so a failed job leaves no empty folder.
 #pragma once
 
 #include <filesystem>
