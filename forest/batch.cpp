@@ -11,10 +11,10 @@
 #include "core/data_paths.h"
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "core/output_folder.h"
 #include "core/signal_cleanup.h"
 #include "export/export.h"
 #include "export/glb_writer.h"
-#include "core/output_folder.h"
 #include "forest/variation.h"
 
 namespace sylva {

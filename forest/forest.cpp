@@ -18,9 +18,9 @@
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/noise.h"
+#include "core/output_folder.h"
 #include "core/random.h"
 #include "core/stopwatch.h"
-#include "core/output_folder.h"
 #include "forest/poisson_disk.h"
 #include "forest/variation.h"
 
