@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 
@@ -63,12 +64,24 @@ class Reader {
         if (!table) fail(node, "'params' must be a table");
         for (const auto& [key, value] : *table) {
             if (key.str() == "seed") {
-                // Read as an integer node only: value<int64_t>() would cast a float
-                // (seed = 1e308) to an integer first, which is undefined.
+                // An integer node (value<int64_t>() would cast a float, seed = 1e308, to an
+                // integer first, which is undefined), or the digits of a seed above TOML's
+                // largest integer, 2^63 - 1, as template_file_text() writes those.
                 const toml::value<int64_t>* seed = value.as_integer();
-                if (!seed || seed->get() < 0)
-                    fail(&value, "[params] seed must be a whole number, 0 or more");
-                params.seed = static_cast<std::uint64_t>(seed->get());
+                const toml::value<std::string>* digits = value.as_string();
+                std::uint64_t read = 0;
+                if (seed && seed->get() >= 0) {
+                    read = static_cast<std::uint64_t>(seed->get());
+                } else if (digits) {
+                    const std::string& text = digits->get();
+                    const auto [end, error] =
+                        std::from_chars(text.data(), text.data() + text.size(), read);
+                    if (text.empty() || error != std::errc() || end != text.data() + text.size())
+                        fail(&value, "[params] seed must be a whole number from 0 to 2^64 - 1");
+                } else {
+                    fail(&value, "[params] seed must be a whole number from 0 to 2^64 - 1");
+                }
+                params.seed = read;
                 continue;
             }
             try {
@@ -346,7 +359,10 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
         else
             put("params", info.key, toml_float(value));
     }
-    put("params", "seed", std::to_string(tree.params.seed));
+    // TOML's integers end at 2^63 - 1; a larger seed (a variant's, a batch's) goes as digits.
+    const bool fits = tree.params.seed <= static_cast<std::uint64_t>(INT64_MAX);
+    put("params", "seed",
+        fits ? std::to_string(tree.params.seed) : quoted(std::to_string(tree.params.seed)));
     out << "\n";
     if (auto above = comments.above.find("[colors]"); above != comments.above.end())
         out << above->second;

@@ -28,10 +28,11 @@ TEST(HostileTemplate, AnIntegerNoDoubleHoldsIsRejectedWithKeyAndLine) {
     }
 }
 
-// A seed must be a TOML integer: a float is refused before any cast (casting seed = 1e308 to
-// an integer would be undefined), naming the key and line.
+// A seed must be a TOML integer or a string of its digits: a float is refused before any
+// cast (casting seed = 1e308 to an integer would be undefined), naming the key and line.
 TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
-    for (const char* seed : {"1e308", "2.5", "-1", "\"7\""}) {
+    for (const char* seed :
+         {"1e308", "2.5", "-1", "\"abc\"", "\"-7\"", "\"\"", "\"18446744073709551616\""}) {
         const std::string text =
             std::string("name = \"x\"\ngrammar = \"axiom: F\"\n[params]\nseed = ") + seed + "\n";
         try {
@@ -47,6 +48,17 @@ TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
         parse_template_file("name = \"x\"\ngrammar = \"axiom: F\"\n[params]\nseed = 42\n", "x.toml")
             .params.seed,
         42u);
+}
+
+// A variant's seed above TOML's largest integer (2^63 - 1) saves and reopens as it was.
+TEST(HostileTemplate, ASeedAboveTheLargestTomlIntegerSavesAndReopens) {
+    for (const std::uint64_t seed : {std::uint64_t{13757245211066428519u}, ~std::uint64_t{0},
+                                     std::uint64_t{9223372036854775807u}, std::uint64_t{0}}) {
+        TreeTemplate t = parse_template_file("name = \"x\"\ngrammar = \"axiom: F\"\n", "x.toml");
+        t.params.seed = seed;
+        const TreeTemplate back = parse_template_file(template_file_text(t), "back.toml");
+        EXPECT_EQ(back.params.seed, seed);
+    }
 }
 
 TEST(HostileTemplate, ATreeBeyondAnyGridIsBadInputNotAnInternalError) {
