@@ -38,30 +38,54 @@ enum Column {
 // and every ' ', '_', '-' and '.'.
 const std::map<std::string, Column>& column_names() {
     static const std::map<std::string, Column> names = {
-        {"radius", kRadius},        {"rad", kRadius},
-        {"r", kRadius},             {"unmodradius", kRadius},
-        {"length", kLength},        {"len", kLength},
-        {"startx", kStartX},        {"starty", kStartY},
-        {"startz", kStartZ},        {"startpointx", kStartX},
-        {"startpointy", kStartY},   {"startpointz", kStartZ},
-        {"x1", kStartX},            {"y1", kStartY},
-        {"z1", kStartZ},            {"axisx", kAxisX},
-        {"axisy", kAxisY},          {"axisz", kAxisZ},
-        {"axisdirectionx", kAxisX}, {"axisdirectiony", kAxisY},
-        {"axisdirectionz", kAxisZ}, {"directionx", kAxisX},
-        {"directiony", kAxisY},     {"directionz", kAxisZ},
-        {"dx", kAxisX},             {"dy", kAxisY},
-        {"dz", kAxisZ},             {"endx", kEndX},
-        {"endy", kEndY},            {"endz", kEndZ},
-        {"endpointx", kEndX},       {"endpointy", kEndY},
-        {"endpointz", kEndZ},       {"x2", kEndX},
-        {"y2", kEndY},              {"z2", kEndZ},
-        {"parent", kParent},        {"parentid", kParent},
-        {"parentcylinder", kParent}, {"id", kId},
-        {"cylinderid", kId},        {"cylid", kId},
-        {"cylinder", kId},          {"extension", kExtension},
-        {"extensionid", kExtension}, {"next", kExtension},
-        {"branchorder", kOrder},    {"order", kOrder},
+        {"radius", kRadius},
+        {"rad", kRadius},
+        {"r", kRadius},
+        {"unmodradius", kRadius},
+        {"length", kLength},
+        {"len", kLength},
+        {"startx", kStartX},
+        {"starty", kStartY},
+        {"startz", kStartZ},
+        {"startpointx", kStartX},
+        {"startpointy", kStartY},
+        {"startpointz", kStartZ},
+        {"x1", kStartX},
+        {"y1", kStartY},
+        {"z1", kStartZ},
+        {"axisx", kAxisX},
+        {"axisy", kAxisY},
+        {"axisz", kAxisZ},
+        {"axisdirectionx", kAxisX},
+        {"axisdirectiony", kAxisY},
+        {"axisdirectionz", kAxisZ},
+        {"directionx", kAxisX},
+        {"directiony", kAxisY},
+        {"directionz", kAxisZ},
+        {"dx", kAxisX},
+        {"dy", kAxisY},
+        {"dz", kAxisZ},
+        {"endx", kEndX},
+        {"endy", kEndY},
+        {"endz", kEndZ},
+        {"endpointx", kEndX},
+        {"endpointy", kEndY},
+        {"endpointz", kEndZ},
+        {"x2", kEndX},
+        {"y2", kEndY},
+        {"z2", kEndZ},
+        {"parent", kParent},
+        {"parentid", kParent},
+        {"parentcylinder", kParent},
+        {"id", kId},
+        {"cylinderid", kId},
+        {"cylid", kId},
+        {"cylinder", kId},
+        {"extension", kExtension},
+        {"extensionid", kExtension},
+        {"next", kExtension},
+        {"branchorder", kOrder},
+        {"order", kOrder},
     };
     return names;
 }
@@ -169,8 +193,8 @@ ExampleTree parse_cylinder_csv(std::string_view text, const std::string& source,
         }
     } else {
         // TreeQSM's order.
-        const Column order[] = {kRadius, kLength, kStartX, kStartY, kStartZ,  kAxisX,
-                                kAxisY,  kAxisZ,  kParent, kExtension};
+        const Column order[] = {kRadius, kLength, kStartX, kStartY, kStartZ,
+                                kAxisX,  kAxisY,  kAxisZ,  kParent, kExtension};
         for (int c = 0; c < 10; ++c) column[order[c]] = c;
         column[kOrder] = 11;
     }
@@ -268,9 +292,9 @@ ExampleTree parse_cylinder_csv(std::string_view text, const std::string& source,
     tree.format = "cylinder csv";
     for (std::size_t i = 0; i < rows.size(); ++i) {
         Segment s = rows[i].segment;
-        const bool none = has_ids ? (rows[i].parent < 0 || !index_of.count(rows[i].parent)) &&
-                                        rows[i].parent <= 0
-                                  : rows[i].parent <= 0;
+        const bool none =
+            has_ids ? (rows[i].parent < 0 || !index_of.count(rows[i].parent)) && rows[i].parent <= 0
+                    : rows[i].parent <= 0;
         if (none) {
             s.parent = -1;
         } else {

@@ -150,11 +150,11 @@ void finish_example_tree(ExampleTree& tree, const std::string& source) {
         sorted[i] = s;
         places[i] = std::move(tree.places[from]);
         const int c = tree.continuation[from];
-        continuation[i] = c >= 0 && c < static_cast<int>(count) &&
-                                  segments[static_cast<std::size_t>(c)].parent ==
-                                      static_cast<int>(from)
-                              ? new_index[static_cast<std::size_t>(c)]
-                              : -1;
+        continuation[i] =
+            c >= 0 && c < static_cast<int>(count) &&
+                    segments[static_cast<std::size_t>(c)].parent == static_cast<int>(from)
+                ? new_index[static_cast<std::size_t>(c)]
+                : -1;
     }
     segments = std::move(sorted);
     tree.places = std::move(places);

@@ -64,14 +64,16 @@ std::string fit_report_text(const FitReport& r) {
                   r.regrown.segments,
                   percent(double(r.example.segments), double(r.regrown.segments)).c_str());
     out += line;
-    std::snprintf(line, sizeof line, "    total length  %.2f -> %.2f m (%s)\n", r.example.total_length,
-                  r.regrown.total_length, percent(r.example.total_length, r.regrown.total_length).c_str());
+    std::snprintf(line, sizeof line, "    total length  %.2f -> %.2f m (%s)\n",
+                  r.example.total_length, r.regrown.total_length,
+                  percent(r.example.total_length, r.regrown.total_length).c_str());
     out += line;
     std::snprintf(line, sizeof line, "    height        %.2f -> %.2f m (%s)\n", r.example.height,
                   r.regrown.height, percent(r.example.height, r.regrown.height).c_str());
     out += line;
-    std::snprintf(line, sizeof line, "    crown width   %.2f -> %.2f m (%s)\n", r.example.crown_width,
-                  r.regrown.crown_width, percent(r.example.crown_width, r.regrown.crown_width).c_str());
+    std::snprintf(line, sizeof line, "    crown width   %.2f -> %.2f m (%s)\n",
+                  r.example.crown_width, r.regrown.crown_width,
+                  percent(r.example.crown_width, r.regrown.crown_width).c_str());
     out += line;
     out += "    per depth    ";
     const std::size_t depths = std::max(r.example.per_depth.size(), r.regrown.per_depth.size());
@@ -82,7 +84,8 @@ std::string fit_report_text(const FitReport& r) {
         out += line;
     }
     out += "\n";
-    std::snprintf(line, sizeof line, "    hausdorff     %.3f m (%.1f %% of the height)\n", r.hausdorff,
+    std::snprintf(line, sizeof line, "    hausdorff     %.3f m (%.1f %% of the height)\n",
+                  r.hausdorff,
                   r.example.height > 0.0 ? 100.0 * r.hausdorff / r.example.height : 0.0);
     out += line;
     if (!r.generalised.empty()) out += "  generalised:\n";
@@ -100,20 +103,20 @@ std::string fit_report_json(const FitReport& r) {
                               {"crown_width", f.crown_width},
                               {"per_depth", f.per_depth}};
     };
-    nlohmann::json doc{{"format", "sylva-infer-report"},
-                       {"version", 1},
-                       {"rules", r.rules},
-                       {"modules", r.modules},
-                       {"max_rules", r.max_rules},
-                       {"within_rule_limit", r.within_rule_limit},
-                       {"segments_per_step", r.segments_per_step},
-                       {"example", figures(r.example)},
-                       {"regrown", figures(r.regrown)},
-                       {"hausdorff", r.hausdorff},
-                       {"hausdorff_over_height",
-                        r.example.height > 0.0 ? r.hausdorff / r.example.height : 0.0},
-                       {"generalised", r.generalised},
-                       {"dropped", r.dropped}};
+    nlohmann::json doc{
+        {"format", "sylva-infer-report"},
+        {"version", 1},
+        {"rules", r.rules},
+        {"modules", r.modules},
+        {"max_rules", r.max_rules},
+        {"within_rule_limit", r.within_rule_limit},
+        {"segments_per_step", r.segments_per_step},
+        {"example", figures(r.example)},
+        {"regrown", figures(r.regrown)},
+        {"hausdorff", r.hausdorff},
+        {"hausdorff_over_height", r.example.height > 0.0 ? r.hausdorff / r.example.height : 0.0},
+        {"generalised", r.generalised},
+        {"dropped", r.dropped}};
     return doc.dump(1) + "\n";
 }
 

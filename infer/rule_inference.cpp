@@ -201,6 +201,9 @@ struct Module {
     bool by_share = false;
     double share = 1.0;
     int nodes = 0;
+    // Nodes without branches at the base of every axis (a bare stretch), drawn by a head rule.
+    int bare = 0;
+    double head_ratio = 1.0;  // the first branched segment's length over the axis's first
 };
 
 // The phase of an axis: its first lateral's azimuth, moved back to node 0.
@@ -227,6 +230,29 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
     Mean bend_pitch, drop;
     Ratio length_ratio, width_ratio;
     int non_tips = 0;
+    // The bare stretch: leading nodes without laterals, where most branched axes agree.
+    std::map<int, int> leading;
+    int branched = 0;
+    for (int a : axes) {
+        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
+        for (std::size_t j = 0; j < axis.segments.size(); ++j)
+            if (!laterals_of(g, axis.segments[j]).empty()) {
+                ++leading[static_cast<int>(j)];
+                ++branched;
+                break;
+            }
+    }
+    for (const auto& [count, n] : leading)
+        if (count > 0 && n * 10 >= branched * 7) mod.bare = count;
+    Ratio head_ratio;
+    for (int a : axes) {
+        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
+        if (mod.bare > 0 && static_cast<int>(axis.segments.size()) > mod.bare)
+            head_ratio.add(m.length[static_cast<std::size_t>(
+                               axis.segments[static_cast<std::size_t>(mod.bare)])],
+                           m.length[static_cast<std::size_t>(axis.segments[0])]);
+    }
+    mod.head_ratio = head_ratio.mean();
     for (int a : axes) {
         const Axis& axis = g.axes[static_cast<std::size_t>(a)];
         double previous_first = 0.0;
@@ -235,6 +261,7 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             const int s = axis.segments[j];
             const std::size_t si = static_cast<std::size_t>(s);
             if (axis.parent_segment < 0 && static_cast<int>(j) < skip_root_nodes) continue;
+            if (static_cast<int>(j) < mod.bare) continue;
             ++mod.nodes;
             const int next = g.continuation[si];
             if (next >= 0) {
@@ -245,6 +272,7 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
                 width_ratio.add(m.width[static_cast<std::size_t>(next)], m.width[si]);
             }
             const std::vector<int> lat = laterals_of(g, s);
+            if (static_cast<int>(j) < mod.bare) continue;
             if (g.children[si].empty()) {
                 have_previous = false;
                 continue;
@@ -356,6 +384,7 @@ void fit_as_lateral(Module& mod, const Module& parent, const BranchGraph& g, con
 
 bool similar(const Module& a, const Module& b) {
     if (a.slots.size() != b.slots.size() || a.ks.size() != b.ks.size()) return false;
+    if (a.bare != b.bare) return false;
     if (a.phase_relative != b.phase_relative || a.cap != b.cap || a.by_share != b.by_share)
         return false;
     if (std::abs(wrap(a.phase - b.phase)) > 20.0) return false;
@@ -392,8 +421,34 @@ struct Writer {
     int unroll = 1;
 
     std::string name(int module) const { return std::string(1, kLetters[module]); }
+    // The module an axis starts with: its head rule when it has a bare stretch.
+    std::string entry(int module) const {
+        if (modules[static_cast<std::size_t>(module)].bare == 0) return name(module);
+        return std::string(1, static_cast<char>(std::tolower(kLetters[module])));
+    }
 
-    void define(const std::string& key, double value, double lo, double hi, const std::string& help) {
+    // The head rule: the bare stretch in one rewrite, then the axis module.
+    std::string head(int k) const {
+        const Module& mod = modules[static_cast<std::size_t>(k)];
+        const std::string id = std::to_string(k);
+        std::string out = entry(k) + "(n,m,l,w,p) : n > 0 -> ";
+        for (int j = 0; j < mod.bare; ++j) {
+            const std::string along = j == 0 ? "" : "*lr" + id + "^" + std::to_string(j);
+            const std::string wider =
+                j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
+            const std::string gate = j == 0 ? "" : "*(n>" + std::to_string(j) + ")";
+            out += "!(w" + wider + ")F(l" + along + gate + ")";
+            if (mod.bend.pitch > 0.0)
+                out += "/(" + num(mod.bend.az) + ")&(" + num(mod.bend.pitch) + gate + ")$";
+        }
+        const std::string b = std::to_string(mod.bare);
+        out += name(k) + "(n-" + b + ",m-" + b + ",l*" + num(mod.head_ratio) + ",w*" +
+               num(mod.width_ratio) + "^" + b + ",p+" + b + "*dv" + id + ")";
+        return out;
+    }
+
+    void define(const std::string& key, double value, double lo, double hi,
+                const std::string& help) {
         char line[256];
         std::snprintf(line, sizeof line, "#define %-5s %-9s # [%s, %s] %s", key.c_str(),
                       num(value).c_str(), num(lo).c_str(), num(hi).c_str(), help.c_str());
@@ -403,7 +458,8 @@ struct Writer {
     // The lateral's call for slot i of module `k` at unrolled node j.
     std::string lateral(int k, std::size_t i, int j, bool stochastic_slots) const {
         const Module& mod = modules[static_cast<std::size_t>(k)];
-        const Module& child = modules[static_cast<std::size_t>(child_of[static_cast<std::size_t>(k)])];
+        const Module& child =
+            modules[static_cast<std::size_t>(child_of[static_cast<std::size_t>(k)])];
         const Slot& slot = mod.slots[i];
         const std::string id = std::to_string(k);
         std::string az = j == 0 ? "p" : "p+" + std::to_string(j) + "*dv" + id;
@@ -421,13 +477,16 @@ struct Writer {
         if (stochastic_slots && slot.chance < 0.999)
             count = "(" + count + ")*(rand(0,1)<" + num(slot.chance) + ")";
         const std::string along = j == 0 ? "" : "*lr" + id + "^" + std::to_string(j);
-        const std::string wider = j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
-        std::string length = "l" + along + "*" + (i == 0 ? "cl" + id : "cl" + id + "*" + num(slot.length / mod.slots[0].length));
+        const std::string wider =
+            j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
+        std::string length =
+            "l" + along + "*" +
+            (i == 0 ? "cl" + id : "cl" + id + "*" + num(slot.length / mod.slots[0].length));
         std::string width = "w" + wider + "*" + num(slot.width);
         const std::string phase =
             child.phase_relative ? plus("(" + az + ")", child.phase) : num(child.phase);
-        return "[/(" + az + ")&(" + angle + ")$" + name(child_of[static_cast<std::size_t>(k)]) + "(" +
-               count + "," + budget + "," + length + "," + width + "," + phase + ")]";
+        return "[/(" + az + ")&(" + angle + ")$" + entry(child_of[static_cast<std::size_t>(k)]) +
+               "(" + count + "," + budget + "," + length + "," + width + "," + phase + ")]";
     }
 
     std::string body(int k, int laterals, bool stochastic_slots) const {
@@ -436,7 +495,8 @@ struct Writer {
         std::string out;
         for (int j = 0; j < unroll; ++j) {
             const std::string along = j == 0 ? "" : "*lr" + id + "^" + std::to_string(j);
-            const std::string wider = j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
+            const std::string wider =
+                j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
             const std::string gate = unroll > 1 ? "*(n>" + std::to_string(j) + ")" : "";
             out += "!(w" + wider + ")F(l" + along + gate + ")";
             for (int i = 0; i < laterals; ++i)
@@ -459,7 +519,8 @@ int steps_needed(const BranchGraph& g, int unroll, int literal_axis) {
     int most = 0;
     for (const Axis& axis : g.axes) {
         int start = 1;
-        if (axis.parent_segment >= 0) start = step[static_cast<std::size_t>(axis.parent_segment)] + 1;
+        if (axis.parent_segment >= 0)
+            start = step[static_cast<std::size_t>(axis.parent_segment)] + 1;
         const bool literal = &axis - g.axes.data() == literal_axis;
         for (std::size_t j = 0; j < axis.segments.size(); ++j) {
             const int s = literal ? 0 : start + static_cast<int>(j) / unroll;
@@ -497,8 +558,8 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     const int trunk = g.axis_of[static_cast<std::size_t>(g.roots.front())];
     const bool one_root = g.roots.size() == 1;
     const bool literal_trunk =
-        one_root &&
-        static_cast<int>(g.axes[static_cast<std::size_t>(trunk)].segments.size()) <= kLiteralTrunkNodes;
+        one_root && static_cast<int>(g.axes[static_cast<std::size_t>(trunk)].segments.size()) <=
+                        kLiteralTrunkNodes;
 
     // Modules per order; the deepest orders that repeat one pattern fold into one
     // recursive module, and more fold while the rules exceed the limit.
@@ -508,7 +569,12 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     for (std::size_t a = 0; a < g.axes.size(); ++a)
         if (!(literal_trunk && static_cast<int>(a) == trunk))
             by_order[static_cast<std::size_t>(g.axes[a].order)].push_back(static_cast<int>(a));
-    const int first_order = literal_trunk ? 1 : 0;
+    int root_order = max_order;
+    for (int r : g.roots)
+        root_order = std::min(
+            root_order,
+            g.axes[static_cast<std::size_t>(g.axis_of[static_cast<std::size_t>(r)])].order);
+    const int first_order = literal_trunk ? root_order + 1 : root_order;
     auto build = [&](int fold) {  // orders >= fold share one module
         std::vector<Module> mods;
         for (int o = first_order; o <= max_order; ++o) {
@@ -530,7 +596,9 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     };
     auto rule_count = [](const std::vector<Module>& mods, bool alternatives) {
         int n = 0;
-        for (const Module& mod : mods) n += alternatives ? std::max<int>(1, static_cast<int>(mod.ks.size())) : 1;
+        for (const Module& mod : mods)
+            n += (alternatives ? std::max<int>(1, static_cast<int>(mod.ks.size())) : 1) +
+                 (mod.bare > 0 ? 1 : 0);
         return n;
     };
     int fold = max_order;
@@ -538,12 +606,13 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     while (fold > first_order + 1) {
         std::vector<Module> tried = build(fold - 1);
         const Module& folded = tried.back();
-        if (!similar(folded, modules[modules.size() - 2]) || !similar(folded, modules.back())) break;
+        if (!similar(folded, modules[modules.size() - 2]) || !similar(folded, modules.back()))
+            break;
         modules = std::move(tried);
         --fold;
     }
-    while (fold > first_order &&
-           (rule_count(modules, true) > settings.max_rules || static_cast<int>(modules.size()) > kMaxModules)) {
+    while (fold > first_order && (rule_count(modules, true) > settings.max_rules ||
+                                  static_cast<int>(modules.size()) > kMaxModules)) {
         --fold;
         modules = build(fold);
     }
@@ -552,8 +621,10 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     // Segments per rewrite, so the derivation fits the generations a template may have.
     const int literal_axis = literal_trunk ? trunk : -1;
     int unroll = 1;
-    while (unroll < 16 && steps_needed(g, unroll, literal_axis) > settings.max_generations) ++unroll;
-    const int generations = std::min(settings.max_generations, steps_needed(g, unroll, literal_axis));
+    while (unroll < 16 && steps_needed(g, unroll, literal_axis) > settings.max_generations)
+        ++unroll;
+    const int generations =
+        std::min(settings.max_generations, steps_needed(g, unroll, literal_axis));
     const bool alternatives = unroll == 1;
     int rules = rule_count(modules, alternatives);
     while (rules > settings.max_rules) {
@@ -605,7 +676,8 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     const Module& first = modules.front();
     auto start_args = [&](int axis_index, const Module& mod, int skip) {
         const Axis& axis = g.axes[static_cast<std::size_t>(axis_index)];
-        const std::size_t s = static_cast<std::size_t>(axis.segments[static_cast<std::size_t>(skip)]);
+        const std::size_t s =
+            static_cast<std::size_t>(axis.segments[static_cast<std::size_t>(skip)]);
         const double phase = axis_phase(axis, g, m, mod.advance).value_or(0.0) +
                              mod.advance * static_cast<double>(skip);
         return "(" + std::to_string(axis.segments.size() - static_cast<std::size_t>(skip)) + "," +
@@ -622,14 +694,15 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         const Axis& axis = g.axes[static_cast<std::size_t>(trunk)];
         for (int s : axis.segments) {
             const std::size_t si = static_cast<std::size_t>(s);
-            axiom += turn_text(m.turn[si]) + "!(" + num(m.width[si]) + ")F(" + num(m.length[si]) + ")";
+            axiom +=
+                turn_text(m.turn[si]) + "!(" + num(m.width[si]) + ")F(" + num(m.length[si]) + ")";
             for (int c : laterals_of(g, s)) {
                 const std::size_t ci = static_cast<std::size_t>(c);
                 const int child_axis = g.axis_of[ci];
                 const Axis& lateral = g.axes[static_cast<std::size_t>(child_axis)];
                 const int k = std::clamp(lateral.order - first_order, 0,
                                          static_cast<int>(modules.size()) - 1);
-                axiom += "[" + turn_text(m.turn[ci]) + w.name(k) +
+                axiom += "[" + turn_text(m.turn[ci]) + w.entry(k) +
                          start_args(child_axis, modules[static_cast<std::size_t>(k)], 0) + "]";
             }
         }
@@ -640,7 +713,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
             const bool bracket = skeleton.segments[ri].depth > 0;
-            axiom += (bracket ? "[" : "") + turn_text(m.turn[ri]) + w.name(0) +
+            axiom += (bracket ? "[" : "") + turn_text(m.turn[ri]) + w.entry(0) +
                      start_args(axis, first, 0) + (bracket ? "]" : "");
         }
     }
@@ -665,18 +738,26 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             ++written;
         } else {
             for (const auto& [count, weight] : mod.ks) {
-                grammar += head + w.body(static_cast<int>(k), count, false) + " : " + num(weight) + "\n";
+                grammar +=
+                    head + w.body(static_cast<int>(k), count, false) + " : " + num(weight) + "\n";
                 ++written;
             }
         }
+        if (mod.bare > 0) {
+            grammar += w.head(static_cast<int>(k)) + "\n";
+            ++written;
+        }
         if (mod.ks.size() > 1)
             result.generalised.push_back(
-                "module " + w.name(static_cast<int>(k)) + ": nodes with different numbers of "
-                "branches became " + (alternatives ? "weighted alternatives" : "branch chances"));
+                "module " + w.name(static_cast<int>(k)) +
+                ": nodes with different numbers of "
+                "branches became " +
+                (alternatives ? "weighted alternatives" : "branch chances"));
         if (mod.first_order != mod.last_order)
-            result.generalised.push_back("module " + w.name(static_cast<int>(k)) + " stands for orders " +
-                                         std::to_string(mod.first_order) + " to " +
-                                         std::to_string(mod.last_order) + " (one recursive rule)");
+            result.generalised.push_back("module " + w.name(static_cast<int>(k)) +
+                                         " stands for orders " + std::to_string(mod.first_order) +
+                                         " to " + std::to_string(mod.last_order) +
+                                         " (one recursive rule)");
     }
     result.rules = written;
     result.modules = static_cast<int>(modules.size());

@@ -127,9 +127,10 @@ ExampleTree parse_segment_obj(std::string_view text, const std::string& source, 
     }
     for (std::size_t e = 0; e < edges.size(); ++e)
         if (!edge_used[e])
-            throw InputError("this segment is not connected to the tree's root (disconnected "
-                             "pieces)",
-                             {source, edges[e].line, 0});
+            throw InputError(
+                "this segment is not connected to the tree's root (disconnected "
+                "pieces)",
+                {source, edges[e].line, 0});
     tree.notes.push_back("an OBJ has no radii: widths follow the pipe model");
     finish_example_tree(tree, source);
     return tree;

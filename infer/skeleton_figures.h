@@ -12,9 +12,9 @@ namespace sylva {
 
 struct SkeletonFigures {
     std::size_t segments = 0;
-    double total_length = 0.0;  // meters, all segments
-    double height = 0.0;        // highest point over the lowest, meters
-    double crown_width = 0.0;   // the larger horizontal extent (x or z), meters
+    double total_length = 0.0;           // meters, all segments
+    double height = 0.0;                 // highest point over the lowest, meters
+    double crown_width = 0.0;            // the larger horizontal extent (x or z), meters
     std::vector<std::size_t> per_depth;  // segments at branch depth 0, 1, ...
 };
 

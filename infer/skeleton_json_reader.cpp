@@ -10,8 +10,7 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& source, const std::string& key,
-                       const std::string& what) {
+[[noreturn]] void fail(const std::string& source, const std::string& key, const std::string& what) {
     throw InputError(key + ": " + what, {source, 0, 0});
 }
 
@@ -44,8 +43,7 @@ int integer(const json& value, const std::string& source, const std::string& key
 }
 
 glm::vec3 point(const json& value, const std::string& source, const std::string& key) {
-    if (!value.is_array() || value.size() != 3)
-        fail(source, key, "expected a point [x, y, z]");
+    if (!value.is_array() || value.size() != 3) fail(source, key, "expected a point [x, y, z]");
     return {number(value[0], source, key + "[0]"), number(value[1], source, key + "[1]"),
             number(value[2], source, key + "[2]")};
 }
@@ -88,10 +86,10 @@ ExampleTree parse_skeleton_json(std::string_view text, const std::string& source
         out.rb = s.contains("rb") ? number(s["rb"], source, key + ".rb") : out.ra;
         out.parent = s.contains("parent") ? integer(s["parent"], source, key + ".parent") : -1;
         out.depth = s.contains("depth") ? integer(s["depth"], source, key + ".depth") : -1;
-        out.color = s.contains("color") && s["color"].is_number_integer()
-                        ? static_cast<int>(std::clamp<long long>(s["color"].get<long long>(), 0,
-                                                                 1'000'000))
-                        : 0;
+        out.color =
+            s.contains("color") && s["color"].is_number_integer()
+                ? static_cast<int>(std::clamp<long long>(s["color"].get<long long>(), 0, 1'000'000))
+                : 0;
         tree.skeleton.segments.push_back(out);
         tree.places.push_back(key);
     }
@@ -110,7 +108,8 @@ ExampleTree parse_skeleton_json(std::string_view text, const std::string& source
                 continue;
             }
             if (!get_param(params, key)) {
-                tree.notes.push_back("params." + key + " is not a parameter of this Sylva; left out");
+                tree.notes.push_back("params." + key +
+                                     " is not a parameter of this Sylva; left out");
                 continue;
             }
             if (!value.is_number()) fail(source, "params." + key, "expected a number");
