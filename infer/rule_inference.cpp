@@ -323,7 +323,9 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         slot.chance = more;
     }
     mod.advance = advance.n ? wrap(advance.mean()) : 0.0;
-    mod.bend = {bend_az.mean(), bend_pitch.mean()};
+    // Bends in scattered directions cancel out: the mean bend is the mean pitch times how
+    // much the bend directions agree.
+    mod.bend = {bend_az.mean(), bend_pitch.mean() * bend_az.strength()};
     if (mod.bend.pitch < 0.05) mod.bend = {};
     mod.length_ratio = length_ratio.mean();
     mod.width_ratio = width_ratio.mean();
