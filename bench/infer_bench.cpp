@@ -26,7 +26,8 @@ using namespace sylva;
 
 // Draws every "#define NAME VALUE # [lo, hi]" of the grammar within its range.
 std::string randomized_grammar(const std::string& grammar, Random& random) {
-    static const std::regex line(R"((#define\s+\w+\s+)([-+0-9.eE]+)(\s*#\s*\[\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\].*))");
+    static const std::regex line(
+        R"((#define\s+\w+\s+)([-+0-9.eE]+)(\s*#\s*\[\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\].*))");
     std::string out;
     std::size_t at = 0;
     while (at < grammar.size()) {
@@ -36,8 +37,8 @@ std::string randomized_grammar(const std::string& grammar, Random& random) {
         std::smatch m;
         if (std::regex_match(text, m, line)) {
             const double lo = std::stod(m[4]), hi = std::stod(m[5]);
-            const bool whole = m[2].str().find('.') == std::string::npos &&
-                               lo == std::floor(lo) && hi == std::floor(hi) && hi - lo < 30;
+            const bool whole = m[2].str().find('.') == std::string::npos && lo == std::floor(lo) &&
+                               hi == std::floor(hi) && hi - lo < 30;
             double v = lo + (hi - lo) * random.uniform();
             if (whole) v = std::round(v);
             char number[32];
@@ -83,8 +84,8 @@ Skeleton jittered(Skeleton s, std::uint64_t seed) {
 }
 
 struct Tally {
-    int runs = 0, count = 0, length = 0, height = 0, width = 0, depth = 0, hausdorff = 0,
-        rules = 0, exact = 0, exact_runs = 0;
+    int runs = 0, count = 0, length = 0, height = 0, width = 0, depth = 0, hausdorff = 0, rules = 0,
+        exact = 0, exact_runs = 0;
 };
 
 void row(const char* name, int set, const char* kind, const FitReport& r, double natural,
@@ -111,7 +112,8 @@ void row(const char* name, int set, const char* kind, const FitReport& r, double
     t.rules += r.rules <= 12;
     if (exact_case) {
         ++t.exact_runs;
-        t.exact += r.hausdorff <= 0.01 * r.example.height && r.example.segments == r.regrown.segments;
+        t.exact +=
+            r.hausdorff <= 0.01 * r.example.height && r.example.segments == r.regrown.segments;
     }
     std::printf("%-11s %d %-6s %6zu %6.1f%% %6.1f%% %6.1f%% %6.1f%% %6.1f%% %7.3f %7.3f%s %3d\n",
                 name, set, kind, r.example.segments, 100 * dc, 100 * dl, 100 * dh, 100 * dw,
@@ -124,10 +126,12 @@ void row(const char* name, int set, const char* kind, const FitReport& r, double
 int main(int argc, char** argv) {
     const int sets = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
     std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
-    std::printf("template  set kind   segs  count  length height  width  depth  hausd.  limit  rules\n");
+    std::printf(
+        "template  set kind   segs  count  length height  width  depth  hausd.  limit  rules\n");
     Tally t;
     for (const TreeTemplate* base : builtin_templates()) {
-        if (!only.empty() && std::find(only.begin(), only.end(), base->name) == only.end()) continue;
+        if (!only.empty() && std::find(only.begin(), only.end(), base->name) == only.end())
+            continue;
         for (int set = 0; set < sets; ++set) {
             Random random(0x5eed0000u + static_cast<std::uint64_t>(set) * 7919u +
                           std::hash<std::string>{}(base->name));
@@ -144,18 +148,20 @@ int main(int argc, char** argv) {
             const double natural = skeleton_hausdorff(skeleton, grow(other));
             const ExampleTree example = as_example(skeleton, tree.params);
             const InferredTemplate inferred = infer_template(example);
-            row(base->name.c_str(), set, "plain", fit_report(example, inferred), natural, exact_case, t);
+            row(base->name.c_str(), set, "plain", fit_report(example, inferred), natural,
+                exact_case, t);
             const ExampleTree noisy = as_example(jittered(skeleton, 77 + set), tree.params);
             const InferredTemplate inferred_noisy = infer_template(noisy);
             row(base->name.c_str(), set, "jitter", fit_report(noisy, inferred_noisy), natural,
                 exact_case, t);
         }
     }
-    std::printf("\nruns %d: count within 10%% %d, length within 10%% %d, height within 5%% %d, "
-                "crown width within 5%% %d, per depth within 10%% %d, hausdorff within limit %d, "
-                "at most 12 rules %d; deterministic exact %d of %d\n",
-                t.runs, t.count, t.length, t.height, t.width, t.depth, t.hausdorff, t.rules, t.exact,
-                t.exact_runs);
+    std::printf(
+        "\nruns %d: count within 10%% %d, length within 10%% %d, height within 5%% %d, "
+        "crown width within 5%% %d, per depth within 10%% %d, hausdorff within limit %d, "
+        "at most 12 rules %d; deterministic exact %d of %d\n",
+        t.runs, t.count, t.length, t.height, t.width, t.depth, t.hausdorff, t.rules, t.exact,
+        t.exact_runs);
 
     // Speed: honda at 14 generations has 16,383 segments.
     TreeTemplate big = *builtin_templates().front();

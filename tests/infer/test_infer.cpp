@@ -79,7 +79,8 @@ TEST(InferReaders, BadInputNamesTheRowOrKey) {
     EXPECT_NE(apart.find("disconnected"), std::string::npos) << apart;
     EXPECT_NE(apart.find("row 2"), std::string::npos) << apart;
     // NaN.
-    const std::string nan = error_of("0.1\t1\t0\t0\t0\t0\t0\t1\t0\t0\n0.1\tnan\t0\t0\t1\t0\t0\t1\t1\t0\n");
+    const std::string nan =
+        error_of("0.1\t1\t0\t0\t0\t0\t0\t1\t0\t0\n0.1\tnan\t0\t0\t1\t0\t0\t1\t1\t0\n");
     EXPECT_NE(nan.find("tree.csv:2"), std::string::npos) << nan;
     // Zero length.
     const std::string zero = error_of(
@@ -88,13 +89,14 @@ TEST(InferReaders, BadInputNamesTheRowOrKey) {
     // Too many segments: refused at the row past the limit, before anything is built.
     std::string huge = "0.1\t1\t0\t0\t0\t0\t0\t1\t0\t0\n";
     huge.reserve(huge.size() * (kMaxExampleSegments + 2));
-    for (std::size_t i = 0; i < kMaxExampleSegments + 1; ++i) huge += "0.1\t1\t0\t0\t0\t0\t0\t1\t1\t0\n";
+    for (std::size_t i = 0; i < kMaxExampleSegments + 1; ++i)
+        huge += "0.1\t1\t0\t0\t0\t0\t0\t1\t1\t0\n";
     const std::string many = error_of(huge);
     EXPECT_NE(many.find("at most"), std::string::npos) << many.substr(0, 200);
     // skeleton.json: a wrong kind names the key.
     try {
-        parse_example_tree(R"({"format": "sylva-skeleton", "segments": [{"a": [0,0,0], "b": "x"}]})",
-                           "s.json");
+        parse_example_tree(
+            R"({"format": "sylva-skeleton", "segments": [{"a": [0,0,0], "b": "x"}]})", "s.json");
         FAIL();
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("segments[0].b"), std::string::npos) << e.what();
@@ -131,7 +133,9 @@ TEST(InferRules, StochasticOakWithinTheTargets) {
     EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.05);
     ASSERT_EQ(r.example.per_depth.size(), r.regrown.per_depth.size());
     for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
-        EXPECT_LE(relative_difference(double(r.example.per_depth[d]), double(r.regrown.per_depth[d])), 0.1);
+        EXPECT_LE(
+            relative_difference(double(r.example.per_depth[d]), double(r.regrown.per_depth[d])),
+            0.1);
 }
 
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
