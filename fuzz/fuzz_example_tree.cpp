@@ -19,9 +19,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const auto& segments = tree.skeleton.segments;
             if (segments.empty() || segments.size() > kMaxExampleSegments)
                 fuzz_finding("an accepted tree has no or too many segments");
-            if (glm::length(segments.front().a) > 1e-3f) fuzz_finding("the root is not at the origin");
+            if (glm::length(segments.front().a) > 1e-3f)
+                fuzz_finding("the root is not at the origin");
             for (std::size_t i = 0; i < segments.size(); ++i) {
-                if (segments[i].parent >= static_cast<int>(i)) fuzz_finding("a parent after its child");
+                if (segments[i].parent >= static_cast<int>(i))
+                    fuzz_finding("a parent after its child");
                 if (!(glm::length(segments[i].b - segments[i].a) > 0.0f))
                     fuzz_finding("a segment without length");
             }

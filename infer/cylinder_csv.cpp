@@ -225,7 +225,9 @@ ExampleTree parse_cylinder_csv(std::string_view text, const std::string& source,
     std::vector<Row> rows;
     rows.reserve(lines.size() - first_row);
     for (std::size_t r = first_row; r < lines.size(); ++r) {
-        const auto [line_number, line] = lines[r];
+        // Copies, not a structured binding: clang 14 cannot capture those in the lambda below.
+        const auto line_number = lines[r].first;
+        const auto line = lines[r].second;
         const std::vector<std::string_view> cells = split(line, delimiter);
         auto cell = [&](Column c, double fallback) -> double {
             if (column[c] < 0) return fallback;

@@ -57,6 +57,8 @@ ExampleTree parse_skeleton_json(std::string_view text, const std::string& source
     } catch (const json::parse_error& e) {
         SourceLocation at = locate(text, e.byte > 0 ? e.byte - 1 : 0, source);
         throw InputError("not JSON: " + std::string(e.what()), at);
+    } catch (const json::exception& e) {  // a number too large for a double, and the like
+        throw InputError("not JSON Sylva can read: " + std::string(e.what()), {source, 0, 0});
     }
     if (!doc.is_object()) fail(source, "(top)", "expected a JSON object");
     if (!doc.contains("format") || doc["format"] != "sylva-skeleton")
