@@ -26,9 +26,9 @@ double relative_difference(double a, double b) {
 }
 
 FitReport fit_report(const ExampleTree& example, const InferredTemplate& inferred,
-                     Skeleton* regrown) {
+                     Skeleton* regrown, const GrowthContext& context) {
     const Skeleton original = example_skeleton_with_depths(example);
-    Skeleton grown = grow(inferred.tree);
+    Skeleton grown = grow(inferred.tree, context);
     FitReport r;
     r.example = skeleton_figures(original);
     r.regrown = skeleton_figures(grown);

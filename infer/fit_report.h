@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/growth.h"
 #include "infer/example_tree.h"
 #include "infer/rule_inference.h"
 #include "infer/skeleton_figures.h"
@@ -29,10 +30,11 @@ struct FitReport {
 // file gave none, so both trees count depths alike.
 Skeleton example_skeleton_with_depths(const ExampleTree& example);
 
-// Grows the inferred template (tree/growth.h) and compares. Throws what growing throws
-// (InputError for a grammar the inference wrote wrong: a bug). Thread-safe.
+// Grows the inferred template (tree/growth.h, with `context`: its cancel flag and progress)
+// and compares. Throws what growing throws (InputError for a grammar the inference wrote
+// wrong: a bug; Cancelled). Thread-safe.
 FitReport fit_report(const ExampleTree& example, const InferredTemplate& inferred,
-                     Skeleton* regrown = nullptr);
+                     Skeleton* regrown = nullptr, const GrowthContext& context = {});
 
 // Relative difference |b - a| / a (0 when both are 0).
 double relative_difference(double a, double b);

@@ -553,6 +553,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     const TreeParams source = example.params.value_or(TreeParams{});
     const double elasticity = example.params ? source.tropism : 0.0;
     const Measured m = measure(skeleton, g, elasticity);
+    throw_if_cancelled(settings.cancel);
     InferredTemplate result;
 
     // The trunk: written out in the axiom when short (a few nodes carry the whole tree's
@@ -578,6 +579,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             g.axes[static_cast<std::size_t>(g.axis_of[static_cast<std::size_t>(r)])].order);
     const int first_order = literal_trunk ? root_order + 1 : root_order;
     auto build = [&](int fold) {  // orders >= fold share one module
+        throw_if_cancelled(settings.cancel);
         std::vector<Module> mods;
         for (int o = first_order; o <= max_order; ++o) {
             std::vector<int> axes;

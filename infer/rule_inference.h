@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cancel.h"
 #include "core/tree_template.h"
 #include "infer/example_tree.h"
 
@@ -26,6 +27,7 @@ struct InferSettings {
     int max_rules = 12;        // productions, the alternatives of a stochastic rule counted
     int max_generations = 15;  // the `generations` range of a template
     std::string name = "inferred";
+    CancelFlag cancel = nullptr;  // polled between stages; throws Cancelled
 };
 
 struct InferredTemplate {
@@ -42,7 +44,8 @@ struct InferredTemplate {
 };
 
 // Infers the template. Throws InputError when the example cannot be expressed at all
-// (it can always be, for a tree that passed finish_example_tree()). Deterministic: the
+// (it can always be, for a tree that passed finish_example_tree()), Cancelled when
+// settings.cancel is set. Deterministic: the
 // same example gives the same text. Thread-safe. Linear in the segments.
 InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings = {});
 

@@ -33,27 +33,31 @@ std::vector<FolderEntry> list_folder(const fs::path& folder,
 
 std::optional<std::string> file_dialog(FileDialogState& dialog,
                                        const std::vector<std::string>& recent_files) {
-    const char* title = dialog.saving ? "Save template as###file" : "Open template###file";
+    // One popup id per kind of file, so two dialogs never share one.
+    const std::string title = (dialog.saving ? "Save " + dialog.what + " as###file "
+                                             : "Open " + dialog.what + "###file ") +
+                              dialog.what;
     if (dialog.open_requested) {
         dialog.open_requested = false;
         std::error_code ec;
         if (dialog.folder.empty() || !fs::is_directory(dialog.folder, ec))
             dialog.folder = fs::current_path(ec).string();
-        ImGui::OpenPopup(title);
+        ImGui::OpenPopup(title.c_str());
     }
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(560.0f, 440.0f), ImGuiCond_Appearing);
     std::optional<std::string> chosen;
-    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return chosen;
+    if (!ImGui::BeginPopupModal(title.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings))
+        return chosen;
 
     const fs::path folder(dialog.folder);
     if (ImGui::Button("up")) dialog.folder = folder.parent_path().string();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputText("##folder", &dialog.folder);
-    const std::vector<FolderEntry> entries = list_folder(folder, {".toml", ".lsys", ".txt"});
+    const std::vector<FolderEntry> entries = list_folder(folder, dialog.extensions);
     const float list_height = ImGui::GetContentRegionAvail().y -
                               3.0f * ImGui::GetFrameHeightWithSpacing() -
                               (recent_files.empty() ? 0.0f : ImGui::GetFrameHeightWithSpacing());
@@ -72,7 +76,7 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
             }
         }
     }
-    if (entries.empty()) ImGui::TextDisabled("(no folders or template files here)");
+    if (entries.empty()) ImGui::TextDisabled("(no folders or %s files here)", dialog.what.c_str());
     ImGui::EndChild();
     if (!enter.empty()) dialog.folder = (folder / enter).string();
 
@@ -88,7 +92,14 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
         }
     }
     ImGui::SetNextItemWidth(-1.0f);
-    const bool entered = ImGui::InputTextWithHint("##name", "file name (.toml)", &dialog.name,
+    std::string hint = "file name (.toml)";
+    if (!dialog.saving) {
+        hint = "file name (";
+        for (std::size_t i = 0; i < dialog.extensions.size(); ++i)
+            hint += (i ? ", " : "") + dialog.extensions[i];
+        hint += ")";
+    }
+    const bool entered = ImGui::InputTextWithHint("##name", hint.c_str(), &dialog.name,
                                                   ImGuiInputTextFlags_EnterReturnsTrue);
     const bool can_confirm = !dialog.name.empty();
     ImGui::BeginDisabled(!can_confirm);

@@ -26,6 +26,9 @@ struct FileDialogState {
     bool saving = false;          // Save as (a new name may be typed) or Open
     std::string folder;           // the folder shown
     std::string name;             // the file name field
+    // What the dialog opens: the files it lists, and the word its title and hints use.
+    std::vector<std::string> extensions{".toml", ".lsys", ".txt"};
+    std::string what = "template";
 };
 
 // Draws the dialog while it is open; returns the chosen path once, when the user confirms.
