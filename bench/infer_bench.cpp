@@ -4,7 +4,10 @@
 // figure's error and whether it meets its target, then the time to infer a tree of about
 // 10,000 segments. Prints figures from one run; asserts nothing.
 //
-//   build/bench/sylva-bench-infer [SETS] [TEMPLATE...]
+//   build/bench/sylva-bench-infer [--dump DIR] [SETS] [TEMPLATE...]
+//
+// --dump writes each run's inferred template to DIR/TEMPLATE-SET-KIND.toml, to read why a
+// run misses.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -124,8 +127,24 @@ void row(const char* name, int set, const char* kind, const FitReport& r, double
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::string dump;
+    if (argc > 2 && std::string(argv[1]) == "--dump") {
+        dump = argv[2];
+        argv += 2;
+        argc -= 2;
+    }
     const int sets = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
     std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
+    auto save = [&](const std::string& name, int set, const char* kind,
+                    const InferredTemplate& inferred) {
+        if (dump.empty()) return;
+        const std::string path =
+            dump + "/" + name + "-" + std::to_string(set) + "-" + kind + ".toml";
+        if (std::FILE* f = std::fopen(path.c_str(), "w")) {
+            std::fputs(inferred.text.c_str(), f);
+            std::fclose(f);
+        }
+    };
     std::printf(
         "template  set kind   segs  count  length height  width  depth  hausd.  limit  rules\n");
     Tally t;
@@ -148,10 +167,12 @@ int main(int argc, char** argv) {
             const double natural = skeleton_hausdorff(skeleton, grow(other));
             const ExampleTree example = as_example(skeleton, tree.params);
             const InferredTemplate inferred = infer_template(example);
+            save(base->name, set, "plain", inferred);
             row(base->name.c_str(), set, "plain", fit_report(example, inferred), natural,
                 exact_case, t);
             const ExampleTree noisy = as_example(jittered(skeleton, 77 + set), tree.params);
             const InferredTemplate inferred_noisy = infer_template(noisy);
+            save(base->name, set, "jitter", inferred_noisy);
             row(base->name.c_str(), set, "jitter", fit_report(noisy, inferred_noisy), natural,
                 exact_case, t);
         }

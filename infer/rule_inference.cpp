@@ -3,14 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "core/errors.h"
 #include "core/pipe_model.h"
 #include "infer/branch_graph.h"
+#include "infer/skeleton_figures.h"
+#include "tree/growth.h"
 #include "tree/template_file.h"
 
 namespace sylva {
@@ -23,6 +28,14 @@ constexpr int kMaxModules = 12;
 // first-order branches as calls: it is where the example differs most from any rule and
 // where an error shows most.
 constexpr int kLiteralTrunkNodes = 6;
+
+// How a turn leaves the turtle's frame, that is which frame the next angles are measured
+// in. Vertical: rolled so that the left vector is horizontal (`$` after every turn, ABOP
+// 1.5), so a branch angle means the same on every branch whatever the turtle rolled
+// before. Minimal: turned by the smallest rotation onto the new heading
+// (`/(a)&(b)\(a)`, parallel transport), so the rolls a grammar makes without `$` add up
+// as they do in its turtle. Which one regrows an example better is tried.
+enum class Convention { Vertical, Minimal };
 
 // ---- the turtle's frame, as turtle/turtle.cpp moves it (ABOP's H, L, U) ----------------
 struct Frame {
@@ -85,10 +98,13 @@ Turn solve(const Frame& f, const glm::dvec3& d) {
     if (r > 1e-9) t.az = -std::atan2(ll, -uu) / kDegree;
     return t;
 }
-Frame turned(Frame f, const Turn& t) {
+Frame turned(Frame f, const Turn& t, Convention convention) {
     roll(f, -t.az);
     pitch(f, t.pitch);
-    roll_to_vertical(f);
+    if (convention == Convention::Vertical)
+        roll_to_vertical(f);
+    else
+        roll(f, t.az);
     return f;
 }
 
@@ -96,9 +112,9 @@ Frame turned(Frame f, const Turn& t) {
 struct Circular {
     double s = 0.0, c = 0.0;
     int n = 0;
-    void add(double degrees) {
-        s += std::sin(degrees * kDegree);
-        c += std::cos(degrees * kDegree);
+    void add(double degrees, double weight = 1.0) {
+        s += weight * std::sin(degrees * kDegree);
+        c += weight * std::cos(degrees * kDegree);
         ++n;
     }
     double mean() const { return n ? std::atan2(s, c) / kDegree : 0.0; }
@@ -127,6 +143,33 @@ double wrap(double degrees) {
     return degrees;
 }
 
+// A turn that recurs (the bend between two segments of an axis), as the mean of turn
+// vectors (pitch in the direction az): turns in scattered directions cancel out, and a
+// mean no larger than its noise is none.
+struct TurnMean {
+    double x = 0.0, y = 0.0, xx = 0.0, yy = 0.0;
+    int n = 0;
+    void add(const Turn& t, double reference = 0.0) {
+        const double a = (t.az - reference) * kDegree;
+        const double px = t.pitch * std::cos(a), py = t.pitch * std::sin(a);
+        x += px, y += py, xx += px * px, yy += py * py;
+        ++n;
+    }
+    double magnitude() const { return n ? std::hypot(x, y) / n : 0.0; }
+    // The mean's size over its standard error: above 3 the turn is more than noise.
+    double significance() const {
+        if (n < 2) return n == 1 && magnitude() > 0.05 ? 1e9 : 0.0;
+        const double mx = x / n, my = y / n;
+        const double var = std::max((xx + yy) / n - mx * mx - my * my, 0.0);
+        const double error = std::sqrt(var / n);
+        return error < 1e-9 ? 1e9 : magnitude() / error;
+    }
+    Turn mean() const {
+        if (!n) return {};
+        return {std::atan2(y, x) / kDegree, magnitude()};
+    }
+};
+
 // ---- what is measured per segment --------------------------------------------------------
 struct Measured {
     std::vector<double> length, width;  // width: diameter at the segment's start
@@ -135,7 +178,8 @@ struct Measured {
     std::vector<int> node;              // index on its axis
 };
 
-Measured measure(const Skeleton& skeleton, const BranchGraph& g, double elasticity) {
+Measured measure(const Skeleton& skeleton, const BranchGraph& g, double elasticity,
+                 Convention convention) {
     const std::size_t count = skeleton.segments.size();
     Measured m;
     m.length.resize(count);
@@ -149,7 +193,7 @@ Measured measure(const Skeleton& skeleton, const BranchGraph& g, double elastici
         const glm::dvec3 d = glm::normalize(glm::dvec3(s.b) - glm::dvec3(s.a));
         const Frame from = s.parent < 0 ? Frame{} : end[static_cast<std::size_t>(s.parent)];
         m.turn[i] = solve(from, d);
-        Frame f = turned(from, m.turn[i]);
+        Frame f = turned(from, m.turn[i], convention);
         // The turned frame's heading is d up to rounding; take d itself so errors do not add up.
         f.h = d;
         orthonormalize(f);
@@ -176,228 +220,524 @@ std::vector<int> laterals_of(const BranchGraph& g, int s) {
 }
 
 // ---- one module: the fitted pattern of a set of axes ----------------------------------------
+// A whole number a lateral axis gets from the budget b its parent node leaves it (its
+// segments, its own budget): b, min(b, cap) or min(b, round(share * b)).
+struct FromBudget {
+    enum Kind { Budget, Cap, Share } kind = Budget;
+    int cap = 0;
+    double share = 1.0;
+    int of(int b) const {
+        if (kind == Cap) return std::min(b, cap);
+        if (kind == Share) return std::min(b, static_cast<int>(std::floor(share * b + 0.5)));
+        return b;
+    }
+    std::string text(const std::string& b) const;
+};
+
+// The model that errs least over the samples (value, budget); the simplest on a tie.
+FromBudget fit_from_budget(const std::vector<std::pair<int, int>>& samples, long* error_out) {
+    auto error = [&](const FromBudget& f) {
+        long e = 0;
+        for (auto [v, b] : samples) e += std::abs(v - f.of(b));
+        return e;
+    };
+    FromBudget best;
+    long best_error = error(best);
+    std::vector<int> caps;
+    for (auto [v, b] : samples) caps.push_back(v);
+    std::sort(caps.begin(), caps.end());
+    caps.erase(std::unique(caps.begin(), caps.end()), caps.end());
+    for (int c : caps) {
+        const FromBudget f{FromBudget::Cap, c, 1.0};
+        if (const long e = error(f); e < best_error) best = f, best_error = e;
+    }
+    double sv = 0.0, sb = 0.0;
+    for (auto [v, b] : samples) sv += v, sb += b;
+    if (sb > 0.0) {
+        const FromBudget f{FromBudget::Share, 0, std::min(1.0, sv / sb)};
+        if (const long e = error(f); e < best_error) best = f, best_error = e;
+    }
+    *error_out = best_error;
+    return best;
+}
+
 struct Slot {
     double offset = 0.0;  // azimuth after the node's first lateral, degrees
     double pitch = 0.0;   // branch angle, degrees
     double length = 1.0;  // first segment's length over the parent segment's
     double width = 1.0;   // and its width over the parent's
     double chance = 1.0;  // probability that a node has this lateral (k > index)
+    // The lateral's segments and its own height budget, from the budget b its node leaves.
+    FromBudget count, height;
+    int drop = 0;  // b is the node's budget less 1 + drop
+    // The phase of the lateral axes it starts: its azimuth plus this when the child module's
+    // phase is relative, else this.
+    double child_phase = 0.0;
+};
+
+// The laterals of one kind of node: how many (weighted alternatives) and each one's slot.
+struct NodePattern {
+    std::vector<std::pair<int, double>> ks;  // lateral counts with their frequencies
+    std::vector<Slot> slots;
+    int nodes = 0;  // nodes the pattern was fitted on
 };
 
 struct Module {
-    std::vector<int> axes;                   // the example's axes it stands for
-    int first_order = 0, last_order = 0;     // orders it covers (recursive when more)
-    std::vector<std::pair<int, double>> ks;  // lateral counts with their frequencies
-    std::vector<Slot> slots;
-    double advance = 0.0;  // divergence: phase change from one node to the next, degrees
-    Turn bend;             // turn before the next segment of the axis
+    std::vector<int> axes;                // the example's axes it stands for
+    int first_order = 0, last_order = 0;  // orders it covers (recursive when more)
+    // Laterals along the axis, and at its last node when that differs (a whorl at the tip,
+    // a fork ending the axis): then the last node has only those.
+    NodePattern interior, tip;
+    bool has_tip = false;
+    double tip_offset = 0.0;  // the tip's first lateral's azimuth after the phase
+    double advance = 0.0;     // divergence: phase change from one node to the next, degrees
+    // The turn before the next segment of the axis; its azimuth after the node's phase when
+    // relative (the bend turns with the branches, a grammar's roll between nodes).
+    Turn bend;
+    bool bend_relative = false;
     double length_ratio = 1.0, width_ratio = 1.0;
-    int budget_drop = 0;  // a lateral's height budget: the node's minus 1 minus this
+    bool length_known = false;  // some axis had two segments
+    int budget_drop = 0;        // a lateral's height budget: the node's minus 1 minus this
     // How this module's axes are as laterals: their first phase (absolute, or their spawn
-    // azimuth plus this) and their segment count (min(budget, cap), or budget * share).
+    // azimuth plus this).
     bool phase_relative = false;
     double phase = 0.0;
-    int cap = 0;  // 0: none
-    bool by_share = false;
-    double share = 1.0;
-    int nodes = 0;
+    bool phase_known = false;
     // Nodes without branches at the base of every axis (a bare stretch), drawn by a head rule.
     int bare = 0;
+    // After it, laterals every `period` nodes (internodes of several segments, a whorl every
+    // few); a rewrite draws the period's segments, branching at the first.
+    int period = 1;
+    // How many phase steps (divergences) lie before node j.
+    double phase_steps(std::size_t j) const {
+        const int n = static_cast<int>(j);
+        return n < bare ? n : bare + (n - bare) / period;
+    }
     double head_ratio = 1.0;  // the first branched segment's length over the axis's first
+    std::vector<std::optional<double>> axis_phase;  // per axis: the phase of its node 0
 };
 
-// The phase of an axis: its first lateral's azimuth, moved back to node 0.
-std::optional<double> axis_phase(const Axis& axis, const BranchGraph& g, const Measured& m,
-                                 double advance) {
-    for (std::size_t j = 0; j < axis.segments.size(); ++j) {
-        const std::vector<int> lat = laterals_of(g, axis.segments[j]);
-        if (!lat.empty())
-            return wrap(m.turn[static_cast<std::size_t>(lat.front())].az -
-                        advance * static_cast<double>(j));
-    }
-    return std::nullopt;
-}
+struct NodeSample {
+    std::vector<int> laterals;
+    int segment;
+};
 
-Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Measured& m,
-                  int skip_root_nodes) {
-    Module mod;
-    mod.axes = axes;
+void fit_pattern(NodePattern& pattern, const std::vector<NodeSample>& nodes, const Measured& m) {
     std::map<int, int> k_count;
     std::vector<Circular> offsets;
     std::vector<Mean> pitches;
     std::vector<Ratio> lengths, widths;
-    Circular advance, bend_az;
-    Mean bend_pitch, drop;
-    Ratio length_ratio, width_ratio;
-    int non_tips = 0;
-    // The bare stretch: leading nodes without laterals, where most branched axes agree.
-    std::map<int, int> leading;
-    int branched = 0;
-    for (int a : axes) {
-        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
-        for (std::size_t j = 0; j < axis.segments.size(); ++j)
-            if (!laterals_of(g, axis.segments[j]).empty()) {
-                ++leading[static_cast<int>(j)];
-                ++branched;
-                break;
-            }
-    }
-    for (const auto& [count, n] : leading)
-        if (count > 0 && n * 10 >= branched * 7) mod.bare = count;
-    Ratio head_ratio;
-    for (int a : axes) {
-        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
-        if (mod.bare > 0 && static_cast<int>(axis.segments.size()) > mod.bare)
-            head_ratio.add(m.length[static_cast<std::size_t>(
-                               axis.segments[static_cast<std::size_t>(mod.bare)])],
-                           m.length[static_cast<std::size_t>(axis.segments[0])]);
-    }
-    mod.head_ratio = head_ratio.mean();
-    for (int a : axes) {
-        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
-        double previous_first = 0.0;
-        bool have_previous = false;
-        for (std::size_t j = 0; j < axis.segments.size(); ++j) {
-            const int s = axis.segments[j];
-            const std::size_t si = static_cast<std::size_t>(s);
-            if (axis.parent_segment < 0 && static_cast<int>(j) < skip_root_nodes) continue;
-            if (static_cast<int>(j) < mod.bare) continue;
-            ++mod.nodes;
-            const int next = g.continuation[si];
-            if (next >= 0) {
-                const Turn& t = m.turn[static_cast<std::size_t>(next)];
-                if (t.pitch > 1e-6) bend_az.add(t.az);
-                bend_pitch.add(t.pitch);
-                length_ratio.add(m.length[static_cast<std::size_t>(next)], m.length[si]);
-                width_ratio.add(m.width[static_cast<std::size_t>(next)], m.width[si]);
-            }
-            const std::vector<int> lat = laterals_of(g, s);
-            if (static_cast<int>(j) < mod.bare) continue;
-            if (g.children[si].empty()) {
-                have_previous = false;
-                continue;
-            }
-            ++non_tips;
-            ++k_count[static_cast<int>(lat.size())];
-            if (lat.size() > offsets.size()) {
-                offsets.resize(lat.size());
-                pitches.resize(lat.size());
-                lengths.resize(lat.size());
-                widths.resize(lat.size());
-            }
-            const double first = lat.empty() ? 0.0 : m.turn[static_cast<std::size_t>(lat[0])].az;
-            for (std::size_t i = 0; i < lat.size(); ++i) {
-                const std::size_t c = static_cast<std::size_t>(lat[i]);
-                offsets[i].add(m.turn[c].az - first);
-                pitches[i].add(m.turn[c].pitch);
-                lengths[i].add(m.length[c], m.length[si]);
-                widths[i].add(m.width[c], m.width[si]);
-                drop.add(m.budget[si] - 1 - g.height[c]);
-            }
-            if (!lat.empty()) {
-                if (have_previous) advance.add(first - previous_first);
-                previous_first = first;
-            }
-            have_previous = !lat.empty();
+    for (const NodeSample& node : nodes) {
+        const std::vector<int>& lat = node.laterals;
+        const std::size_t si = static_cast<std::size_t>(node.segment);
+        ++k_count[static_cast<int>(lat.size())];
+        if (lat.size() > offsets.size()) {
+            offsets.resize(lat.size());
+            pitches.resize(lat.size());
+            lengths.resize(lat.size());
+            widths.resize(lat.size());
+        }
+        const double first = lat.empty() ? 0.0 : m.turn[static_cast<std::size_t>(lat[0])].az;
+        for (std::size_t i = 0; i < lat.size(); ++i) {
+            const std::size_t c = static_cast<std::size_t>(lat[i]);
+            offsets[i].add(m.turn[c].az - first);
+            pitches[i].add(m.turn[c].pitch);
+            lengths[i].add(m.length[c], m.length[si]);
+            widths[i].add(m.width[c], m.width[si]);
         }
     }
+    pattern.nodes = static_cast<int>(nodes.size());
     // Lateral counts: those seen at 5 % of the nodes or more, with their frequencies.
     for (const auto& [k, n] : k_count)
-        if (n * 20 >= non_tips) mod.ks.emplace_back(k, static_cast<double>(n));
-    if (mod.ks.empty() && !k_count.empty()) mod.ks.emplace_back(k_count.rbegin()->first, 1.0);
+        if (n * 20 >= pattern.nodes) pattern.ks.emplace_back(k, static_cast<double>(n));
+    if (pattern.ks.empty() && !k_count.empty())
+        pattern.ks.emplace_back(k_count.rbegin()->first, 1.0);
     double total = 0.0;
-    for (auto& [k, w] : mod.ks) total += w;
-    for (auto& [k, w] : mod.ks) w /= total;
+    for (auto& [k, w] : pattern.ks) total += w;
+    for (auto& [k, w] : pattern.ks) w /= total;
     int kmax = 0;
-    for (auto& [k, w] : mod.ks) kmax = std::max(kmax, k);
-    mod.slots.resize(static_cast<std::size_t>(kmax));
-    for (std::size_t i = 0; i < mod.slots.size() && i < offsets.size(); ++i) {
-        Slot& slot = mod.slots[i];
+    for (auto& [k, w] : pattern.ks) kmax = std::max(kmax, k);
+    pattern.slots.resize(static_cast<std::size_t>(kmax));
+    for (std::size_t i = 0; i < pattern.slots.size() && i < offsets.size(); ++i) {
+        Slot& slot = pattern.slots[i];
         slot.offset = i == 0 ? 0.0 : wrap(offsets[i].mean());
         slot.pitch = pitches[i].mean();
         slot.length = lengths[i].mean();
         slot.width = widths[i].mean();
         double more = 0.0;
-        for (auto& [k, w] : mod.ks)
+        for (auto& [k, w] : pattern.ks)
             if (k > static_cast<int>(i)) more += w;
         slot.chance = more;
     }
-    mod.advance = advance.n ? wrap(advance.mean()) : 0.0;
-    // Bends in scattered directions cancel out: the mean bend is the mean pitch times how
-    // much the bend directions agree.
-    mod.bend = {bend_az.mean(), bend_pitch.mean() * bend_az.strength()};
-    if (mod.bend.pitch < 0.05) mod.bend = {};
+}
+
+// The divergence that makes `y - dv * x` (minus `spawn` when relative) agree best over the
+// samples, found on a grid of a quarter degree: for phases seen once per axis at nodes
+// that differ from axis to axis (a fork at the tip of axes of different lengths).
+struct PhaseSample {
+    int node;
+    double az;
+    std::optional<double> spawn;
+};
+double regress_divergence(const std::vector<PhaseSample>& samples) {
+    auto agreement = [&](double dv) {
+        Circular absolute, relative;
+        for (const PhaseSample& s : samples) {
+            absolute.add(s.az - dv * s.node);
+            if (s.spawn) relative.add(s.az - dv * s.node - *s.spawn);
+        }
+        return std::max(absolute.strength(), relative.strength());
+    };
+    double best = 0.0, best_score = agreement(0.0) + 0.02;  // no divergence unless clearly better
+    for (int k = -720; k < 720; ++k) {
+        const double dv = 0.25 * k;
+        const double score = agreement(dv);
+        if (score > best_score) best_score = score, best = dv;
+    }
+    const double centre = best;
+    for (int k = -25; k <= 25; ++k) {
+        const double dv = centre + 0.01 * k;
+        const double score = agreement(dv);
+        if (score > best_score) best_score = score, best = dv;
+    }
+    return wrap(best);
+}
+
+// `allow_tip`: whether an axis whose only laterals sit at its last node may take them as
+// a tip pattern (else they are interior laterals after a bare stretch).
+Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Measured& m,
+                  bool allow_tip) {
+    Module mod;
+    mod.axes = axes;
+    auto seg = [](int s) { return static_cast<std::size_t>(s); };
+    // A lateral's budget: the node's, less what the example shows it loses.
+    Mean drop;
+    for (int a : axes)
+        for (int s : g.axes[seg(a)].segments)
+            for (int c : laterals_of(g, s)) drop.add(m.budget[seg(s)] - 1 - g.height[seg(c)]);
+    mod.budget_drop = std::max(0, static_cast<int>(std::lround(drop.mean(0.0))));
+    auto can_branch = [&](int s) { return m.budget[seg(s)] - 1 - mod.budget_drop > 0; };
+
+    // The tip: an axis's last node that has laterals, when the axes have no laterals before it.
+    int tip_nodes = 0, interior_laterals = 0;
+    for (int a : axes) {
+        const Axis& axis = g.axes[seg(a)];
+        if (!laterals_of(g, axis.segments.back()).empty()) ++tip_nodes;
+        for (std::size_t j = 0; j + 1 < axis.segments.size(); ++j)
+            interior_laterals += !laterals_of(g, axis.segments[j]).empty();
+    }
+    mod.has_tip = allow_tip && tip_nodes > 0 && interior_laterals == 0;
+
+    // The bare stretch: leading nodes without laterals, where most branched axes agree.
+    if (!mod.has_tip) {
+        std::map<int, int> leading;
+        int branched = 0;
+        for (int a : axes) {
+            const Axis& axis = g.axes[seg(a)];
+            for (std::size_t j = 0; j < axis.segments.size(); ++j)
+                if (!laterals_of(g, axis.segments[j]).empty()) {
+                    ++leading[static_cast<int>(j)];
+                    ++branched;
+                    break;
+                }
+        }
+        for (const auto& [count, n] : leading)
+            if (count > 0 && n * 10 >= branched * 7) mod.bare = count;
+        // The period: the gap between branched nodes most axes keep.
+        std::map<int, int> gaps;
+        int gap_count = 0;
+        for (int a : axes) {
+            const Axis& axis = g.axes[seg(a)];
+            int last = -1;
+            for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size();
+                 ++j) {
+                if (laterals_of(g, axis.segments[j]).empty()) continue;
+                if (last >= 0) ++gaps[static_cast<int>(j) - last], ++gap_count;
+                last = static_cast<int>(j);
+            }
+        }
+        for (const auto& [gap, n] : gaps)
+            if (gap > 1 && n * 10 >= gap_count * 8) mod.period = gap;
+    }
+    Ratio head_ratio;
+    for (int a : axes) {
+        const Axis& axis = g.axes[seg(a)];
+        if (mod.bare > 0 && static_cast<int>(axis.segments.size()) > mod.bare)
+            head_ratio.add(m.length[seg(axis.segments[static_cast<std::size_t>(mod.bare)])],
+                           m.length[seg(axis.segments[0])]);
+    }
+    mod.head_ratio = head_ratio.mean();
+
+    // Nodes, bends and ratios.
+    std::vector<NodeSample> interior, tips;
+    Ratio length_ratio, width_ratio;
+    Circular advance;
+    for (int a : axes) {
+        const Axis& axis = g.axes[seg(a)];
+        const std::size_t n = axis.segments.size();
+        double previous_first = 0.0;  // the last node's first lateral's azimuth, when it had one
+        bool have_previous = false;
+        for (std::size_t j = 0; j < n; ++j) {
+            const int s = axis.segments[j];
+            const int next = g.continuation[seg(s)];
+            if (static_cast<int>(j) < mod.bare) continue;
+            if (next >= 0) {
+                length_ratio.add(m.length[seg(next)], m.length[seg(s)]);
+                width_ratio.add(m.width[seg(next)], m.width[seg(s)]);
+                mod.length_known = true;
+            }
+            std::vector<int> lat = laterals_of(g, s);
+            if (mod.has_tip && j + 1 == n) {
+                if (!lat.empty()) tips.push_back({lat, s});
+                continue;
+            }
+            if ((static_cast<int>(j) - mod.bare) % mod.period != 0) continue;
+            if (g.children[seg(s)].empty() || !can_branch(s)) {
+                have_previous = false;
+                continue;
+            }
+            if (!lat.empty()) {
+                const double first = m.turn[seg(lat[0])].az;
+                if (have_previous) advance.add(first - previous_first);
+                previous_first = first;
+            }
+            have_previous = !lat.empty();
+            interior.push_back({std::move(lat), s});
+        }
+    }
+    fit_pattern(mod.interior, interior, m);
+    fit_pattern(mod.tip, tips, m);
     mod.length_ratio = length_ratio.mean();
     mod.width_ratio = width_ratio.mean();
-    mod.budget_drop = std::max(0, static_cast<int>(std::lround(drop.mean(0.0))));
+
+    // Bends: absolute first, to find a divergence where no two branched nodes follow.
+    auto bends_of = [&](const std::function<double(int, std::size_t)>& reference) {
+        TurnMean t;
+        for (int a : axes) {
+            const Axis& axis = g.axes[seg(a)];
+            for (std::size_t j = static_cast<std::size_t>(mod.bare); j + 1 < axis.segments.size();
+                 ++j)
+                t.add(m.turn[seg(axis.segments[j + 1])], reference(a, j));
+        }
+        return t;
+    };
+    if (advance.n) {
+        mod.advance = wrap(advance.mean());
+    } else if (!mod.interior.slots.empty() || !mod.has_tip) {
+        // No two branched nodes in a row: the roll between nodes shows in the bends.
+        Circular steps;
+        for (int a : axes) {
+            const Axis& axis = g.axes[seg(a)];
+            for (std::size_t j = 0; j + 2 < axis.segments.size(); ++j) {
+                const Turn& t0 = m.turn[seg(axis.segments[j + 1])];
+                const Turn& t1 = m.turn[seg(axis.segments[j + 2])];
+                if (t0.pitch > 0.05 && t1.pitch > 0.05) steps.add(t1.az - t0.az);
+            }
+        }
+        if (steps.n >= 2 && steps.strength() > 0.95) mod.advance = wrap(steps.mean());
+    } else {
+        // Laterals only at the tip: the divergence that makes the tip's azimuth follow from
+        // the axis's length (and its spawn azimuth).
+        std::vector<PhaseSample> samples;
+        for (int a : axes) {
+            const Axis& axis = g.axes[seg(a)];
+            const std::vector<int> lat = laterals_of(g, axis.segments.back());
+            if (lat.empty()) continue;
+            PhaseSample p{static_cast<int>(axis.segments.size()) - 1, m.turn[seg(lat[0])].az, {}};
+            if (axis.parent_segment >= 0) p.spawn = m.turn[seg(axis.segments.front())].az;
+            samples.push_back(p);
+        }
+        bool varied = false;
+        for (const PhaseSample& p : samples) varied |= p.node != samples.front().node;
+        if (varied) {
+            mod.advance = regress_divergence(samples);
+        } else {
+            // Every tip at the same node: the phase drift is the bends' (if any).
+            Circular steps;
+            for (int a : axes) {
+                const Axis& axis = g.axes[seg(a)];
+                for (std::size_t j = 0; j + 2 < axis.segments.size(); ++j) {
+                    const Turn& t0 = m.turn[seg(axis.segments[j + 1])];
+                    const Turn& t1 = m.turn[seg(axis.segments[j + 2])];
+                    if (t0.pitch > 0.05 && t1.pitch > 0.05) steps.add(t1.az - t0.az);
+                }
+            }
+            if (steps.n >= 2 && steps.strength() > 0.95) mod.advance = wrap(steps.mean());
+        }
+    }
+
+    // Each axis's phase: its first lateral's azimuth moved back to node 0 (a tip-only axis:
+    // the tip's), and where the tip's first lateral stands after it.
+    Circular tip_offset;
+    mod.axis_phase.resize(axes.size());
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        const Axis& axis = g.axes[seg(axes[k])];
+        const std::size_t n = axis.segments.size();
+        for (std::size_t j = 0; j < n; ++j) {
+            if (mod.has_tip && j + 1 == n) break;
+            const std::vector<int> lat = laterals_of(g, axis.segments[j]);
+            if (lat.empty()) continue;
+            mod.axis_phase[k] = wrap(m.turn[seg(lat[0])].az - mod.advance * mod.phase_steps(j));
+            break;
+        }
+        const std::vector<int> last = laterals_of(g, axis.segments.back());
+        if (mod.has_tip && !last.empty()) {
+            const double at_tip = m.turn[seg(last[0])].az;
+            if (mod.axis_phase[k])
+                tip_offset.add(at_tip - *mod.axis_phase[k] -
+                               mod.advance * static_cast<double>(n - 1));
+            else
+                mod.axis_phase[k] = wrap(at_tip - mod.advance * static_cast<double>(n - 1));
+        }
+    }
+    mod.tip_offset = tip_offset.n ? wrap(tip_offset.mean()) : 0.0;
+    // Axes without laterals take their phase from their bends.
+    {
+        std::vector<std::size_t> unphased;
+        for (std::size_t k = 0; k < axes.size(); ++k)
+            if (!mod.axis_phase[k]) unphased.push_back(k);
+        const bool all = unphased.size() == axes.size();
+        for (std::size_t k : unphased) {
+            const Axis& axis = g.axes[seg(axes[k])];
+            if (!all || axis.segments.size() < 2) continue;
+            const Turn& t = m.turn[seg(axis.segments[1])];
+            if (t.pitch > 0.05) mod.axis_phase[k] = wrap(t.az);
+        }
+    }
+
+    const TurnMean absolute = bends_of([](int, std::size_t) { return 0.0; });
+    std::map<int, std::size_t> index_of;
+    for (std::size_t k = 0; k < axes.size(); ++k) index_of[axes[k]] = k;
+    const TurnMean relative = bends_of([&](int a, std::size_t j) {
+        const std::optional<double>& p = mod.axis_phase[index_of[a]];
+        return p ? *p + mod.advance * mod.phase_steps(j) : 0.0;
+    });
+    const bool any_phase =
+        std::any_of(mod.axis_phase.begin(), mod.axis_phase.end(), [](auto& p) { return bool(p); });
+    mod.bend_relative = any_phase && relative.significance() > absolute.significance() * 1.05;
+    const TurnMean& chosen = mod.bend_relative ? relative : absolute;
+    if (chosen.significance() > 3.0 && chosen.magnitude() > 0.05) {
+        mod.bend = chosen.mean();
+        mod.bend.az = wrap(mod.bend.az);
+    }
     return mod;
 }
 
-// How this module's axes start as laterals: their phase and segment count.
-void fit_as_lateral(Module& mod, const Module& parent, const BranchGraph& g, const Measured& m) {
+// How this module's axes start as laterals: their phase, from their spawn azimuth or not.
+void fit_phase(Module& mod, const BranchGraph& g, const Measured& m) {
     Circular absolute, relative;
-    std::vector<std::pair<int, int>> count_budget;
-    for (int a : mod.axes) {
-        const Axis& axis = g.axes[static_cast<std::size_t>(a)];
-        if (axis.parent_segment < 0) continue;
+    for (std::size_t k = 0; k < mod.axes.size(); ++k) {
+        const Axis& axis = g.axes[static_cast<std::size_t>(mod.axes[k])];
+        if (axis.parent_segment < 0 || !mod.axis_phase[k]) continue;
         const std::size_t first = static_cast<std::size_t>(axis.segments.front());
-        if (std::optional<double> p = axis_phase(axis, g, m, mod.advance)) {
-            absolute.add(*p);
-            relative.add(*p - m.turn[first].az);
-        }
-        const int budget =
-            m.budget[static_cast<std::size_t>(axis.parent_segment)] - 1 - parent.budget_drop;
-        count_budget.emplace_back(static_cast<int>(axis.segments.size()), std::max(budget, 1));
+        absolute.add(*mod.axis_phase[k]);
+        relative.add(*mod.axis_phase[k] - m.turn[first].az);
     }
+    mod.phase_known = absolute.n > 0;
     mod.phase_relative = relative.strength() > absolute.strength() + 1e-6;
     mod.phase = mod.phase_relative ? wrap(relative.mean()) : wrap(absolute.mean());
-    // Segment count: min(budget, cap) or a share of the budget, whichever errs less.
-    auto error_cap = [&](int cap) {
-        long e = 0;
-        for (auto [n, b] : count_budget) e += std::abs(n - (cap ? std::min(b, cap) : b));
-        return e;
-    };
-    long best = error_cap(0);
-    mod.cap = 0;
-    std::vector<int> candidates;
-    for (auto [n, b] : count_budget) candidates.push_back(n);
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    for (int c : candidates) {
-        const long e = error_cap(c);
-        if (e < best) {
-            best = e;
-            mod.cap = c;
+}
+
+// Each slot's count model, from the laterals it holds in the example: the segments of
+// each against the budget its node left it.
+void fit_counts(std::vector<Module>& modules, const std::vector<int>& module_of_axis,
+                const BranchGraph& g, const Measured& m) {
+    for (std::size_t k = 0; k < modules.size(); ++k) {
+        Module& parent = modules[k];
+        // Per slot: (segments, height, node budget - 1) of each lateral.
+        struct Sample {
+            int n, h, b;
+        };
+        std::map<std::pair<bool, std::size_t>, std::vector<Sample>> groups;
+        std::map<std::pair<bool, std::size_t>, Circular> phases;
+        for (int a : parent.axes) {
+            const Axis& axis = g.axes[static_cast<std::size_t>(a)];
+            for (std::size_t j = 0; j < axis.segments.size(); ++j) {
+                const int s = axis.segments[j];
+                const bool tip = parent.has_tip && j + 1 == axis.segments.size();
+                const std::vector<int> lat = laterals_of(g, s);
+                for (std::size_t i = 0; i < lat.size(); ++i) {
+                    const Axis& child = g.axes[static_cast<std::size_t>(
+                        g.axis_of[static_cast<std::size_t>(lat[i])])];
+                    groups[{tip, i}].push_back({static_cast<int>(child.segments.size()),
+                                                g.height[static_cast<std::size_t>(lat[i])],
+                                                m.budget[static_cast<std::size_t>(s)] - 1});
+                    const int child_axis = g.axis_of[static_cast<std::size_t>(lat[i])];
+                    const int c = module_of_axis[static_cast<std::size_t>(child_axis)];
+                    if (c < 0) continue;
+                    const Module& cm = modules[static_cast<std::size_t>(c)];
+                    const auto at = std::find(cm.axes.begin(), cm.axes.end(), child_axis);
+                    const std::optional<double>& phase =
+                        cm.axis_phase[static_cast<std::size_t>(at - cm.axes.begin())];
+                    if (phase)
+                        phases[{tip, i}].add(
+                            cm.phase_relative ? *phase - m.turn[static_cast<std::size_t>(lat[i])].az
+                                              : *phase);
+                }
+            }
         }
-    }
-    double sn = 0.0, sb = 0.0;
-    for (auto [n, b] : count_budget) {
-        sn += n;
-        sb += b;
-    }
-    if (sb > 0.0) {
-        mod.share = std::min(1.0, sn / sb);
-        long e = 0;
-        for (auto [n, b] : count_budget)
-            e += std::abs(n - std::min(b, static_cast<int>(std::floor(mod.share * b + 0.5))));
-        if (e < best) mod.by_share = true;
+        const Module& child = modules[std::min(k + 1, modules.size() - 1)];
+        for (NodePattern* pattern : {&parent.interior, &parent.tip})
+            for (Slot& slot : pattern->slots) slot.child_phase = child.phase;
+        for (auto& [key, samples] : groups) {
+            NodePattern& pattern = key.first ? parent.tip : parent.interior;
+            if (key.second >= pattern.slots.size()) continue;
+            Slot& slot = pattern.slots[key.second];
+            slot.child_phase = phases[key].n ? wrap(phases[key].mean()) : child.phase;
+            // The drop d (the lateral's budget is the node's less 1 + d) that lets both its
+            // segments and its height follow best.
+            long best = -1;
+            for (int d = 0; d <= 4; ++d) {
+                std::vector<std::pair<int, int>> counts, heights;
+                for (const Sample& sample : samples) {
+                    const int b = std::max(sample.b - d, 1);
+                    counts.emplace_back(sample.n, b);
+                    heights.emplace_back(sample.h, b);
+                }
+                long count_error = 0, height_error = 0;
+                const FromBudget count = fit_from_budget(counts, &count_error);
+                const FromBudget height = fit_from_budget(heights, &height_error);
+                if (best >= 0 && count_error * 4 + height_error >= best) continue;
+                best = count_error * 4 + height_error;
+                slot.count = count;
+                slot.height = height;
+                slot.drop = d;
+            }
+        }
     }
 }
 
-bool similar(const Module& a, const Module& b) {
+bool similar_slots(const NodePattern& a, const NodePattern& b) {
+    if (a.nodes == 0 || b.nodes == 0) return true;  // one has no data: nothing contradicts
     if (a.slots.size() != b.slots.size() || a.ks.size() != b.ks.size()) return false;
-    if (a.bare != b.bare) return false;
-    if (a.phase_relative != b.phase_relative || a.cap != b.cap || a.by_share != b.by_share)
-        return false;
-    if (std::abs(wrap(a.phase - b.phase)) > 20.0) return false;
-    if (std::abs(wrap(a.advance - b.advance)) > 20.0) return false;
-    if (std::abs(std::log(a.length_ratio / b.length_ratio)) > 0.1) return false;
-    if (std::abs(a.bend.pitch - b.bend.pitch) > 5.0) return false;
     for (std::size_t i = 0; i < a.slots.size(); ++i) {
         if (std::abs(a.slots[i].pitch - b.slots[i].pitch) > 8.0) return false;
         if (std::abs(wrap(a.slots[i].offset - b.slots[i].offset)) > 20.0) return false;
         if (std::abs(std::log(a.slots[i].length / b.slots[i].length)) > 0.15) return false;
         if (std::abs(a.slots[i].chance - b.slots[i].chance) > 0.1) return false;
+    }
+    return true;
+}
+
+bool similar(const Module& a, const Module& b) {
+    const bool a_branches = a.interior.nodes > 0 || a.tip.nodes > 0;
+    const bool b_branches = b.interior.nodes > 0 || b.tip.nodes > 0;
+    if (a_branches && b_branches) {
+        if (a.has_tip != b.has_tip || a.bare != b.bare || a.period != b.period) return false;
+        if (!similar_slots(a.interior, b.interior) || !similar_slots(a.tip, b.tip)) return false;
+        if (std::abs(wrap(a.advance - b.advance)) > 20.0) return false;
+        if (a.has_tip && std::abs(wrap(a.tip_offset - b.tip_offset)) > 20.0) return false;
+    }
+    if (a.phase_known && b.phase_known) {
+        if (a.phase_relative != b.phase_relative) return false;
+        if (std::abs(wrap(a.phase - b.phase)) > 20.0) return false;
+    }
+    if (a.length_known && b.length_known) {
+        if (std::abs(std::log(a.length_ratio / b.length_ratio)) > 0.1) return false;
+        if (std::abs(a.bend.pitch - b.bend.pitch) > 5.0) return false;
+        if (a.bend.pitch > 0.0 && b.bend.pitch > 0.0 &&
+            (a.bend_relative != b.bend_relative || std::abs(wrap(a.bend.az - b.bend.az)) > 30.0))
+            return false;
     }
     return true;
 }
@@ -408,6 +748,12 @@ std::string num(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", v);
     return text;
+}
+
+std::string FromBudget::text(const std::string& b) const {
+    if (kind == Cap) return "min(" + b + "," + std::to_string(cap) + ")";
+    if (kind == Share) return "min(" + b + ",floor(" + num(share) + "*(" + b + ")+0.5))";
+    return b;
 }
 
 // Sums "a" and a number as text, leaving out a zero.
@@ -421,12 +767,35 @@ struct Writer {
     std::vector<int> child_of;  // per module: the module its laterals are
     std::vector<std::string> defines;
     int unroll = 1;
+    Convention convention = Convention::Vertical;
 
     std::string name(int module) const { return std::string(1, kLetters[module]); }
     // The module an axis starts with: its head rule when it has a bare stretch.
     std::string entry(int module) const {
         if (modules[static_cast<std::size_t>(module)].bare == 0) return name(module);
         return std::string(1, static_cast<char>(std::tolower(kLetters[module])));
+    }
+
+    // `/(az)&(angle)` and what the convention does after: `$`, or `\(az)` (roll back).
+    std::string turn(const std::string& az, const std::string& angle) const {
+        const bool no_az = az == "0";
+        std::string out = no_az ? "" : "/(" + az + ")";
+        out += "&(" + angle + ")";
+        if (convention == Convention::Vertical) return out + "$";
+        return no_az ? out : out + "\\(" + az + ")";
+    }
+
+    // The phase at a node `steps` divergences on.
+    static std::string phase_at(int steps, const std::string& id) {
+        return steps == 0 ? "p" : "p+" + std::to_string(steps) + "*dv" + id;
+    }
+
+    std::string bend(const Module& mod, const std::string& id, int steps,
+                     const std::string& gate) const {
+        if (mod.bend.pitch <= 0.0) return "";
+        std::string az = num(mod.bend.az);
+        if (mod.bend_relative) az = plus(phase_at(steps, id), mod.bend.az);
+        return turn(az, num(mod.bend.pitch) + gate);
     }
 
     // The head rule: the bare stretch in one rewrite, then the axis module.
@@ -440,8 +809,7 @@ struct Writer {
                 j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
             const std::string gate = j == 0 ? "" : "*(n>" + std::to_string(j) + ")";
             out += "!(w" + wider + ")F(l" + along + gate + ")";
-            if (mod.bend.pitch > 0.0)
-                out += "/(" + num(mod.bend.az) + ")&(" + num(mod.bend.pitch) + gate + ")$";
+            out += bend(mod, id, j, gate);
         }
         const std::string b = std::to_string(mod.bare);
         out += name(k) + "(n-" + b + ",m-" + b + ",l*" + num(mod.head_ratio) + ",w*" +
@@ -457,75 +825,99 @@ struct Writer {
         defines.push_back(line);
     }
 
-    // The lateral's call for slot i of module `k` at unrolled node j.
-    std::string lateral(int k, std::size_t i, int j, bool stochastic_slots) const {
+    // The call of slot i of module k's interior (or tip) laterals at unrolled node j;
+    // `gate` multiplies the count (empty: always).
+    std::string lateral(int k, bool tip, std::size_t i, int j, int steps, bool stochastic_slots,
+                        const std::string& gate) const {
         const Module& mod = modules[static_cast<std::size_t>(k)];
-        const Module& child =
-            modules[static_cast<std::size_t>(child_of[static_cast<std::size_t>(k)])];
-        const Slot& slot = mod.slots[i];
+        const int c = child_of[static_cast<std::size_t>(k)];
+        const Module& child = modules[static_cast<std::size_t>(c)];
+        const NodePattern& pattern = tip ? mod.tip : mod.interior;
+        const Slot& slot = pattern.slots[i];
         const std::string id = std::to_string(k);
-        std::string az = j == 0 ? "p" : "p+" + std::to_string(j) + "*dv" + id;
-        az = plus(az, slot.offset);
-        const std::string angle = plus("ba" + id, slot.pitch - mod.slots[0].pitch);
-        std::string budget = "m-" + std::to_string(j + 1 + mod.budget_drop);
-        std::string count;
-        if (child.by_share)
-            count = "min(" + budget + ",floor(" + num(child.share) + "*(" + budget + ")+0.5))";
-        else if (child.cap > 0)
-            count = "min(" + budget + "," + std::to_string(child.cap) + ")";
-        else
-            count = budget;
-        if (unroll > 1) count = "(" + count + ")*(n>" + std::to_string(j) + ")";
+        const std::string az =
+            plus(phase_at(steps, id), slot.offset + (tip ? mod.tip_offset : 0.0));
+        const std::string angle =
+            tip ? num(slot.pitch) : plus("ba" + id, slot.pitch - pattern.slots[0].pitch);
+        const std::string budget = "m-" + std::to_string(j + 1 + slot.drop);
+        std::string count = slot.count.text(budget);
+        if (!gate.empty()) count = "(" + count + ")*" + gate;
         if (stochastic_slots && slot.chance < 0.999)
             count = "(" + count + ")*(rand(0,1)<" + num(slot.chance) + ")";
         const std::string along = j == 0 ? "" : "*lr" + id + "^" + std::to_string(j);
         const std::string wider =
             j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
-        std::string length =
-            "l" + along + "*" +
-            (i == 0 ? "cl" + id : "cl" + id + "*" + num(slot.length / mod.slots[0].length));
+        std::string length = "l" + along + "*";
+        if (tip)
+            length += num(slot.length);
+        else
+            length +=
+                i == 0 ? "cl" + id : "cl" + id + "*" + num(slot.length / pattern.slots[0].length);
         std::string width = "w" + wider + "*" + num(slot.width);
         const std::string phase =
-            child.phase_relative ? plus("(" + az + ")", child.phase) : num(child.phase);
-        return "[/(" + az + ")&(" + angle + ")$" + entry(child_of[static_cast<std::size_t>(k)]) +
-               "(" + count + "," + budget + "," + length + "," + width + "," + phase + ")]";
+            child.phase_relative ? plus("(" + az + ")", slot.child_phase) : num(slot.child_phase);
+        return "[" + turn(az, angle) + entry(c) + "(" + count + "," + slot.height.text(budget) +
+               "," + length + "," + width + "," + phase + ")]";
     }
 
+    // One rewrite of module k: `unroll` periods of nodes, each period's first with
+    // `laterals` interior laterals (and the tip's at the last node).
     std::string body(int k, int laterals, bool stochastic_slots) const {
         const Module& mod = modules[static_cast<std::size_t>(k)];
         const std::string id = std::to_string(k);
+        const int nodes = unroll * mod.period;
         std::string out;
-        for (int j = 0; j < unroll; ++j) {
+        for (int j = 0; j < nodes; ++j) {
+            const int steps = j / mod.period;
             const std::string along = j == 0 ? "" : "*lr" + id + "^" + std::to_string(j);
             const std::string wider =
                 j == 0 ? "" : "*" + num(mod.width_ratio) + "^" + std::to_string(j);
-            const std::string gate = unroll > 1 ? "*(n>" + std::to_string(j) + ")" : "";
+            const std::string gate = nodes > 1 ? "*(n>" + std::to_string(j) + ")" : "";
             out += "!(w" + wider + ")F(l" + along + gate + ")";
-            for (int i = 0; i < laterals; ++i)
-                out += lateral(k, static_cast<std::size_t>(i), j, stochastic_slots);
-            if (mod.bend.pitch > 0.0) {
-                out += "/(" + num(mod.bend.az) + ")&(" + num(mod.bend.pitch) + gate + ")$";
-            }
+            // Interior laterals where a node follows (every node without a tip pattern).
+            std::string interior_gate;
+            if (mod.has_tip)
+                interior_gate = "(n>" + std::to_string(j + 1) + ")";
+            else if (nodes > 1)
+                interior_gate = "(n>" + std::to_string(j) + ")";
+            if (j % mod.period == 0)
+                for (int i = 0; i < laterals; ++i)
+                    out += lateral(k, false, static_cast<std::size_t>(i), j, steps,
+                                   stochastic_slots, interior_gate);
+            if (mod.has_tip)
+                for (std::size_t i = 0; i < mod.tip.slots.size(); ++i)
+                    out +=
+                        lateral(k, true, i, j, steps, true, "(n==" + std::to_string(j + 1) + ")");
+            out += bend(mod, id, steps, gate);
         }
-        const std::string u = std::to_string(unroll);
-        out += name(k) + "(n-" + u + ",m-" + u + ",l*lr" + id + (unroll > 1 ? "^" + u : "") +
-               ",w*" + num(mod.width_ratio) + (unroll > 1 ? "^" + u : "") + ",p+" +
-               (unroll > 1 ? u + "*" : "") + "dv" + id + ")";
+        const std::string u = std::to_string(nodes);
+        const std::string turns = std::to_string(unroll);
+        out += name(k) + "(n-" + u + ",m-" + u + ",l*lr" + id + (nodes > 1 ? "^" + u : "") + ",w*" +
+               num(mod.width_ratio) + (nodes > 1 ? "^" + u : "") + ",p+" +
+               (unroll > 1 ? turns + "*" : "") + "dv" + id + ")";
         return out;
     }
 };
 
-// The steps a derivation needs when each rewrite draws `unroll` segments of an axis.
-int steps_needed(const BranchGraph& g, int unroll, int literal_axis) {
+// The steps a derivation needs when each rewrite draws `unroll` segments of an axis and a
+// bare stretch is drawn in one.
+int steps_needed(const BranchGraph& g, int unroll, int literal_axis,
+                 const std::vector<int>& bare_of_axis, const std::vector<int>& period_of_axis) {
     std::vector<int> step(g.axis_of.size(), 0);
     int most = 0;
-    for (const Axis& axis : g.axes) {
+    for (std::size_t a = 0; a < g.axes.size(); ++a) {
+        const Axis& axis = g.axes[a];
         int start = 1;
         if (axis.parent_segment >= 0)
             start = step[static_cast<std::size_t>(axis.parent_segment)] + 1;
-        const bool literal = &axis - g.axes.data() == literal_axis;
+        const bool literal = static_cast<int>(a) == literal_axis;
+        const int bare = bare_of_axis[a];
+        const int per = unroll * period_of_axis[a];
         for (std::size_t j = 0; j < axis.segments.size(); ++j) {
-            const int s = literal ? 0 : start + static_cast<int>(j) / unroll;
+            const int jj = static_cast<int>(j);
+            int s = start + jj / per;
+            if (bare > 0) s = jj < bare ? start : start + 1 + (jj - bare) / per;
+            if (literal) s = 0;
             step[static_cast<std::size_t>(axis.segments[j])] = s;
             most = std::max(most, s);
         }
@@ -544,15 +936,15 @@ bool is_pipe(const Skeleton& skeleton, const TreeParams& params) {
     return true;
 }
 
-}  // namespace
-
-InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings) {
+// One inference with one frame convention, with tip patterns or without; `used_tips`
+// says whether some module took one.
+InferredTemplate infer_with(const ExampleTree& example, const InferSettings& settings,
+                            const BranchGraph& g, Convention convention, bool tips,
+                            bool* used_tips) {
     const Skeleton& skeleton = example.skeleton;
-    if (skeleton.segments.empty()) throw InputError("the example tree has no segments");
-    const BranchGraph g = build_branch_graph(skeleton, example.continuation);
     const TreeParams source = example.params.value_or(TreeParams{});
     const double elasticity = example.params ? source.tropism : 0.0;
-    const Measured m = measure(skeleton, g, elasticity);
+    const Measured m = measure(skeleton, g, elasticity, convention);
     throw_if_cancelled(settings.cancel);
     InferredTemplate result;
 
@@ -586,22 +978,19 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             for (int q = o; q <= (o >= fold ? max_order : o); ++q)
                 axes.insert(axes.end(), by_order[static_cast<std::size_t>(q)].begin(),
                             by_order[static_cast<std::size_t>(q)].end());
-            Module mod = fit_module(axes, g, m, 0);
+            Module mod = fit_module(axes, g, m, tips);
             mod.first_order = o;
             mod.last_order = o >= fold ? max_order : o;
             mods.push_back(mod);
             if (o >= fold) break;
         }
-        for (std::size_t k = 0; k < mods.size(); ++k) {
-            const Module& parent = k == 0 ? mods[0] : mods[k - 1];
-            fit_as_lateral(mods[k], parent, g, m);
-        }
+        for (Module& mod : mods) fit_phase(mod, g, m);
         return mods;
     };
     auto rule_count = [](const std::vector<Module>& mods, bool alternatives) {
         int n = 0;
         for (const Module& mod : mods)
-            n += (alternatives ? std::max<int>(1, static_cast<int>(mod.ks.size())) : 1) +
+            n += (alternatives ? std::max<int>(1, static_cast<int>(mod.interior.ks.size())) : 1) +
                  (mod.bare > 0 ? 1 : 0);
         return n;
     };
@@ -621,25 +1010,39 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         modules = build(fold);
     }
     if (modules.empty()) modules.push_back(Module{});  // a literal trunk without branches
+    std::vector<int> module_of_axis(g.axes.size(), -1);
+    for (std::size_t k = 0; k < modules.size(); ++k)
+        for (int a : modules[k].axes)
+            module_of_axis[static_cast<std::size_t>(a)] = static_cast<int>(k);
+    fit_counts(modules, module_of_axis, g, m);
+    *used_tips =
+        std::any_of(modules.begin(), modules.end(), [](const Module& mod) { return mod.has_tip; });
 
     // Segments per rewrite, so the derivation fits the generations a template may have.
     const int literal_axis = literal_trunk ? trunk : -1;
+    std::vector<int> bare_of_axis(g.axes.size(), 0), period_of_axis(g.axes.size(), 1);
+    for (std::size_t a = 0; a < g.axes.size(); ++a)
+        if (module_of_axis[a] >= 0) {
+            bare_of_axis[a] = modules[static_cast<std::size_t>(module_of_axis[a])].bare;
+            period_of_axis[a] = modules[static_cast<std::size_t>(module_of_axis[a])].period;
+        }
+    auto steps = [&](int u) {
+        return steps_needed(g, u, literal_axis, bare_of_axis, period_of_axis);
+    };
     int unroll = 1;
-    while (unroll < 16 && steps_needed(g, unroll, literal_axis) > settings.max_generations)
-        ++unroll;
-    const int generations =
-        std::min(settings.max_generations, steps_needed(g, unroll, literal_axis));
+    while (unroll < 16 && steps(unroll) > settings.max_generations) ++unroll;
+    const int generations = std::min(settings.max_generations, steps(unroll));
     const bool alternatives = unroll == 1;
     int rules = rule_count(modules, alternatives);
     while (rules > settings.max_rules) {
         // Keep the two most frequent lateral counts of the module with the most.
         Module* widest = nullptr;
         for (Module& mod : modules)
-            if (!widest || mod.ks.size() > widest->ks.size()) widest = &mod;
-        if (!widest || widest->ks.size() <= 1) break;
-        std::sort(widest->ks.begin(), widest->ks.end(),
+            if (!widest || mod.interior.ks.size() > widest->interior.ks.size()) widest = &mod;
+        if (!widest || widest->interior.ks.size() <= 1) break;
+        std::sort(widest->interior.ks.begin(), widest->interior.ks.end(),
                   [](auto& a, auto& b) { return a.second > b.second; });
-        widest->ks.resize(widest->ks.size() - 1);
+        widest->interior.ks.resize(widest->interior.ks.size() - 1);
         result.generalised.push_back("module " + std::string(1, kLetters[widest - modules.data()]) +
                                      ": the rarest lateral count dropped to stay within " +
                                      std::to_string(settings.max_rules) + " rules");
@@ -651,7 +1054,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
                                      " rules, more than the limit of " +
                                      std::to_string(settings.max_rules));
 
-    Writer w{modules, {}, {}, unroll};
+    Writer w{modules, {}, {}, unroll, convention};
     for (std::size_t k = 0; k < modules.size(); ++k)
         w.child_of.push_back(static_cast<int>(std::min(k + 1, modules.size() - 1)));
     for (std::size_t k = 0; k < modules.size(); ++k) {
@@ -663,12 +1066,14 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         w.define("lr" + id, mod.length_ratio, std::min(0.3, mod.length_ratio * 0.5),
                  std::max(1.2, mod.length_ratio * 1.5),
                  what + ": length of a segment over the one before");
-        if (!mod.slots.empty()) {
-            w.define("ba" + id, mod.slots[0].pitch, 0.0, std::max(120.0, mod.slots[0].pitch),
+        if (!mod.interior.slots.empty()) {
+            w.define("ba" + id, mod.interior.slots[0].pitch, 0.0,
+                     std::max(120.0, mod.interior.slots[0].pitch),
                      what + ": branch angle, degrees");
             w.define("dv" + id, mod.advance, -180.0, 180.0,
                      what + ": divergence from one node's branches to the next, degrees");
-            w.define("cl" + id, mod.slots[0].length, 0.05, std::max(2.0, mod.slots[0].length * 2.0),
+            w.define("cl" + id, mod.interior.slots[0].length, 0.05,
+                     std::max(2.0, mod.interior.slots[0].length * 2.0),
                      what + ": a branch's first segment over its parent segment");
         } else {
             w.define("dv" + id, mod.advance, -180.0, 180.0, what + ": roll per node, degrees");
@@ -682,17 +1087,22 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         const Axis& axis = g.axes[static_cast<std::size_t>(axis_index)];
         const std::size_t s =
             static_cast<std::size_t>(axis.segments[static_cast<std::size_t>(skip)]);
-        const double phase = axis_phase(axis, g, m, mod.advance).value_or(0.0) +
-                             mod.advance * static_cast<double>(skip);
+        double phase = 0.0;
+        for (std::size_t k = 0; k < mod.axes.size(); ++k)
+            if (mod.axes[k] == axis_index && mod.axis_phase[k]) phase = *mod.axis_phase[k];
+        phase += mod.advance * static_cast<double>(skip);
         return "(" + std::to_string(axis.segments.size() - static_cast<std::size_t>(skip)) + "," +
                std::to_string(m.budget[s]) + "," + num(m.length[s]) + "," + num(m.width[s]) + "," +
                num(wrap(phase)) + ")";
     };
-    auto turn_text = [](const Turn& t) {
+    auto turn_text = [&](const Turn& t) {
         std::string out;
-        if (std::abs(t.az) > 5e-7) out += "/(" + num(t.az) + ")";
-        if (std::abs(t.pitch) > 5e-7) out += "&(" + num(t.pitch) + ")";
-        return out + "$";
+        const bool az = std::abs(t.az) > 5e-7, pitched = std::abs(t.pitch) > 5e-7;
+        if (az) out += "/(" + num(t.az) + ")";
+        if (pitched) out += "&(" + num(t.pitch) + ")";
+        if (convention == Convention::Vertical) return out + "$";
+        if (az) out += "\\(" + num(t.az) + ")";
+        return out;
     };
     if (literal_trunk) {
         const Axis& axis = g.axes[static_cast<std::size_t>(trunk)];
@@ -703,9 +1113,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             for (int c : laterals_of(g, s)) {
                 const std::size_t ci = static_cast<std::size_t>(c);
                 const int child_axis = g.axis_of[ci];
-                const Axis& lateral = g.axes[static_cast<std::size_t>(child_axis)];
-                const int k = std::clamp(lateral.order - first_order, 0,
-                                         static_cast<int>(modules.size()) - 1);
+                const int k = std::max(module_of_axis[static_cast<std::size_t>(child_axis)], 0);
                 axiom += "[" + turn_text(m.turn[ci]) + w.entry(k) +
                          start_args(child_axis, modules[static_cast<std::size_t>(k)], 0) + "]";
             }
@@ -716,7 +1124,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         for (int r : g.roots) {
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
-            const bool bracket = skeleton.segments[ri].depth > 0;
+            const bool bracket = skeleton.segments[ri].depth > 0 || g.roots.size() > 1;
             axiom += (bracket ? "[" : "") + turn_text(m.turn[ri]) + w.entry(0) +
                      start_args(axis, first, 0) + (bracket ? "]" : "");
         }
@@ -736,12 +1144,12 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
         const Module& mod = modules[k];
         if (mod.axes.empty()) continue;
         const std::string head = w.name(static_cast<int>(k)) + "(n,m,l,w,p) : n > 0 -> ";
-        if (!alternatives || mod.ks.size() <= 1) {
-            const int laterals = static_cast<int>(mod.slots.size());
+        if (!alternatives || mod.interior.ks.size() <= 1) {
+            const int laterals = static_cast<int>(mod.interior.slots.size());
             grammar += head + w.body(static_cast<int>(k), laterals, !alternatives) + "\n";
             ++written;
         } else {
-            for (const auto& [count, weight] : mod.ks) {
+            for (const auto& [count, weight] : mod.interior.ks) {
                 grammar +=
                     head + w.body(static_cast<int>(k), count, false) + " : " + num(weight) + "\n";
                 ++written;
@@ -751,7 +1159,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             grammar += w.head(static_cast<int>(k)) + "\n";
             ++written;
         }
-        if (mod.ks.size() > 1)
+        if (mod.interior.ks.size() > 1)
             result.generalised.push_back(
                 "module " + w.name(static_cast<int>(k)) +
                 ": nodes with different numbers of "
@@ -824,6 +1232,69 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
            << "# smoothly (length ratios, branch and divergence angles). docs/infer.md says how.\n";
     result.text = template_file_text(tree, header.str() + "name = \"\"\n");
     return result;
+}
+
+// How far a regrown skeleton is from the example: the relative differences of the fit
+// report's figures and the Hausdorff distance over the height, summed.
+double misfit(const SkeletonFigures& want, const std::vector<glm::vec3>& want_points, float spacing,
+              const Skeleton& grown) {
+    const SkeletonFigures have = skeleton_figures(grown);
+    auto diff = [](double a, double b) {
+        if (a == 0.0) return b == 0.0 ? 0.0 : 1.0;
+        return std::abs(b - a) / std::abs(a);
+    };
+    double depth = 0.0;
+    const std::size_t depths = std::max(want.per_depth.size(), have.per_depth.size());
+    for (std::size_t d = 0; d < depths; ++d)
+        depth = std::max(depth, diff(d < want.per_depth.size() ? double(want.per_depth[d]) : 0.0,
+                                     d < have.per_depth.size() ? double(have.per_depth[d]) : 0.0));
+    const double height = std::max(want.height, 1e-6);
+    return diff(double(want.segments), double(have.segments)) +
+           diff(want.total_length, have.total_length) + diff(want.height, have.height) +
+           diff(want.crown_width, have.crown_width) + 0.5 * depth +
+           hausdorff_distance(want_points, sample_skeleton(grown, spacing)) / height;
+}
+
+}  // namespace
+
+InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings) {
+    const Skeleton& skeleton = example.skeleton;
+    if (skeleton.segments.empty()) throw InputError("the example tree has no segments");
+    const BranchGraph g = build_branch_graph(skeleton, example.continuation);
+    // The example with its orders as branch depths, as a regrown tree counts them.
+    Skeleton ordered = skeleton;
+    for (std::size_t i = 0; i < ordered.segments.size(); ++i)
+        ordered.segments[i].depth = g.axes[static_cast<std::size_t>(g.axis_of[i])].order;
+    const SkeletonFigures want = skeleton_figures(ordered);
+    const float spacing = static_cast<float>(std::max(want.height, 1e-3) / 200.0);
+    const std::vector<glm::vec3> want_points = sample_skeleton(ordered, spacing);
+
+    // Each frame convention, with tip patterns and (where some module took one) without,
+    // kept when it regrows the example closer: no one model fits every grammar, and a
+    // regrowth is cheap next to reading the example.
+    std::optional<InferredTemplate> best;
+    double best_misfit = 0.0;
+    for (Convention convention : {Convention::Vertical, Convention::Minimal}) {
+        for (bool tips : {true, false}) {
+            bool used_tips = false;
+            InferredTemplate candidate =
+                infer_with(example, settings, g, convention, tips, &used_tips);
+            GrowthContext context;
+            context.cancel = settings.cancel;
+            double score = 1e9;
+            try {
+                score = misfit(want, want_points, spacing, grow(candidate.tree, context));
+            } catch (const InputError&) {
+                // A grammar over a cost limit regrows nothing: another candidate wins.
+            }
+            if (!best || score < best_misfit) {
+                best = std::move(candidate);
+                best_misfit = score;
+            }
+            if (!used_tips) break;  // without tips it would be the same
+        }
+    }
+    return std::move(*best);
 }
 
 }  // namespace sylva

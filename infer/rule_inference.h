@@ -7,11 +7,13 @@
 // module. Every module is an axis: X(n, m, l, w, p) draws n more segments of length l
 // (times a ratio per segment) and width w; at each node it sheds laterals at the phase p
 // (advanced by a divergence angle per node) with a branch angle, each an axis of the next
-// module whose segment count follows from the height budget m. Angles are measured in the
-// turtle's frame rolled to the vertical after each step (`$`, ABOP 1.5 ; Prusinkiewicz and
-// Lindenmayer 1990), so a branch angle means the same on every branch. Where the example's
-// nodes differ in how many laterals they carry, the module gets weighted alternatives
-// (stochastic rules) with the observed frequencies.
+// module whose segment count follows from the height budget m (a whole-number model per
+// branch slot, fitted to the example's counts). Angles are measured in the turtle's frame
+// either rolled to the vertical after each step (`$`, ABOP 1.5 ; Prusinkiewicz and
+// Lindenmayer 1990), so a branch angle means the same on every branch, or moved by the
+// least rotation, as a grammar without `$` moves it; both models are inferred, regrown
+// and the closer kept. Where the example's nodes differ in how many laterals they carry,
+// the module gets weighted alternatives (stochastic rules) with the observed frequencies.
 #pragma once
 
 #include <string>
@@ -45,8 +47,9 @@ struct InferredTemplate {
 
 // Infers the template. Throws InputError when the example cannot be expressed at all
 // (it can always be, for a tree that passed finish_example_tree()), Cancelled when
-// settings.cancel is set. Deterministic: the
-// same example gives the same text. Thread-safe. Linear in the segments.
+// settings.cancel is set. Deterministic: the same example gives the same text.
+// Thread-safe. Regrows up to four candidate templates to choose among them, each linear in
+// the segments.
 InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings = {});
 
 }  // namespace sylva

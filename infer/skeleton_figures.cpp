@@ -40,8 +40,13 @@ std::vector<glm::vec3> sample_skeleton(const Skeleton& skeleton, float spacing) 
 namespace {
 
 struct Grid {
+    struct Cell {
+        glm::ivec3 at;
+        std::vector<glm::vec3> points;
+    };
     float cell;
-    std::unordered_map<std::uint64_t, std::vector<glm::vec3>> cells;
+    std::vector<Cell> list;
+    std::unordered_map<std::uint64_t, std::size_t> index;  // key -> position in list
     static std::uint64_t key(int x, int y, int z) {
         return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x) & 0x1FFFFF) << 42) |
                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y) & 0x1FFFFF) << 21) |
@@ -51,25 +56,41 @@ struct Grid {
     Grid(const std::vector<glm::vec3>& points, float c) : cell(c) {
         for (const glm::vec3& p : points) {
             const glm::ivec3 i = at(p);
-            cells[key(i.x, i.y, i.z)].push_back(p);
+            const auto [it, added] = index.try_emplace(key(i.x, i.y, i.z), list.size());
+            if (added) list.push_back({i, {}});
+            list[it->second].points.push_back(p);
         }
     }
-    // Distance to the nearest point, searching shells of cells outwards.
-    double nearest(const glm::vec3& p) const {
+    void visit(const Cell& c, const glm::vec3& p, double& best) const {
+        for (const glm::vec3& q : c.points)
+            best = std::min(best, static_cast<double>(glm::length(p - q)));
+    }
+    // Distance to the nearest point, or some distance no larger than `enough` once one is
+    // found that close (a point nearer than the largest distance so far cannot raise a
+    // maximum). Searches shells of cells outwards, then, for a point far from every cell,
+    // every cell whose box is nearer than the best so far: a far point costs one pass over
+    // the cells, not a cube of empty ones.
+    double nearest(const glm::vec3& p, double enough) const {
         const glm::ivec3 c = at(p);
         double best = std::numeric_limits<double>::infinity();
-        for (int r = 0; r < 1 << 20; ++r) {
-            if (best < (r - 1) * static_cast<double>(cell)) break;
+        constexpr int kShells = 4;
+        for (int r = 0; r <= kShells; ++r) {
+            if (best < (r - 1) * static_cast<double>(cell) || best <= enough) return best;
             for (int x = -r; x <= r; ++x)
                 for (int y = -r; y <= r; ++y)
                     for (int z = -r; z <= r; ++z) {
                         if (std::max({std::abs(x), std::abs(y), std::abs(z)}) != r) continue;
-                        auto it = cells.find(key(c.x + x, c.y + y, c.z + z));
-                        if (it == cells.end()) continue;
-                        for (const glm::vec3& q : it->second)
-                            best = std::min(best, static_cast<double>(glm::length(p - q)));
+                        auto it = index.find(key(c.x + x, c.y + y, c.z + z));
+                        if (it != index.end()) visit(list[it->second], p, best);
                     }
-            if (r > 64 && std::isfinite(best)) break;
+        }
+        if (best < kShells * static_cast<double>(cell) || best <= enough) return best;
+        for (const Cell& other : list) {
+            const glm::vec3 lo = glm::vec3(other.at) * cell;
+            const glm::vec3 gap = glm::max(glm::max(lo - p, p - (lo + cell)), glm::vec3(0.0f));
+            if (static_cast<double>(glm::length(gap)) >= best) continue;
+            visit(other, p, best);
+            if (best <= enough) return best;
         }
         return best;
     }
@@ -77,7 +98,7 @@ struct Grid {
 
 double directed(const std::vector<glm::vec3>& from, const Grid& to) {
     double worst = 0.0;
-    for (const glm::vec3& p : from) worst = std::max(worst, to.nearest(p));
+    for (const glm::vec3& p : from) worst = std::max(worst, to.nearest(p, worst));
     return worst;
 }
 

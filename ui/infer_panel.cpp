@@ -129,8 +129,7 @@ void fit_table(const FitReport& r) {
     figure_row("total length", r.example.total_length, r.regrown.total_length, "%.2f m",
                kLengthTarget);
     figure_row("height", r.example.height, r.regrown.height, "%.2f m", kHeightTarget);
-    figure_row("crown width", r.example.crown_width, r.regrown.crown_width, "%.2f m",
-               kWidthTarget);
+    figure_row("crown width", r.example.crown_width, r.regrown.crown_width, "%.2f m", kWidthTarget);
     // Per depth: the worst depth in the row, every depth in the tooltip.
     const std::size_t depths = std::max(r.example.per_depth.size(), r.regrown.per_depth.size());
     double worst = 0.0;
@@ -149,12 +148,10 @@ void fit_table(const FitReport& r) {
     ImGui::TextUnformatted("per depth");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", every.c_str());
     // The depths each tree has, and the difference at the depth that differs most.
-    const double a = worst_depth < r.example.per_depth.size()
-                         ? double(r.example.per_depth[worst_depth])
-                         : 0.0;
-    const double b = worst_depth < r.regrown.per_depth.size()
-                         ? double(r.regrown.per_depth[worst_depth])
-                         : 0.0;
+    const double a =
+        worst_depth < r.example.per_depth.size() ? double(r.example.per_depth[worst_depth]) : 0.0;
+    const double b =
+        worst_depth < r.regrown.per_depth.size() ? double(r.regrown.per_depth[worst_depth]) : 0.0;
     ImGui::TableNextColumn();
     ImGui::Text("%zu depths", r.example.per_depth.size());
     ImGui::TableNextColumn();
@@ -228,12 +225,11 @@ void start_infer_from_tree(InferPanel& panel, const StudioState& state) {
                                 " leaf polygons are not regrown (infer regrows branches)");
     const auto started = std::chrono::steady_clock::now();
     panel.job = std::async(std::launch::async, [example = std::move(example), name,
-                                                 rules = panel.max_rules, started,
-                                                 cancel = panel.cancel]() mutable {
+                                                rules = panel.max_rules, started,
+                                                cancel = panel.cancel]() mutable {
         finish_example_tree(example, name);
         const std::string source = example.format;
-        return derive(std::move(example), source, name + "-inferred", rules, started,
-                      cancel.get());
+        return derive(std::move(example), source, name + "-inferred", rules, started, cancel.get());
     });
 }
 
@@ -243,12 +239,12 @@ void start_infer_from_file(InferPanel& panel, const std::string& path) {
     if (panel.up == 1) up = UpAxis::Y;
     if (panel.up == 2) up = UpAxis::Z;
     const auto started = std::chrono::steady_clock::now();
-    panel.job = std::async(std::launch::async, [path, up, rules = panel.max_rules, started,
-                                                 cancel = panel.cancel] {
-        ExampleTree example = read_example_tree(path, up);
-        const std::string name = std::filesystem::path(path).stem().string() + "-inferred";
-        return derive(std::move(example), path, name, rules, started, cancel.get());
-    });
+    panel.job = std::async(
+        std::launch::async, [path, up, rules = panel.max_rules, started, cancel = panel.cancel] {
+            ExampleTree example = read_example_tree(path, up);
+            const std::string name = std::filesystem::path(path).stem().string() + "-inferred";
+            return derive(std::move(example), path, name, rules, started, cancel.get());
+        });
 }
 
 bool infer_running(const InferPanel& panel) {
@@ -295,9 +291,9 @@ void draw_infer_panel(InferPanel& panel, StudioState& state, const PanelLayout& 
                               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                                   ImGuiWindowFlags_NoSavedSettings);
     const float view_height = layout.height - layout.bottom;
-    panel.covered = std::clamp((ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) /
-                                   std::max(view_height, 1.0f),
-                               0.0f, 0.6f);
+    panel.covered = std::clamp(
+        (ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) / std::max(view_height, 1.0f), 0.0f,
+        0.6f);
     if (!panel.open) {
         ImGui::End();
         return;

@@ -49,7 +49,7 @@ struct InferPanel {
     std::optional<InferOutcome> result;
     std::string error;
     InferOverlay overlay = InferOverlay::Beside;
-    glm::vec3 offset{0.0f};  // where the example's lines stand beside the regrown tree
+    glm::vec3 offset{0.0f};           // where the example's lines stand beside the regrown tree
     glm::vec3 low{0.0f}, high{0.0f};  // the example's bounds, unshifted
     float covered = 0.0f;  // the share of the 3D view's height the window covers, at its top
     std::unique_ptr<LineRenderer> lines;

@@ -3,13 +3,18 @@
 // written template reads back. The sweep over every template is sylva-bench-infer's job.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "export/skeleton_json.h"
 #include "infer/example_tree.h"
 #include "infer/fit_report.h"
 #include "infer/rule_inference.h"
+#include "infer/skeleton_figures.h"
 #include "tree/growth.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
@@ -111,10 +116,36 @@ TEST(InferReaders, BadInputNamesTheRowOrKey) {
     }
 }
 
+// The Hausdorff distance against a brute-force one, with points near and far from the
+// other set (a far point is found through every cell, not the shells around it).
+TEST(InferFigures, HausdorffMatchesBruteForce) {
+    std::vector<glm::vec3> a, b;
+    for (int i = 0; i < 200; ++i) {
+        const float t = static_cast<float>(i);
+        a.emplace_back(std::sin(t) * 2.0f, t * 0.05f, std::cos(t * 0.7f));
+        b.emplace_back(std::sin(t + 0.3f) * 2.0f, t * 0.05f + 0.1f, std::cos(t * 0.7f));
+    }
+    b.emplace_back(40.0f, 30.0f, -25.0f);  // far from every point of a
+    auto directed = [](const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to) {
+        double worst = 0.0;
+        for (const glm::vec3& p : from) {
+            double best = 1e30;
+            for (const glm::vec3& q : to)
+                best = std::min(best, static_cast<double>(glm::length(p - q)));
+            worst = std::max(worst, best);
+        }
+        return worst;
+    };
+    const double expected = std::max(directed(a, b), directed(b, a));
+    EXPECT_NEAR(hausdorff_distance(a, b), expected, 1e-5 * expected);
+    EXPECT_NEAR(hausdorff_distance(b, a), expected, 1e-5 * expected);
+    EXPECT_EQ(hausdorff_distance(a, a), 0.0);
+}
+
 // Deterministic templates regrow exactly: the same segment count and a Hausdorff distance
 // within 1 % of the height.
 TEST(InferRules, DeterministicTemplatesRegrowExactly) {
-    for (const char* name : {"honda", "fir", "cypress"}) {
+    for (const char* name : {"honda", "fir", "cypress", "bush"}) {
         const ExampleTree example = example_of(name);
         const InferredTemplate inferred = infer_template(example);
         const FitReport r = fit_report(example, inferred);
@@ -124,18 +155,24 @@ TEST(InferRules, DeterministicTemplatesRegrowExactly) {
     }
 }
 
-TEST(InferRules, StochasticOakWithinTheTargets) {
-    const ExampleTree example = example_of("oak");
-    const FitReport r = fit_report(example, infer_template(example));
-    EXPECT_LE(relative_difference(double(r.example.segments), double(r.regrown.segments)), 0.1);
-    EXPECT_LE(relative_difference(r.example.total_length, r.regrown.total_length), 0.1);
-    EXPECT_LE(relative_difference(r.example.height, r.regrown.height), 0.05);
-    EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.05);
-    ASSERT_EQ(r.example.per_depth.size(), r.regrown.per_depth.size());
-    for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
-        EXPECT_LE(
-            relative_difference(double(r.example.per_depth[d]), double(r.regrown.per_depth[d])),
-            0.1);
+// Stochastic trees: the oak (branches at every node) and the baobab (a bare trunk 24
+// segments long ending in a whorl) regrow within the targets of the figures.
+TEST(InferRules, StochasticTreesWithinTheTargets) {
+    for (const char* name : {"oak", "baobab"}) {
+        const ExampleTree example = example_of(name);
+        const FitReport r = fit_report(example, infer_template(example));
+        EXPECT_LE(relative_difference(double(r.example.segments), double(r.regrown.segments)), 0.1)
+            << name;
+        EXPECT_LE(relative_difference(r.example.total_length, r.regrown.total_length), 0.1) << name;
+        EXPECT_LE(relative_difference(r.example.height, r.regrown.height), 0.05) << name;
+        EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.05) << name;
+        ASSERT_EQ(r.example.per_depth.size(), r.regrown.per_depth.size()) << name;
+        for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
+            EXPECT_LE(
+                relative_difference(double(r.example.per_depth[d]), double(r.regrown.per_depth[d])),
+                0.1)
+                << name << " depth " << d;
+    }
 }
 
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
