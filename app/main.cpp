@@ -387,8 +387,7 @@ int run_export(const Options& o) {
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
     // The reduction's cost depends on the meshes (their handles): known only now.
-    check_cost(estimate_reduction_cost(tree.trunk, tree.crown, mesh.budget), o.limits,
-               kRaiseLimits);
+    check_cost(estimate_reduction_cost(tree, mesh.budget), o.limits, kRaiseLimits);
 
     // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
     // and a core is often free (the reduction of a big trunk waits for nothing either).

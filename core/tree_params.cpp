@@ -20,6 +20,8 @@ struct Field {
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
 constexpr std::string_view kCrownShapes[] = {"auto", "blobs", "hulls"};
+constexpr std::string_view kBranchStyles[] = {"auto", "prisms", "surface"};
+constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none"};
 constexpr std::string_view kEnvelopes[] = {"sphere",   "ellipsoid",  "cone",
                                            "cylinder", "hemisphere", "template"};
 constexpr std::string_view kEnvelopeTemplates[] = {
@@ -140,6 +142,20 @@ const std::vector<Field>& fields() {
               "game mesh crown as hulls: triangles of the budget per lump (more: fewer, larger "
               "lumps)",
               10, 1000, &TreeParams::crown_lump_triangles),
+        {{"branch_style",
+          "game mesh branches: prisms (a few-sided prism per branch, pointed at the tips), "
+          "surface (the trunk's smooth surface reduced with the crown) or auto (surface when "
+          "joint_blend blends the joints, else prisms)",
+          0, 2, true, kBranchStyles},
+         nullptr,
+         &TreeParams::branch_style},
+        {{"leaf_style",
+          "leaves: cards (a game mesh over its leaf budget draws a card per patch of foliage), "
+          "leaves (it keeps some of the tree's own leaves, grown) or none (no leaves, the crown "
+          "alone)",
+          0, 2, true, kLeafStyles},
+         nullptr,
+         &TreeParams::leaf_style},
         // Space colonization (Liebemann 2017, chapter 3).
         whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
               &TreeParams::attraction_points),
@@ -282,6 +298,12 @@ std::string range_text(const ParamInfo& info) {
 }
 
 }  // namespace
+
+BranchStyle branch_style(const TreeParams& params) {
+    const auto style = static_cast<BranchStyle>(params.branch_style);
+    if (style != BranchStyle::Automatic) return style;
+    return params.joint_blend > 0.0 ? BranchStyle::Surface : BranchStyle::Prisms;
+}
 
 std::span<const std::string_view> envelope_template_names() {
     return kEnvelopeTemplates;

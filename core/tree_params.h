@@ -38,6 +38,8 @@ struct TreeParams {
     int triangle_budget = 800;      // export: trunk + crown reduced to this (0 = no reduction)
     int crown_shape = 0;            // CrownShape: how the game mesh draws the crown
     int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
+    int branch_style = 0;           // BranchStyle: how the game mesh draws the branches
+    int leaf_style = 0;             // LeafStyle: how the game mesh draws the leaves
     // Space colonization (growth = "colonization", Liebemann 2017, chapter 3); the L-system
     // ignores these.
     int attraction_points = 2000;    // N
@@ -97,6 +99,22 @@ enum class CrownShape {
     Blobs = 1,      // the crown's own surface, reduced
     Hulls = 2,      // the convex hulls of a few clusters of the crown, reduced
 };
+
+// Choices of the `branch_style` parameter: how a game mesh draws the trunk and branches.
+enum class BranchStyle {
+    Automatic = 0,  // prisms, unless the template blends its joints (joint_blend > 0)
+    Prisms = 1,     // a few-sided prism per branch from the skeleton (tree/branch_prisms.h)
+    Surface = 2,    // the trunk field's surface, meshed and reduced with the crown
+};
+// Choices of the `leaf_style` parameter: how leaves are drawn.
+enum class LeafStyle {
+    Cards = 0,   // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
+    Leaves = 1,  // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
+    None = 2,    // no leaves at all: the crown alone, flat coloured
+};
+
+// The branch style `params` resolve to (never Automatic).
+BranchStyle branch_style(const TreeParams& params);
 
 // Choices of the `envelope_template` parameter: the built-in templates (by name) whose
 // crown a colonization envelope can be. Core cannot ask the template library, so the names

@@ -316,7 +316,7 @@ std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const
         return std::nullopt;
     FinishedTree finished = previous.finished;
     for (std::size_t i = 0; i < finished.levels.size(); ++i)
-        finished.levels[i].leaves = thin_leaves(tree.leaves, finished.leaf_budgets[i]);
+        finished.levels[i].leaves = game_leaves(tree, finished.leaf_budgets[i]);
     return finished;
 }
 

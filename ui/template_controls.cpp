@@ -434,8 +434,10 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         for (std::string_view key : {"crown_resolution", "crown_blend", "crown_fusion",
                                      "crown_shape", "crown_lump_triangles"})
             mark(key, "crown_mesh is off: the crown is not meshed (its leaves stay)");
-    if (p.triangle_budget == 0)
+    if (p.triangle_budget == 0) {
         mark("crown_shape", "triangle_budget is 0: the game mesh keeps the crown as meshed");
+        mark("branch_style", "triangle_budget is 0: the game mesh keeps the trunk as meshed");
+    }
     if (p.triangle_budget == 0 || static_cast<CrownShape>(p.crown_shape) == CrownShape::Blobs)
         mark("crown_lump_triangles", "the game mesh draws the crown as blobs, not as lumps");
     if (p.sphere_diameter <= 0.0)
@@ -471,6 +473,9 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
     const auto budget = static_cast<std::size_t>(std::max(params.triangle_budget, 0));
     int used = 0, set = 0;
     std::string why = "what it can show";
+    if (key == "trunk_resolution" && budget > 0 && branch_style(params) == BranchStyle::Prisms)
+        return "\nthe game mesh draws its branches as prisms: this meshes the full-detail "
+               "trunk and sets the thinnest branch drawn";
     if (key == "trunk_resolution") {
         used = trunk_resolution_for_budget(params, budget);
         set = params.trunk_resolution;

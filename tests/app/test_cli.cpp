@@ -188,12 +188,13 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("--max-memory"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
-    // A reduction's cost shows once the meshes are made: refused before it starts.
+    // A reduction's cost shows once the meshes are made: refused before it starts (the
+    // trunk's surface reduced; prisms are drawn, not reduced).
     // (96 cells make more handles than the template's own 80, which bind only above 1,422
     // triangles with drop_hidden.)
     r =
         run("export -t ternary --set generations=8 --set drop_hidden=0 --set trunk_resolution=96 "
-            "--max-seconds 1 -o " +
+            "--set branch_style=surface --max-seconds 1 -o " +
             path("t.glb"));
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("handles to reduce"), std::string::npos) << r.output;
