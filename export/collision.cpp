@@ -42,9 +42,12 @@ std::vector<Mesh> collision_hulls(const Mesh& trunk, const Mesh& crown, const Sk
                 ground = std::min(ground, p.y);
                 top = std::max(top, p.y);
             }
+        // The trunk: the segments of the lowest depth (0, or 1 on a bush of many stems).
+        int trunk_depth = std::numeric_limits<int>::max();
+        for (const Segment& s : skeleton.segments) trunk_depth = std::min(trunk_depth, s.depth);
         float first_branch = top;
         for (const Segment& s : skeleton.segments)
-            if (s.depth > 0) first_branch = std::min(first_branch, s.a.y);
+            if (s.depth > trunk_depth) first_branch = std::min(first_branch, s.a.y);
         const float cut = std::max(first_branch, ground + 0.25f * (top - ground));
         // The trunk's segments below the cut as rings of their own radius, clipped at the
         // cut, the lowest one reaching down to the ground: a reduced trunk may have no vertex
@@ -52,7 +55,7 @@ std::vector<Mesh> collision_hulls(const Mesh& trunk, const Mesh& crown, const Sk
         std::vector<glm::vec3> stem;
         const Segment* lowest = nullptr;
         for (const Segment& s : skeleton.segments) {
-            if (s.depth != 0 || std::min(s.a.y, s.b.y) > cut) continue;
+            if (s.depth != trunk_depth || std::min(s.a.y, s.b.y) > cut) continue;
             glm::vec3 a = s.a, b = s.b;
             float ra = s.ra, rb = s.rb;
             if (a.y > b.y) {
@@ -76,7 +79,8 @@ std::vector<Mesh> collision_hulls(const Mesh& trunk, const Mesh& crown, const Sk
         }
         const std::vector<int> owner = owning_segments(trunk, skeleton);
         for (std::size_t v = 0; v < trunk.positions.size(); ++v)
-            if (owner[v] >= 0 && skeleton.segments[static_cast<std::size_t>(owner[v])].depth == 0 &&
+            if (owner[v] >= 0 &&
+                skeleton.segments[static_cast<std::size_t>(owner[v])].depth == trunk_depth &&
                 trunk.positions[v].y <= cut)
                 stem.push_back(trunk.positions[v]);
         if (Mesh hull = extreme_point_hull(stem); !hull.triangles.empty())

@@ -53,8 +53,7 @@ std::uint64_t value_size(const Value& v) {
 
 class Encoder {
   public:
-    explicit Encoder(std::uint32_t version)
-        : wide_(version >= 7500), header_(wide_ ? 25 : 13) {}
+    explicit Encoder(std::uint32_t version) : wide_(version >= 7500), header_(wide_ ? 25 : 13) {}
 
     std::string encode(const std::vector<Node>& top, std::uint32_t version) {
         out_.append(kMagic);
@@ -243,7 +242,8 @@ class Decoder {
         const std::uint64_t values_size = offset(end);
         const auto name_size = get<std::uint8_t>(end);
         if (node_end == 0 && count == 0 && values_size == 0 && name_size == 0) return false;
-        if (node_end > end || node_end <= start) fail("a record's end offset is out of range", start);
+        if (node_end > end || node_end <= start)
+            fail("a record's end offset is out of range", start);
         need(name_size, node_end);
         n.name.assign(in_.data() + pos_, name_size);
         pos_ += name_size;

@@ -48,7 +48,8 @@ void double_property(Node& props, std::string_view name, double v) {
 }
 
 void color_property(Node& props, std::string_view name, const glm::vec3& c) {
-    property(props, name, "Color", "", "A", {fbx::float64(c.r), fbx::float64(c.g), fbx::float64(c.b)});
+    property(props, name, "Color", "", "A",
+             {fbx::float64(c.r), fbx::float64(c.g), fbx::float64(c.b)});
 }
 
 void number_property(Node& props, std::string_view name, double v) {
@@ -81,7 +82,7 @@ class IndexedLayer {
 struct Geometry {
     std::vector<double> vertices;
     std::vector<std::int64_t> polygon_vertex_index;
-    std::vector<double> normals;  // per corner, Direct
+    std::vector<double> normals;          // per corner, Direct
     std::vector<std::int64_t> materials;  // per polygon
     std::vector<std::int64_t> smoothing;  // per polygon: 0 flat, 1 smooth
     std::array<IndexedLayer<2>, 3> uv;
@@ -103,7 +104,8 @@ Geometry merge(const std::vector<const NamedMesh*>& parts, const ExportOptions& 
         const Mesh& mesh = *parts[p]->mesh;
         const PartAttributes* a = bare ? nullptr : parts[p]->attributes;
         const auto base = static_cast<std::int64_t>(g.vertices.size() / 3);
-        for (const glm::vec3& v : mesh.positions) g.vertices.insert(g.vertices.end(), {v.x, v.y, v.z});
+        for (const glm::vec3& v : mesh.positions)
+            g.vertices.insert(g.vertices.end(), {v.x, v.y, v.z});
         std::vector<glm::vec3> face;
         ShadedMesh shaded;
         if (flat)
@@ -367,8 +369,13 @@ class FbxBuilder {
         ext.add("FBXVersion", {fbx::int32(static_cast<std::int32_t>(kVersion))});
         ext.add("EncryptionType", {fbx::int32(0)});
         Node& stamp = ext.add("CreationTimeStamp");
-        for (auto [field, value] : {std::pair{"Version", 1000}, {"Year", 1970}, {"Month", 1},
-                                    {"Day", 1}, {"Hour", 10}, {"Minute", 0}, {"Second", 0},
+        for (auto [field, value] : {std::pair{"Version", 1000},
+                                    {"Year", 1970},
+                                    {"Month", 1},
+                                    {"Day", 1},
+                                    {"Hour", 10},
+                                    {"Minute", 0},
+                                    {"Second", 0},
                                     {"Millisecond", 0}})
             stamp.add(field, {fbx::int32(value)});
         ext.add("Creator", {fbx::string(kCreator)});
@@ -417,8 +424,8 @@ class FbxBuilder {
     Node documents() const {
         Node docs{"Documents", {}, {}};
         docs.add("Count", {fbx::int32(1)});
-        Node& doc = docs.add("Document", {fbx::int64(kDocumentId), fbx::string("Scene"),
-                                          fbx::string("Scene")});
+        Node& doc = docs.add("Document",
+                             {fbx::int64(kDocumentId), fbx::string("Scene"), fbx::string("Scene")});
         Node& props = doc.add("Properties70");
         property(props, "SourceObject", "object", "", "");
         property(props, "ActiveAnimStackName", "KString", "", "", {fbx::string("")});

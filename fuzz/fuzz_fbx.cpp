@@ -43,9 +43,7 @@ Parts random_parts(FuzzedDataProvider& in) {
             }
             const int triangles = in.ConsumeIntegralInRange(1, 40);
             for (int t = 0; t < triangles; ++t) {
-                auto v = [&] {
-                    return in.ConsumeIntegralInRange<std::uint32_t>(0, vertices - 1);
-                };
+                auto v = [&] { return in.ConsumeIntegralInRange<std::uint32_t>(0, vertices - 1); };
                 const std::uint32_t a = v(), b = v(), c = v();
                 mesh.triangles.push_back({a, b, c});
             }
@@ -78,7 +76,8 @@ const fbx::Node* child(const fbx::Node& n, std::string_view name) {
 // Checks one geometry against the parts it was made of.
 void check_geometry(const fbx::Node& geo, const std::vector<const NamedMesh*>& parts, bool bare) {
     const std::vector<double>& vertices = child(geo, "Vertices")->values[0].reals;
-    const std::vector<std::int64_t>& polygons = child(geo, "PolygonVertexIndex")->values[0].integers;
+    const std::vector<std::int64_t>& polygons =
+        child(geo, "PolygonVertexIndex")->values[0].integers;
     bool any_uv = false, any_color = false;
     for (const NamedMesh* p : parts)
         if (!bare && p->attributes) {
@@ -184,7 +183,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (g != expected.size()) fuzz_finding("fewer geometries than parts");
 
     const std::vector<std::uint8_t> rest = in.ConsumeRemainingBytes<std::uint8_t>();
-    expect_only_input_errors(
-        [&] { fbx::decode_fbx(std::string_view(reinterpret_cast<const char*>(rest.data()), rest.size())); });
+    expect_only_input_errors([&] {
+        fbx::decode_fbx(std::string_view(reinterpret_cast<const char*>(rest.data()), rest.size()));
+    });
     return 0;
 }

@@ -1,4 +1,4 @@
-// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply}` does,
+// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply,fbx}` does,
 // hashed byte for byte against the recorded files.
 // A change here must be on purpose: update the hash and say why in the commit body.
 #include <gtest/gtest.h>
@@ -42,60 +42,79 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0x8de52ec84074b8d5ull},
-        {"oak.glb", 0x8f3cba0181e78e2bull},
+        {"oak.obj", 0x10e647e0becd128full},
+        {"oak.glb", 0x75103913d2456a66ull},
         {"oak.ply", 0xef6e7a6ae99c686ull},
-        {"baobab.obj", 0xcf18120094b91a4ull},
-        {"baobab.glb", 0xe6786b3592dcf95dull},
+        {"oak.fbx", 0xc3baacdfd50d236dull},
+        {"baobab.obj", 0x2a355982107f9e7eull},
+        {"baobab.glb", 0xec3eaaa3dc07a1beull},
         {"baobab.ply", 0xb2fd56d5d3f40390ull},
-        {"birch.obj", 0x712385621b7869f4ull},
-        {"birch.glb", 0xf6850fcff1654482ull},
+        {"baobab.fbx", 0x7c1e9d86dcfa06afull},
+        {"birch.obj", 0xe685a2c4b8c4d776ull},
+        {"birch.glb", 0xec3ece65cc0bb166ull},
         {"birch.ply", 0xde8b3100ad63abdfull},
-        {"bush.obj", 0x2253432c1b745fb2ull},
-        {"bush.glb", 0x552450fac86321cfull},
+        {"birch.fbx", 0xca717cfabb72dcd0ull},
+        {"bush.obj", 0xab33cee047e7c662ull},
+        {"bush.glb", 0x7da5cda2239fcfa0ull},
         {"bush.ply", 0xa525bc0b046ed82aull},
-        {"cypress.obj", 0xc95df5c0e3c66ddaull},
-        {"cypress.glb", 0x5749dd10d5f72287ull},
+        {"bush.fbx", 0xb80ee628a88ecc20ull},
+        {"cypress.obj", 0xbd7972a6ce85b6f4ull},
+        {"cypress.glb", 0x34ec6191b3177202ull},
         {"cypress.ply", 0xc7fe87da7b751720ull},
-        {"fir.obj", 0x447002f21ddad9c8ull},
-        {"fir.glb", 0x86ed5ff96b024c29ull},
+        {"cypress.fbx", 0xfce4b17489cbbaf5ull},
+        {"fir.obj", 0xdcad3d7aed5662daull},
+        {"fir.glb", 0x590af41076069964ull},
         {"fir.ply", 0x8ca71286c0e37404ull},
-        {"honda.obj", 0x4331fd0ff95b4c64ull},
-        {"honda.glb", 0x936d9c5db821f533ull},
+        {"fir.fbx", 0x7a55662ed2001fcdull},
+        {"honda.obj", 0x3dc475e1d884b11cull},
+        {"honda.glb", 0xea0d07ad51a84d80ull},
         {"honda.ply", 0xda717129afbfa2b7ull},
-        {"palm.obj", 0xa84e39a2b95cb95ull},
-        {"palm.glb", 0x5f8a65716567f9c7ull},
+        {"honda.fbx", 0x55b2fc52492e647full},
+        {"palm.obj", 0x8da9a7239350e3f9ull},
+        {"palm.glb", 0x144206f23949e8a7ull},
         {"palm.ply", 0x6a2e3274e5168386ull},
-        {"pine.obj", 0xb37f01558f601a62ull},
-        {"pine.glb", 0x827b27c4e5e153a1ull},
+        {"palm.fbx", 0xa50f283ad798e8eaull},
+        {"pine.obj", 0xa47d46ee73fed45aull},
+        {"pine.glb", 0x9362ec621f0a9fdull},
         {"pine.ply", 0xd5cc0961e3f4765eull},
-        {"spruce.obj", 0x8bb17d6279beacbeull},
-        {"spruce.glb", 0xaa69cbc437721a54ull},
+        {"pine.fbx", 0xda93d56289fd1becull},
+        {"spruce.obj", 0x49786b109b8bbb8eull},
+        {"spruce.glb", 0xd2c61386f19240dcull},
         {"spruce.ply", 0x27c5030bcb47dc14ull},
-        {"seed_spruce.obj", 0xf7b2ab9e280ff2bull},
-        {"seed_spruce.glb", 0x90d08d11d961a07aull},
+        {"spruce.fbx", 0x5e87ddcd3696febeull},
+        {"seed_spruce.obj", 0x623fa5b5645c3203ull},
+        {"seed_spruce.glb", 0x17fd8dbfc19a52b0ull},
         {"seed_spruce.ply", 0x7b20facda484b2c6ull},
-        {"ternary.obj", 0xf3d5c0fd3895d1beull},
-        {"ternary.glb", 0xdcd110ef3efbde53ull},
+        {"seed_spruce.fbx", 0x43a8c723dba42a8full},
+        {"ternary.obj", 0x6dc4d6971432f808ull},
+        {"ternary.glb", 0x241bc92041b2127aull},
         {"ternary.ply", 0xe88d7e2fb67bf2adull},
-        {"willow.obj", 0xd005d3c0e8dfa43eull},
-        {"willow.glb", 0x95d7e3b8890d5000ull},
+        {"ternary.fbx", 0xaa31f74982bfed1dull},
+        {"willow.obj", 0x3807b6b36cffad32ull},
+        {"willow.glb", 0xb1c1301cec2705ccull},
         {"willow.ply", 0x9abcb31c89e00951ull},
-        {"elm.obj", 0x7ee691b705a419d1ull},
-        {"elm.glb", 0xfa0648d790157226ull},
+        {"willow.fbx", 0x3b89e033224daf1dull},
+        {"elm.obj", 0x6da6244b76a3c059ull},
+        {"elm.glb", 0xc6cb3a786dc9fbeeull},
         {"elm.ply", 0xf176feacf39a2979ull},
-        {"maple.obj", 0xd7e9107db5bf855eull},
-        {"maple.glb", 0x610a668931004ac6ull},
+        {"elm.fbx", 0x4a202a5e6f1c17edull},
+        {"maple.obj", 0xd92b10557569bf46ull},
+        {"maple.glb", 0x3bf5115bc30b6ae1ull},
         {"maple.ply", 0xba5a3b4ed4fb37f0ull},
-        {"hedge.obj", 0xd6377fb9f4bd2440ull},
-        {"hedge.glb", 0x6e0d2e09b2ebb3bull},
+        {"maple.fbx", 0xdd2cb5ac72a203d8ull},
+        {"hedge.obj", 0x8ab248ac55dc3c74ull},
+        {"hedge.glb", 0xb8789ae911db53f9ull},
         {"hedge.ply", 0xdbab7e0d2e1be068ull},
-        {"windswept.obj", 0xba7169e225536245ull},
-        {"windswept.glb", 0x36c2b48f1b594537ull},
+        {"hedge.fbx", 0x10203a817157352bull},
+        {"windswept.obj", 0x80f2c210bf835d0dull},
+        {"windswept.glb", 0x143898fee1daf2a1ull},
         {"windswept.ply", 0x480874fd469d9de5ull},
-        // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
-        {"palm_lod.glb", 0xf79c39e4ef83888cull},
-        {"palm_lod.obj", 0x6f9e90343d44023cull},
+        {"windswept.fbx", 0xc58a7b0822c63111ull},
+        // `export -t palm --lod -o palm_lod.glb`, `.fbx` and `... -o palm_lod.obj` (MTL,
+        // LOD0-LOD3).
+        {"palm_lod.glb", 0xfc96c7576ab36e7cull},
+        {"palm_lod.fbx", 0x3b264bcc6cba3cebull},
+        {"palm_lod.obj", 0x6f35896019f50498ull},
     };
     return hashes;
 }
@@ -121,7 +140,10 @@ class GoldenExports : public ::testing::Test {
             const std::string key = name + std::string(format->extension);
             const auto expected = golden_hashes().find(key);
             if (expected == golden_hashes().end()) continue;
-            std::vector<fs::path> files = write_tree(dir_ / key, tree, finished, tmpl.colors);
+            ExportOptions options;  // as the CLI names the materials
+            options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+            std::vector<fs::path> files =
+                write_tree(dir_ / key, tree, finished, tmpl.colors, options, format);
             // The order the hashes were taken in: an OBJ before its MTL, a chain's MTL
             // before its levels.
             std::stable_partition(files.begin(), files.end(), [lod](const fs::path& f) {
@@ -141,12 +163,12 @@ class GoldenExports : public ::testing::Test {
 
 TEST_F(GoldenExports, EveryTemplateInEveryFormatIsByteIdentical) {
     for (const TreeTemplate* tmpl : builtin_templates()) check(*tmpl, tmpl->name, false);
-    EXPECT_EQ(checked_, golden_hashes().size() - 2) << "a template or a format went missing";
+    EXPECT_EQ(checked_, golden_hashes().size() - 3) << "a template or a format went missing";
 }
 
 TEST_F(GoldenExports, LodChainsAreByteIdentical) {
     check(load_template("palm"), "palm_lod", true);
-    EXPECT_EQ(checked_, 2u);
+    EXPECT_EQ(checked_, 3u);
 }
 
 }  // namespace
