@@ -99,6 +99,8 @@ func _setup_wind(node, shader):
 			material.shader = shader
 			if imported is SpatialMaterial:
 				material.set_shader_param("albedo", imported.albedo_color)
+				# Also as metadata: a headless Godot (no renderer) keeps no shader parameters.
+				material.set_meta("sylva_albedo", imported.albedo_color)
 				material.resource_name = imported.resource_name
 			node.set_surface_material(s, material)
 	for child in node.get_children():

@@ -95,6 +95,7 @@ func _setup_wind(node, shader):
 			material.shader = shader
 			if imported is BaseMaterial3D:
 				material.set_shader_parameter("albedo", imported.albedo_color)
+				material.set_meta("sylva_albedo", imported.albedo_color)
 				material.resource_name = imported.resource_name
 			node.set_surface_override_material(s, material)
 	for child in node.get_children():
