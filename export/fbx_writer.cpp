@@ -350,7 +350,8 @@ class FbxBuilder {
             e.add("Type", {fbx::string(type)});
             e.add("TypedIndex", {fbx::int32(index)});
         };
-        for (std::int32_t i = 0; i < (g.has_uv ? 3 : 1); ++i) {
+        const std::int32_t layers = g.has_uv ? 3 : g.has_colors ? 2 : 1;
+        for (std::int32_t i = 0; i < layers; ++i) {
             Node& layer = geo.add("Layer", {fbx::int32(i)});
             layer.add("Version", {fbx::int32(100)});
             if (i == 0) {

@@ -36,7 +36,7 @@ public class SylvaTreePostprocessor : AssetPostprocessor
     {
         Shader shader = Shader.Find(WindShader);
         if (shader == null || material == null) return null;
-        string path = Path.Combine(Path.GetDirectoryName(assetPath), material.name + "_wind.mat");
+        string path = Folder(assetPath) + "/" + material.name + "_wind.mat";
         Material wind = AssetDatabase.LoadAssetAtPath<Material>(path);
         if (wind == null)
         {
@@ -67,7 +67,7 @@ public class SylvaTreePostprocessor : AssetPostprocessor
         tree.name = model.name;
         AddLodGroups(tree.transform);
         AddColliders(tree);
-        string folder = Path.GetDirectoryName(path);
+        string folder = Folder(path);
         foreach (Renderer r in tree.GetComponentsInChildren<Renderer>(true))
         {
             Material[] materials = r.sharedMaterials;
@@ -75,16 +75,22 @@ public class SylvaTreePostprocessor : AssetPostprocessor
                 materials[i] = WindMaterial(folder, materials[i]);
             r.sharedMaterials = materials;
         }
-        string prefab = Path.Combine(folder, Path.GetFileNameWithoutExtension(path) + "_sylva.prefab");
+        string prefab = folder + "/" + Path.GetFileNameWithoutExtension(path) + "_sylva.prefab";
         PrefabUtility.SaveAsPrefabAsset(tree, prefab);
         Object.DestroyImmediate(tree);
+    }
+
+    // The asset's folder with forward slashes, as the AssetDatabase wants paths.
+    static string Folder(string assetPath)
+    {
+        return Path.GetDirectoryName(assetPath).Replace('\\', '/');
     }
 
     static Material WindMaterial(string folder, Material material)
     {
         Shader shader = Shader.Find(WindShader);
         if (shader == null || material == null) return material;
-        string path = Path.Combine(folder, material.name + "_wind.mat");
+        string path = folder + "/" + material.name + "_wind.mat";
         Material wind = AssetDatabase.LoadAssetAtPath<Material>(path);
         if (wind == null)
         {
