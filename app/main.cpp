@@ -50,7 +50,7 @@ constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
                  [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
-                 -o OUT.{obj,glb,ply}
+                 -o OUT.{obj,glb,ply,fbx}
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [-o WORD.txt]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
@@ -88,10 +88,12 @@ constexpr const char* kOptions = R"(
                    crown_shape (auto in every built-in template)
   --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
-  --format F       obj, glb or ply (default: from the extension of OUT)
+  --format F       obj, glb, ply or fbx (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
   --profile P      generic (default), unity, unreal or godot: collision names, the wind
                    channel, OBJ/PLY units (README "Engine profiles")
+  --engine-kit DIR also write the profile's engine import kit (Godot, Unity, Unreal
+                   scripts and shaders; all of them for generic) into DIR (docs/engines.md)
   --collision on|off
                    convex collision hulls (trunk, crown pieces); default: on for unity,
                    unreal and godot, off for generic
@@ -229,7 +231,8 @@ Options parse_options(int argc, char** argv) {
         } else if (arg == "--format") {
             std::string name = value();
             o.format = format_from_name(name);
-            if (!o.format) throw UsageError("--format expects obj, glb or ply, not '" + name + "'");
+            if (!o.format)
+                throw UsageError("--format expects " + format_names() + ", not '" + name + "'");
         } else if (arg == "--shading") {
             std::string name = value();
             if (name != "flat" && name != "smooth")
@@ -246,6 +249,8 @@ Options parse_options(int argc, char** argv) {
             if (state != "on" && state != "off")
                 throw UsageError("--collision expects on or off, not '" + state + "'");
             o.export_options.engine.collision = state == "on";
+        } else if (arg == "--engine-kit") {
+            o.export_options.engine_kit = value();
         } else if (arg == "--palette") {
             o.export_options.engine.palette = true;
         } else if (arg == "--no-uvs") {
@@ -366,7 +371,7 @@ int run_export(const Options& o) {
     const ExportFormat* format = o.format ? o.format : by_extension;
     if (!format)
         throw UsageError("cannot tell the format of '" + o.output +
-                         "': use .obj, .glb or .ply, or --format");
+                         "': use .obj, .glb, .ply or .fbx, or --format");
     // PLY bytes in a .glb open in no engine: an extension of another format is a mistake.
     if (by_extension && by_extension != format)
         throw UsageError("--format " + std::string(format->name) + " does not match '" + o.output +
@@ -401,6 +406,7 @@ int run_export(const Options& o) {
             finished = finish_tree(tree, finish);
             ExportOptions export_options = o.export_options;
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
+            export_options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
         [&] { raw_states = part_states(raw); });

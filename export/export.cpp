@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "export/fbx_writer.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
@@ -18,6 +19,7 @@ const ExportFormat* const kFormats[] = {
     &obj_format,
     &glb_format,
     &ply_format,
+    &fbx_format,
 };
 
 std::string lower(std::string_view text) {
@@ -79,12 +81,22 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options,
-                                                   const ExportFormat* format) {
+                                                   const ExportFormat* format,
+                                                   const std::function<void(FileSet&)>& extra) {
     const ExportFormat& chosen = resolve(path, format);
     // Siblings (an .mtl, the other levels) go beside the file a symlink at `path` points to.
     FileSet files;
     chosen.write(files, output_target(path), levels, options);
+    if (extra) extra(files);
     return files.commit();
+}
+
+std::string format_names() {
+    std::string names;
+    const std::size_t n = std::size(kFormats);
+    for (std::size_t i = 0; i < n; ++i)
+        names += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + std::string(kFormats[i]->name);
+    return names;
 }
 
 }  // namespace sylva

@@ -537,22 +537,21 @@ void view_section(StudioState& state) {
 void profile_combo(EngineProfile& profile) {
     ImGui::SetNextItemWidth(110.0f);
     if (ImGui::BeginCombo("profile", std::string(profile_info(profile).name).c_str())) {
-        for (EngineProfile p : {EngineProfile::Generic, EngineProfile::Unity, EngineProfile::Unreal,
-                                EngineProfile::Godot})
-            if (ImGui::Selectable(std::string(profile_info(p).name).c_str(), p == profile))
-                profile = p;
+        for (const ProfileInfo& p : engine_profiles()) {
+            if (ImGui::Selectable(std::string(p.name).c_str(), p.profile == profile))
+                profile = p.profile;
+            tooltip(std::string(p.summary).c_str());
+        }
         ImGui::EndCombo();
     }
-    tooltip(
-        "collision names, wind channel and OBJ/PLY units for unity, unreal or godot; generic "
-        "writes no collision");
+    tooltip(std::string(profile_info(profile).summary).c_str());
 }
 
 void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
-    tooltip("the extension picks the format: .obj (+ .mtl), .glb or .ply");
+    tooltip("the extension picks the format: .obj (+ .mtl), .glb, .ply or .fbx");
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())

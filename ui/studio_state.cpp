@@ -204,6 +204,7 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
     ExportOptions options;
     options.profile = settings.profile;
     options.engine.seed = tmpl.params.seed;
+    options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
     const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl), options);
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +

@@ -1,4 +1,4 @@
-// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply}` does,
+// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply,fbx}` does,
 // hashed byte for byte against the recorded files.
 // A change here must be on purpose: update the hash and say why in the commit body.
 #include <gtest/gtest.h>
@@ -42,60 +42,79 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0x46f3df16ba601c6bull},
-        {"oak.glb", 0x16c55df7b7343a96ull},
-        {"oak.ply", 0x81f3d549b72af374ull},
-        {"baobab.obj", 0xcf18120094b91a4ull},
-        {"baobab.glb", 0xe6786b3592dcf95dull},
+        {"oak.obj", 0x10e647e0becd128full},
+        {"oak.glb", 0x75103913d2456a66ull},
+        {"oak.ply", 0xef6e7a6ae99c686ull},
+        {"oak.fbx", 0xc3baacdfd50d236dull},
+        {"baobab.obj", 0x2a355982107f9e7eull},
+        {"baobab.glb", 0xec3eaaa3dc07a1beull},
         {"baobab.ply", 0xb2fd56d5d3f40390ull},
-        {"birch.obj", 0x28bc95fc16dc5132ull},
-        {"birch.glb", 0xf69d62ca40f4f915ull},
-        {"birch.ply", 0x2b0ced62fdbc4031ull},
-        {"bush.obj", 0xa24a00a75704cf47ull},
-        {"bush.glb", 0xffe6dc1ea2a6e351ull},
-        {"bush.ply", 0xcf21521279229462ull},
-        {"cypress.obj", 0xfad876230b56f31dull},
-        {"cypress.glb", 0x4bf0fdccf6d08aeull},
-        {"cypress.ply", 0xb09c1f232da13cf4ull},
-        {"fir.obj", 0xbd6f18c96d4be947ull},
-        {"fir.glb", 0x8aabd1489cf90e6bull},
-        {"fir.ply", 0xb614a72b9bf4887cull},
-        {"honda.obj", 0xd3e14ae08ce2881dull},
-        {"honda.glb", 0xaa97dcc174b15fa1ull},
-        {"honda.ply", 0x56f5855ea06ba821ull},
-        {"palm.obj", 0xdfe4776b0ce1400ull},
-        {"palm.glb", 0x6097c9541bd37ff7ull},
-        {"palm.ply", 0xcccfcd5878ca4a84ull},
-        {"pine.obj", 0xa21bd0343ea58f48ull},
-        {"pine.glb", 0x5b289b4226f9c55ull},
-        {"pine.ply", 0x8c978d7c0e7ce3ecull},
-        {"spruce.obj", 0xa54aa6aa6f9945dcull},
-        {"spruce.glb", 0xc74e8ff2c4c0263dull},
-        {"spruce.ply", 0xfe5fc31af73286f4ull},
-        {"seed_spruce.obj", 0x4c7bb2d5190b208bull},
-        {"seed_spruce.glb", 0xed73fc269834f6eeull},
-        {"seed_spruce.ply", 0xbda4f717e1217704ull},
-        {"ternary.obj", 0x2cae889a0f210f9cull},
-        {"ternary.glb", 0x35079f92a484e6a6ull},
-        {"ternary.ply", 0xdabca3c7cca4339bull},
-        {"willow.obj", 0x97df37c833dbeef0ull},
-        {"willow.glb", 0xf6de6d9485006070ull},
-        {"willow.ply", 0x1be3654d7693c0e3ull},
-        {"elm.obj", 0xe94825a8ab658328ull},
-        {"elm.glb", 0x3535816047e6b285ull},
-        {"elm.ply", 0x7714224328d676ddull},
-        {"maple.obj", 0xff86cd1ccc24491ull},
-        {"maple.glb", 0x5b79df20d8bd64aeull},
-        {"maple.ply", 0xf811a24229a79c05ull},
-        {"hedge.obj", 0x16c2fedeae45e755ull},
-        {"hedge.glb", 0x7f97d6c3ff352364ull},
-        {"hedge.ply", 0x74db3b54bd95c1e6ull},
-        {"windswept.obj", 0x435b72877df04c90ull},
-        {"windswept.glb", 0xb4bf0e7ab264e3feull},
-        {"windswept.ply", 0x63cf295049be0977ull},
-        // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
-        {"palm_lod.glb", 0xc553a99660b2eacfull},
-        {"palm_lod.obj", 0x1d10278c10cf666eull},
+        {"baobab.fbx", 0x7c1e9d86dcfa06afull},
+        {"birch.obj", 0xe685a2c4b8c4d776ull},
+        {"birch.glb", 0xec3ece65cc0bb166ull},
+        {"birch.ply", 0xde8b3100ad63abdfull},
+        {"birch.fbx", 0xca717cfabb72dcd0ull},
+        {"bush.obj", 0xab33cee047e7c662ull},
+        {"bush.glb", 0x7da5cda2239fcfa0ull},
+        {"bush.ply", 0xa525bc0b046ed82aull},
+        {"bush.fbx", 0xb80ee628a88ecc20ull},
+        {"cypress.obj", 0xbd7972a6ce85b6f4ull},
+        {"cypress.glb", 0x34ec6191b3177202ull},
+        {"cypress.ply", 0xc7fe87da7b751720ull},
+        {"cypress.fbx", 0xfce4b17489cbbaf5ull},
+        {"fir.obj", 0xdcad3d7aed5662daull},
+        {"fir.glb", 0x590af41076069964ull},
+        {"fir.ply", 0x8ca71286c0e37404ull},
+        {"fir.fbx", 0x7a55662ed2001fcdull},
+        {"honda.obj", 0x3dc475e1d884b11cull},
+        {"honda.glb", 0xea0d07ad51a84d80ull},
+        {"honda.ply", 0xda717129afbfa2b7ull},
+        {"honda.fbx", 0x55b2fc52492e647full},
+        {"palm.obj", 0x8da9a7239350e3f9ull},
+        {"palm.glb", 0x144206f23949e8a7ull},
+        {"palm.ply", 0x6a2e3274e5168386ull},
+        {"palm.fbx", 0xa50f283ad798e8eaull},
+        {"pine.obj", 0xa47d46ee73fed45aull},
+        {"pine.glb", 0x9362ec621f0a9fdull},
+        {"pine.ply", 0xd5cc0961e3f4765eull},
+        {"pine.fbx", 0xda93d56289fd1becull},
+        {"spruce.obj", 0x49786b109b8bbb8eull},
+        {"spruce.glb", 0xd2c61386f19240dcull},
+        {"spruce.ply", 0x27c5030bcb47dc14ull},
+        {"spruce.fbx", 0x5e87ddcd3696febeull},
+        {"seed_spruce.obj", 0x623fa5b5645c3203ull},
+        {"seed_spruce.glb", 0x17fd8dbfc19a52b0ull},
+        {"seed_spruce.ply", 0x7b20facda484b2c6ull},
+        {"seed_spruce.fbx", 0x43a8c723dba42a8full},
+        {"ternary.obj", 0x6dc4d6971432f808ull},
+        {"ternary.glb", 0x241bc92041b2127aull},
+        {"ternary.ply", 0xe88d7e2fb67bf2adull},
+        {"ternary.fbx", 0xaa31f74982bfed1dull},
+        {"willow.obj", 0x3807b6b36cffad32ull},
+        {"willow.glb", 0xb1c1301cec2705ccull},
+        {"willow.ply", 0x9abcb31c89e00951ull},
+        {"willow.fbx", 0x3b89e033224daf1dull},
+        {"elm.obj", 0x6da6244b76a3c059ull},
+        {"elm.glb", 0xc6cb3a786dc9fbeeull},
+        {"elm.ply", 0xf176feacf39a2979ull},
+        {"elm.fbx", 0x4a202a5e6f1c17edull},
+        {"maple.obj", 0xd92b10557569bf46ull},
+        {"maple.glb", 0x3bf5115bc30b6ae1ull},
+        {"maple.ply", 0xba5a3b4ed4fb37f0ull},
+        {"maple.fbx", 0xdd2cb5ac72a203d8ull},
+        {"hedge.obj", 0x8ab248ac55dc3c74ull},
+        {"hedge.glb", 0xb8789ae911db53f9ull},
+        {"hedge.ply", 0xdbab7e0d2e1be068ull},
+        {"hedge.fbx", 0x10203a817157352bull},
+        {"windswept.obj", 0x80f2c210bf835d0dull},
+        {"windswept.glb", 0x143898fee1daf2a1ull},
+        {"windswept.ply", 0x480874fd469d9de5ull},
+        {"windswept.fbx", 0xc58a7b0822c63111ull},
+        // `export -t palm --lod -o palm_lod.glb`, `.fbx` and `... -o palm_lod.obj` (MTL,
+        // LOD0-LOD3).
+        {"palm_lod.glb", 0xfc96c7576ab36e7cull},
+        {"palm_lod.fbx", 0x3b264bcc6cba3cebull},
+        {"palm_lod.obj", 0x6f35896019f50498ull},
     };
     return hashes;
 }
@@ -121,7 +140,10 @@ class GoldenExports : public ::testing::Test {
             const std::string key = name + std::string(format->extension);
             const auto expected = golden_hashes().find(key);
             if (expected == golden_hashes().end()) continue;
-            std::vector<fs::path> files = write_tree(dir_ / key, tree, finished, tmpl.colors);
+            ExportOptions options;  // as the CLI names the materials
+            options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+            std::vector<fs::path> files =
+                write_tree(dir_ / key, tree, finished, tmpl.colors, options, format);
             // The order the hashes were taken in: an OBJ before its MTL, a chain's MTL
             // before its levels.
             std::stable_partition(files.begin(), files.end(), [lod](const fs::path& f) {
@@ -141,12 +163,12 @@ class GoldenExports : public ::testing::Test {
 
 TEST_F(GoldenExports, EveryTemplateInEveryFormatIsByteIdentical) {
     for (const TreeTemplate* tmpl : builtin_templates()) check(*tmpl, tmpl->name, false);
-    EXPECT_EQ(checked_, golden_hashes().size() - 2) << "a template or a format went missing";
+    EXPECT_EQ(checked_, golden_hashes().size() - 3) << "a template or a format went missing";
 }
 
 TEST_F(GoldenExports, LodChainsAreByteIdentical) {
     check(load_template("palm"), "palm_lod", true);
-    EXPECT_EQ(checked_, 2u);
+    EXPECT_EQ(checked_, 3u);
 }
 
 }  // namespace
