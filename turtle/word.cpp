@@ -1,20 +1,54 @@
 #include "turtle/word.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <charconv>
 
 namespace sylva {
+namespace {
+
+// Every one-byte symbol as text of its own, for symbol_name()'s view.
+constexpr std::array<char, kFirstWordSymbol> kCharacters = [] {
+    std::array<char, kFirstWordSymbol> table{};
+    for (int c = 0; c < kFirstWordSymbol; ++c)
+        table[static_cast<std::size_t>(c)] = static_cast<char>(c);
+    return table;
+}();
+
+}  // namespace
 
 std::size_t Word::count(char symbol) const {
     return static_cast<std::size_t>(std::count(symbols_.begin(), symbols_.end(), symbol));
+}
+
+std::string_view Word::symbol_name(char symbol) const {
+    if (!is_word_symbol(symbol)) return {&kCharacters[static_cast<unsigned char>(symbol)], 1};
+    const auto index =
+        static_cast<std::size_t>(static_cast<unsigned char>(symbol) - kFirstWordSymbol);
+    if (!names_ || index >= names_->size()) return "?";
+    return (*names_)[index];
 }
 
 std::string Word::to_string() const {
     std::string out;
     out.reserve(symbols_.size() + params_.size() * 6);
     char buffer[32];
+    // A name's characters: a word or a letter, digit or '_' symbol. Two neighbours that are
+    // names, one of them a word, need a space between them.
+    auto name_like = [](char c) {
+        return is_word_symbol(c) || std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
     for (std::size_t i = 0; i < size(); ++i) {
-        out.push_back(symbols_[i]);
+        const char c = symbols_[i];
+        if (!is_word_symbol(c)) {
+            if (i > 0 && is_word_symbol(symbols_[i - 1]) && name_like(c) && args(i - 1).empty())
+                out.push_back(' ');
+            out.push_back(c);
+        } else {
+            if (i > 0 && name_like(symbols_[i - 1]) && args(i - 1).empty()) out.push_back(' ');
+            out.append(symbol_name(c));
+        }
         std::span<const double> a = args(i);
         if (a.empty()) continue;
         out.push_back('(');
