@@ -38,6 +38,9 @@ struct FinishedTree {
     std::vector<std::size_t> budgets;       // trunk + crown, per level
     std::vector<std::size_t> leaf_budgets;  // per level; SIZE_MAX: every leaf
     bool lod = false;  // levels are a LOD chain (the writers add the _LOD<i> suffixes)
+    // Per level, the tree's organs thinned to the level's leaf budget (thin_organs(),
+    // docs/lowpoly.md "Organs"); empty when the tree has none.
+    std::vector<OrganMesh> organs;
 };
 
 // Trunk and crown of the finest level: reduced, or the tree's own when not reduced. What
@@ -61,7 +64,8 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
 // The parts of each level as the writers want them: trunk, crown and leaves of that level
 // (or the tree's own when not reduced), with the template's colours, named `trunk`,
 // `crown` and `leaves` (a chain's writer adds `_LOD<i>` to node and group names, never to
-// materials). The meshes stay owned by `tree` and `finished`.
+// materials), and `organs` when the tree has any. The meshes stay owned by `tree` and
+// `finished`.
 std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
                                        const PartColors& colors);
 
