@@ -1,6 +1,7 @@
-// Derivation throughput: modules written per second, for a D0L grammar (ABOP Fig. 1.24a)
-// and a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), one thread.
-// Usage: sylva-bench-derive [repetitions]
+// Derivation throughput: modules written per second, for a D0L grammar (ABOP Fig. 1.24a),
+// a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), and two of word modules (ABOP
+// Fig. 1.26's plant as the book prints it; an L-Py style parametric apex grammar), one
+// thread. Usage: sylva-bench-derive [repetitions]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -48,6 +49,21 @@ B(l,w) : * -> !(w)F(l)[-(45)$C(l*r2,w*wr)]C(l*r1,w*wr)
 C(l,w) : * -> !(w)F(l)[+(45)$B(l*r2,w*wr)]B(l*r1,w*wr)
 )",
          19},
+        {"words  ABOP plant (Fig. 1.26)", R"(axiom: plant
+plant -> internode + [plant + flower] - - // [- - leaf] internode [+ + leaf] - [plant flower] + + plant flower
+internode -> F seg [// & & leaf] [// ^ ^ leaf] F seg
+seg -> seg F seg
+leaf -> [' { + f - f f - f + | + f - f f - f } ]
+flower -> [& & & pedicel ' / wedge //// wedge //// wedge //// wedge //// wedge]
+pedicel -> F F
+wedge -> [^ F] [{ & & & & - f + f | - f + f }]
+)",
+         10},
+        {"words  L-Py Apex/Internode, parametric", R"(axiom: Apex(0)
+Apex(t) -> Internode(1) [ + Leaf(t) ] [ - Apex(t + 1) ] Internode(1) Apex(t + 1)
+Internode(l) -> Internode(l * 1.1)
+)",
+         18},
     };
     std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
     std::printf("%-38s %6s %12s %12s %10s\n", "grammar", "steps", "final size", "written",

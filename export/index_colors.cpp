@@ -12,7 +12,8 @@ namespace sylva {
 namespace {
 
 // Multiplies the vertex's tint (white when there is none yet) by `color`.
-void apply(PartAttributes& attributes, std::size_t vertices, std::size_t v, const glm::vec3& color) {
+void apply(PartAttributes& attributes, std::size_t vertices, std::size_t v,
+           const glm::vec3& color) {
     if (attributes.tint.size() != vertices) attributes.tint.assign(vertices, glm::vec3(1.0f));
     attributes.tint[v] *= color;
 }
@@ -40,7 +41,8 @@ void color_trunk_by_index(NamedMesh& part, PartAttributes& attributes, const Ske
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
         const int s = owner[v];
         apply(attributes, mesh.positions.size(), v,
-              palette_color(palette, s < 0 ? 0 : skeleton.segments[static_cast<std::size_t>(s)].color));
+              palette_color(palette,
+                            s < 0 ? 0 : skeleton.segments[static_cast<std::size_t>(s)].color));
     }
     part.color = glm::vec3(1.0f);
 }

@@ -36,25 +36,29 @@ OrganSurface revolve(std::string_view name, std::string_view description, float 
         }
         count.push_back(sides);
     }
-    // Consecutive rings joined; seen from outside, going up (+y) and around (+a), each
-    // triangle turns counter-clockwise.
+    // Consecutive rings joined. Angles run from +x towards -z, which seen from outside
+    // (from +x, say) goes right to left; going up and around, each triangle is listed so
+    // that it turns counter-clockwise seen from outside.
+    auto add = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        m.triangles.push_back({a, c, b});
+    };
     for (std::size_t k = 0; k + 1 < rings.size(); ++k) {
         const std::uint32_t a = first[k], b = first[k + 1];
         const auto n = static_cast<std::uint32_t>(sides);
         if (count[k] == 1) {
-            for (std::uint32_t i = 0; i < n; ++i) m.triangles.push_back({a, b + i, b + (i + 1) % n});
+            for (std::uint32_t i = 0; i < n; ++i) add(a, b + i, b + (i + 1) % n);
         } else if (count[k + 1] == 1) {
-            for (std::uint32_t i = 0; i < n; ++i) m.triangles.push_back({a + i, b, a + (i + 1) % n});
+            for (std::uint32_t i = 0; i < n; ++i) add(a + i, b, a + (i + 1) % n);
         } else {
             const bool shifted = twist && (k + 1) % 2 == 1;  // ring k+1 sits half a side on
             for (std::uint32_t i = 0; i < n; ++i) {
                 const std::uint32_t j = (i + 1) % n;
                 if (shifted) {
-                    m.triangles.push_back({a + i, b + i, a + j});
-                    m.triangles.push_back({a + j, b + i, b + j});
+                    add(a + i, b + i, a + j);
+                    add(a + j, b + i, b + j);
                 } else {
-                    m.triangles.push_back({a + i, b + i, b + j});
-                    m.triangles.push_back({a + i, b + j, a + j});
+                    add(a + i, b + i, b + j);
+                    add(a + i, b + j, a + j);
                 }
             }
         }
@@ -87,13 +91,9 @@ const std::vector<OrganSurface>& surfaces() {
         std::vector<OrganSurface> out;
         // An apple hangs from its stalk at the base: a flattened ball, dimpled where the
         // stalk enters (36 triangles).
-        out.push_back(revolve("apple", "an apple: a faceted ball, dimpled at the stalk", 0.14f, 6,
-                              {{0.08f, 0.0f},
-                               {0.05f, 0.28f},
-                               {0.3f, 0.5f},
-                               {0.72f, 0.46f},
-                               {1.0f, 0.0f}},
-                              false));
+        out.push_back(revolve(
+            "apple", "an apple: a faceted ball, dimpled at the stalk", 0.14f, 6,
+            {{0.08f, 0.0f}, {0.05f, 0.28f}, {0.3f, 0.5f}, {0.72f, 0.46f}, {1.0f, 0.0f}}, false));
         out.back().hangs = true;
         // A conifer cone: a spindle of staggered scales from a short stalk (42 triangles).
         out.push_back(revolve("cone", "a conifer cone: a spindle of staggered scales", 0.16f, 6,
@@ -106,8 +106,7 @@ const std::vector<OrganSurface>& surfaces() {
                               true));
         // A berry or a cherry: a small faceted ball (24 triangles).
         out.push_back(revolve("berry", "a berry or cherry: a small faceted ball", 0.05f, 6,
-                              {{0.0f, 0.0f}, {0.25f, 0.45f}, {0.75f, 0.45f}, {1.0f, 0.0f}},
-                              false));
+                              {{0.0f, 0.0f}, {0.25f, 0.45f}, {0.75f, 0.45f}, {1.0f, 0.0f}}, false));
         out.back().hangs = true;
         out.push_back(blossom());
         return out;

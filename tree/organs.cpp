@@ -91,7 +91,8 @@ void copy_organ(const OrganMesh& in, std::size_t k, OrganMesh& out,
     out.color.insert(out.color.end(), in.color.begin() + v0, in.color.begin() + v1);
     for (std::uint32_t t = in.first_triangle[k]; t < in.first_triangle[k + 1]; ++t) {
         const auto& tri = in.mesh.triangles[t];
-        out.mesh.triangles.push_back({tri[0] - v0 + first, tri[1] - v0 + first, tri[2] - v0 + first});
+        out.mesh.triangles.push_back(
+            {tri[0] - v0 + first, tri[1] - v0 + first, tri[2] - v0 + first});
     }
     end_organ(out, in.polygon[k] != 0);
 }
@@ -110,7 +111,8 @@ std::vector<std::uint32_t> quad_of(const OrganMesh& in, std::size_t k) {
         if (glm::distance(at(i), at(0)) > glm::distance(at(tip), at(0))) tip = i;
     const glm::vec3 axis = at(tip) - at(0);
     glm::vec3 normal(0.0f);
-    for (std::uint32_t i = 1; i + 1 < n; ++i) normal += glm::cross(at(i) - at(0), at(i + 1) - at(0));
+    for (std::uint32_t i = 1; i + 1 < n; ++i)
+        normal += glm::cross(at(i) - at(0), at(i + 1) - at(0));
     const glm::vec3 across = glm::cross(normal, axis);
     std::uint32_t low = 0, high = 0;
     float lowest = 0.0f, highest = 0.0f;

@@ -212,7 +212,7 @@ bool axiom_sets_width(std::string_view grammar) {
 }
 
 bool colonization_key(std::string_view key) {
-    static constexpr std::array<std::string_view, 34> keys = {
+    static constexpr std::array<std::string_view, 31> keys = {
         "attraction_points", "influence_radius",
         "kill_distance",     "step_size",
         "max_iterations",    "envelope",
@@ -225,11 +225,10 @@ bool colonization_key(std::string_view key) {
         "obstacle_size_x",   "obstacle_size_y",
         "obstacle_size_z",   "roots",
         "root_spread",       "point_distribution",
-        "trunk_height",      "tropism_vector_x",
-        "tropism_vector_y",  "tropism_vector_z",
-        "max_degree",        "max_depth",
-        "max_no_grow",       "weighted_growth",
-        "curve_reduction",   "angle_smoothing"};
+        "trunk_height",      "max_degree",
+        "max_depth",         "max_no_grow",
+        "weighted_growth",   "curve_reduction",
+        "angle_smoothing"};
     return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
@@ -389,8 +388,14 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         if (tree.mode == TurtleMode::Lptg && !names_param(tree.grammar, "tropism"))
             mark("tropism", "the lptg turtle (seed 001) does not bend towards gravity");
         if ((inert.contains("tropism") || p.tropism == 0.0) &&
-            !names_param(tree.grammar, "tropism"))
+            !names_param(tree.grammar, "tropism")) {
             mark("tropism_variation", "no tropism to vary: set tropism first");
+            // The L-system's tropism vector is where `tropism` bends towards.
+            for (std::string_view key :
+                 {"tropism_vector_x", "tropism_vector_y", "tropism_vector_z"})
+                if (!names_param(tree.grammar, key))
+                    mark(key, "no tropism to point: set tropism first");
+        }
         const auto width_reason = [&](WidthModel model) -> std::string {
             switch (model) {
                 case WidthModel::Explicit:

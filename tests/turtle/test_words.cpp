@@ -262,5 +262,38 @@ TEST(Words, AbopPlantDrawsAsTheReferenceCounts) {
     EXPECT_GT(drawn.segments[0].b.y, 0.0f);
 }
 
+TEST(Words, AbopFlowerHasFivePetalsEvenlyAroundItsPedicel) {
+    // ABOP Fig. 1.26's flower: after the pedicel the turtle rolls 72 degrees (////, four
+    // times 18) between five wedges, so the petals stand at 72 degrees around the pedicel.
+    TurtleSettings settings;
+    settings.turn_angle = settings.pitch_angle = settings.roll_angle = 18.0;
+    const Word flower = derive_text(R"(axiom: flower
+flower -> [& & & pedicel ' / wedge //// wedge //// wedge //// wedge //// wedge]
+pedicel -> F F
+wedge -> [^ F] [{ & & & & - f + f | - f + f }]
+)",
+                                    2);
+    const Skeleton drawn = interpret(flower, settings);
+    ASSERT_EQ(drawn.polygons.size(), 5u);
+    ASSERT_EQ(drawn.segments.size(), 2u + 5u);   // the pedicel and a stamen per wedge
+    const glm::vec3 base = drawn.segments[1].b;  // the pedicel's end
+    const glm::vec3 axis = glm::normalize(drawn.segments[1].b - drawn.segments[0].a);
+    std::vector<glm::vec3> out;
+    for (const auto& polygon : drawn.polygons) {
+        glm::vec3 centre(0.0f);
+        for (const glm::vec3& v : polygon) centre += v;
+        centre /= static_cast<float>(polygon.size());
+        const glm::vec3 d = centre - base;
+        out.push_back(glm::normalize(d - glm::dot(d, axis) * axis));
+        EXPECT_EQ(polygon.size(), 4u);  // a wedge: a thin rhombus
+    }
+    for (std::size_t k = 0; k < 5; ++k) {
+        const float cosine = glm::dot(out[k], out[(k + 1) % 5]);
+        EXPECT_NEAR(std::acos(std::clamp(cosine, -1.0f, 1.0f)) * 180.0 / std::numbers::pi, 72.0,
+                    1e-3)
+            << k;
+    }
+}
+
 }  // namespace
 }  // namespace sylva
