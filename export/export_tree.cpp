@@ -51,10 +51,17 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
         out.leaf_budgets = {leaf_budget(budget)};
         out.levels.push_back(reduce_tree(tree, budget, settings.decimate));
     }
+    out.organs = finished_organs(tree, out.leaf_budgets);
+    return out;
+}
+
+std::vector<OrganMesh> finished_organs(const Tree& tree,
+                                       const std::vector<std::size_t>& leaf_budgets) {
     // Organs are whole pieces with a budget of their own, the leaves' (docs/lowpoly.md).
+    std::vector<OrganMesh> out;
     if (!tree.organs.empty())
-        for (const std::size_t leaves : out.leaf_budgets)
-            out.organs.push_back(thin_organs(tree.organs, leaves));
+        for (const std::size_t leaves : leaf_budgets)
+            out.push_back(thin_organs(tree.organs, leaves));
     return out;
 }
 

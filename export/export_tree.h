@@ -55,6 +55,11 @@ SolidParts finest_solids(const Tree& tree, const FinishedTree& finished);
 // generate_tree's MeshOptions::budget should be for this export.
 std::size_t game_budget(const FinishSettings& settings);
 
+// The tree's organs thinned to each of `leaf_budgets` (FinishedTree::organs); empty when
+// the tree has none.
+std::vector<OrganMesh> finished_organs(const Tree& tree,
+                                       const std::vector<std::size_t>& leaf_budgets);
+
 // Reduces the tree as `settings` say. Throws what reduce_tree() throws.
 // With settings.lod, `level0` (if given) is the chain's level 0 as made before: what
 // finish_tree() without lod returned as its only level (make_lod_chain()).

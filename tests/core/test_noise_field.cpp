@@ -43,8 +43,9 @@ TEST(LoopingNoise, RepeatsWithItsPeriodAndIsContinuous) {
             EXPECT_NEAR(looping_fbm(n, x, t, period, s), looping_fbm(n, x, t + period, period, s),
                         1e-6);
             // Small steps in time, small changes (the end runs into the start the same way).
-            EXPECT_LT(std::abs(looping_noise(n, x, t + 0.01, period) - looping_noise(n, x, t, period)),
-                      0.1);
+            EXPECT_LT(
+                std::abs(looping_noise(n, x, t + 0.01, period) - looping_noise(n, x, t, period)),
+                0.1);
             const double v = looping_noise(n, x, t, period);
             lo = std::min(lo, v);
             hi = std::max(hi, v);

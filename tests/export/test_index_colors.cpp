@@ -34,7 +34,8 @@ std::vector<glm::vec3> colors(const tinygltf::Model& model, int index) {
     const std::size_t stride = v.byteStride ? v.byteStride : 4;
     std::vector<glm::vec3> out;
     for (std::size_t i = 0; i < a.count; ++i)
-        out.push_back(glm::vec3(data[i * stride], data[i * stride + 1], data[i * stride + 2]) / 255.0f);
+        out.push_back(glm::vec3(data[i * stride], data[i * stride + 1], data[i * stride + 2]) /
+                      255.0f);
     return out;
 }
 
@@ -53,7 +54,8 @@ class IndexColors : public ::testing::Test {
     void TearDown() override { fs::remove_all(dir_); }
 
     // `name` exported at a small budget (and LOD levels) to `file`.
-    std::vector<fs::path> write(const std::string& name, const std::string& file, bool lod = false) {
+    std::vector<fs::path> write(const std::string& name, const std::string& file,
+                                bool lod = false) {
         tmpl_ = load_template(name);
         tmpl_.params.trunk_resolution = 48;
         tmpl_.params.crown_resolution = 24;
@@ -91,8 +93,8 @@ TEST_F(IndexColors, GlbCarriesThePaletteInColor0OnWhiteParts) {
         names.insert(node.name);
         const tinygltf::Primitive& p =
             model.meshes[static_cast<std::size_t>(node.mesh)].primitives.at(0);
-        const auto& factor =
-            model.materials[static_cast<std::size_t>(p.material)].pbrMetallicRoughness.baseColorFactor;
+        const auto& factor = model.materials[static_cast<std::size_t>(p.material)]
+                                 .pbrMetallicRoughness.baseColorFactor;
         if (node.name == "crown" || node.name == "leaves") {
             // Not drawn by index: the generic profile's COLOR_0 is white (its wind is in
             // COLOR_1), the part's colour its own.

@@ -192,15 +192,16 @@ palette = [[0.5, 0.25, 0.0], [1, 1, 1]]
     EXPECT_EQ(again.colors.palette, a.colors.palette);
     EXPECT_EQ(again.colors.trunk, a.colors.trunk);
 
-    const TreeTemplate b =
-        parse_template_file("name = \"p\"\ngrammar = \"axiom: F\"\ncolors = [[0, 1, 0]]\n", "c.toml");
+    const TreeTemplate b = parse_template_file(
+        "name = \"p\"\ngrammar = \"axiom: F\"\ncolors = [[0, 1, 0]]\n", "c.toml");
     EXPECT_EQ(b.colors.palette, std::vector<glm::vec3>{glm::vec3(0, 1, 0)});
     EXPECT_EQ(b.colors.trunk, PartColors{}.trunk);
 
     for (const char* bad : {"colors = [[0, 1]]", "colors = [[0, 1, 2]]", "colors = 3",
                             "[colors]\npalette = [0.5]", "[colors]\nbark = [0, 0, 0]"}) {
         try {
-            parse_template_file(std::string("name = \"p\"\ngrammar = \"axiom: F\"\n") + bad, "d.toml");
+            parse_template_file(std::string("name = \"p\"\ngrammar = \"axiom: F\"\n") + bad,
+                                "d.toml");
             ADD_FAILURE() << bad;
         } catch (const InputError& e) {
             EXPECT_GE(e.line(), 3) << bad << ": " << e.what();

@@ -153,7 +153,8 @@ TEST(Defines, GivenTwiceIsAnErrorNamingBothLines) {
 TEST(NoiseChoice, NeighboursChooseAlikeAndSharesHold) {
     // A row of 400 modules one meter apart along +Y: each picks B or C by noise at its place.
     const std::string grammar =
-        "axiom: P(400)\nP(n) : n > 0 -> X f P(n-1)\nX -> B : 0.3, noise 0.1\nX -> C : 0.7, noise 0.1\n";
+        "axiom: P(400)\nP(n) : n > 0 -> X f P(n-1)\nX -> B : 0.3, noise 0.1\nX -> C : 0.7, noise "
+        "0.1\n";
     const Word word = derive_text(grammar, 401, 9);
     std::string picks;
     for (std::size_t i = 0; i < word.size(); ++i)

@@ -42,7 +42,8 @@ TEST(Lint, ARuleAnEarlierOneAlwaysWinsOver) {
 TEST(Lint, ZeroWeightsAndUnreadNames) {
     expect_warning("axiom: A\nA -> F : 0\nA -> FF : 1\n", 2, 10, "never chosen");
     expect_warning("#define r 2\naxiom: F\n", 1, 9, "never read");
-    expect_warning("axiom: A(1,2)\nA(x,y) -> F(x)A(x,y+0)\nA(_x,_y) -> B\n", 3, 1, "rule on line 2");
+    expect_warning("axiom: A(1,2)\nA(x,y) -> F(x)A(x,y+0)\nA(_x,_y) -> B\n", 3, 1,
+                   "rule on line 2");
     expect_warning("axiom: A(1,2)\nA(l,w) -> F(l)\n", 2, 5, "parameter 'w'");
     // A name starting with _ is bound on purpose.
     EXPECT_TRUE(lint_grammar("axiom: A(1,2)\nA(l,_w) -> F(l)\n").empty());
