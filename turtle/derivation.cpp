@@ -137,7 +137,8 @@ class Deriver {
     // Weights near the largest double sum to infinity: then every weight is taken relative
     // to the largest, which keeps the shares. All weights zero is an error, not the last
     // rule.
-    const Rule* pick_weighted(double total, const Word& word, size_t i) {
+    // Out of line: rewrite() stays small for the common, unweighted rules.
+    [[gnu::noinline]] const Rule* pick_weighted(double total, const Word& word, size_t i) {
         const Rule& first = *weighted_.front().first;
         if (total == 0.0)
             throw GrammarError(
