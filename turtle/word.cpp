@@ -34,21 +34,24 @@ std::string Word::to_string() const {
     std::string out;
     out.reserve(symbols_.size() + params_.size() * 6);
     char buffer[32];
-    // A name's characters: a word or a letter, digit or '_' symbol. Two neighbours that are
-    // names, one of them a word, need a space between them.
+    // What reads back as other modules when written together: two names (a word, or a
+    // letter, digit or '_') where the grammar has words (single letters would join into a
+    // word there; "~" with a name becomes an organ), or a '~' before a name.
     auto name_like = [](char c) {
         return is_word_symbol(c) || std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };
     for (std::size_t i = 0; i < size(); ++i) {
         const char c = symbols_[i];
-        if (!is_word_symbol(c)) {
-            if (i > 0 && is_word_symbol(symbols_[i - 1]) && name_like(c) && args(i - 1).empty())
-                out.push_back(' ');
-            out.push_back(c);
-        } else {
-            if (i > 0 && name_like(symbols_[i - 1]) && args(i - 1).empty()) out.push_back(' ');
-            out.append(symbol_name(c));
+        const std::string_view text = symbol_name(c);
+        if (i > 0 && args(i - 1).empty()) {
+            const char before = symbols_[i - 1];
+            const bool names = name_like(before) && name_like(c) &&
+                               (names_ || is_word_symbol(before) || is_word_symbol(c));
+            const bool tilde = before == '~' && !text.empty() &&
+                               std::isalpha(static_cast<unsigned char>(text.front()));
+            if (names || tilde) out.push_back(' ');
         }
+        out.append(text);
         std::span<const double> a = args(i);
         if (a.empty()) continue;
         out.push_back('(');

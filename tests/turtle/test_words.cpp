@@ -51,8 +51,10 @@ struct Reference {
     std::map<std::string, std::vector<std::string>> rules;
 };
 
-std::vector<std::string> tokens(const std::string& text) {
-    static const std::regex token(R"([A-Za-z][A-Za-z0-9_]*|\S)");
+// With `words` false every character is a token (a grammar of single characters).
+std::vector<std::string> tokens(const std::string& text, bool words = true) {
+    static const std::regex word_token(R"([A-Za-z][A-Za-z0-9_]*|\S)"), char_token(R"(\S)");
+    const std::regex& token = words ? word_token : char_token;
     std::vector<std::string> out;
     for (auto it = std::sregex_iterator(text.begin(), text.end(), token);
          it != std::sregex_iterator(); ++it)
@@ -60,7 +62,7 @@ std::vector<std::string> tokens(const std::string& text) {
     return out;
 }
 
-Reference reference(const std::string& grammar) {
+Reference reference(const std::string& grammar, bool words = true) {
     Reference r;
     std::size_t start = 0;
     while (start < grammar.size()) {
@@ -69,11 +71,11 @@ Reference reference(const std::string& grammar) {
         const std::string line = grammar.substr(start, end - start);
         start = end + 1;
         if (line.rfind("axiom:", 0) == 0) {
-            r.axiom = tokens(line.substr(6));
+            r.axiom = tokens(line.substr(6), words);
         } else if (const std::size_t arrow = line.find("->"); arrow != std::string::npos) {
-            const std::vector<std::string> pred = tokens(line.substr(0, arrow));
+            const std::vector<std::string> pred = tokens(line.substr(0, arrow), words);
             EXPECT_EQ(pred.size(), 1u) << line;
-            r.rules[pred[0]] = tokens(line.substr(arrow + 2));
+            r.rules[pred[0]] = tokens(line.substr(arrow + 2), words);
         }
     }
     return r;
@@ -156,6 +158,49 @@ F -> F F
                              5);
 }
 
+TEST(Words, ALecturesZeroLSystemGivesItsTableOfWords) {
+    // A 0L system as a lecture on L-systems tabulates it (generation 1 is the axiom; its
+    // rule for a, printed a -> cdc, is a -> cbc by the table). The table's later rows
+    // carry slips of the pen (a k too many); from the sixth on the words are the rules'.
+    const char* const grammar = "axiom: a\na -> cbc\nb -> dad\nc -> k\nd -> a\nk -> k\n";
+    const char* const table[] = {"a",
+                                 "cbc",
+                                 "kdadk",
+                                 "kacbcak",
+                                 "kcbckdadkcbck",
+                                 "kkdadkkacbcakkdadkk",
+                                 "kkacbcakkcbckdadkcbckkacbcakk"};
+    for (int n = 0; n < 7; ++n) EXPECT_EQ(derive_text(grammar, n).to_string(), table[n]) << n + 1;
+}
+
+TEST(Words, AbopBushAsPrintedTracesItsLeaves) {
+    // ABOP Fig. 1.25 as printed, with its leaf traced by f (no dots): every leaf a flat
+    // hexagon, one per { in the word.
+    const std::string grammar = R"(axiom: A
+A -> [&FL!A]/////'[&FL!A]///////'[&FL!A]
+F -> S ///// F
+S -> F L
+L -> ['''^^{-f+f+f-|-f+f+f}]
+)";
+    const Reference r = reference(grammar, false);
+    std::vector<std::string> word = r.axiom;
+    for (int n = 0; n < 4; ++n) word = rewrite(r, word);
+    EXPECT_EQ(names_of(derive_text(grammar, 4)), word);
+    TurtleSettings settings;
+    settings.width_model = WidthModel::Explicit;
+    const Skeleton drawn = interpret(derive_text(grammar, 4), settings);
+    EXPECT_EQ(drawn.segments.size(), count(word, "F"));
+    ASSERT_EQ(drawn.polygons.size(), count(word, "{"));
+    ASSERT_GT(drawn.polygons.size(), 10u);
+    for (const auto& polygon : drawn.polygons) {
+        ASSERT_EQ(polygon.size(), 6u);
+        const glm::vec3 normal =
+            glm::normalize(glm::cross(polygon[1] - polygon[0], polygon[2] - polygon[0]));
+        for (const glm::vec3& v : polygon)
+            EXPECT_NEAR(glm::dot(v - polygon[0], normal), 0.0f, 1e-5f);
+    }
+}
+
 TEST(Words, SingleCharacterGrammarsKeepTheirMeaning) {
     // Without a word predecessor every character is a module, as before: "FF" is F F,
     // "AB" is A B and letters run together.
@@ -182,7 +227,7 @@ Apex(n) < Leaf : n > 1 -> Leaf Leaf
 
 TEST(Words, RulesMatchWordAndArity) {
     const Word w = derive_text("axiom: seg seg(1)\nseg -> A\nseg(x) -> B\n", 1);
-    EXPECT_EQ(w.to_string(), "AB");
+    EXPECT_EQ(w.to_string(), "A B");  // apart: "AB" would read as a word here
 }
 
 TEST(Words, TooManyWordsIsAnErrorAtItsColumn) {
