@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/forest_cli.h"
+#include "app/lint_cli.h"
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
@@ -51,7 +52,9 @@ Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
                  [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
                  -o OUT.{obj,glb,ply,fbx}
-  sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [-o WORD.txt]
+  sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [--lint] [-o WORD.txt]
+  sylva lint     [-t NAME|FILE] [--set KEY=VALUE]...
+                 (grammar warnings as FILE:LINE:COLUMN; docs/grammar.md "Warnings")
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
   sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
@@ -144,6 +147,7 @@ struct Options {
     std::optional<CrownShape> crown_shape;  // unset: the template's
     bool lod = false;
     bool fidelity = false;
+    bool lint = false;  // derive: the grammar's warnings on stderr first
     const ExportFormat* format = nullptr;
     ExportOptions export_options;
     CostLimits limits;
@@ -228,6 +232,8 @@ Options parse_options(int argc, char** argv) {
             o.lod = true;
         } else if (arg == "--fidelity") {
             o.fidelity = true;
+        } else if (arg == "--lint") {
+            o.lint = true;
         } else if (arg == "--format") {
             std::string name = value();
             o.format = format_from_name(name);
@@ -349,8 +355,9 @@ std::vector<std::string> part_states(const std::vector<NamedMesh>& parts) {
     tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t k) {
         const Mesh& mesh = *parts[k].mesh;
         // Leaves are open by design (and counted); the solid parts must be closed.
-        states[k] = !parts[k].closed
-                        ? std::to_string(count_leaves(mesh)) + " leaves, open by design"
+        states[k] = !parts[k].closed ? std::to_string(count_leaves(mesh)) +
+                                           (parts[k].name == "organs" ? " pieces" : " leaves") +
+                                           ", open by design"
                     : check_topology(mesh).is_closed_manifold() ? "closed"
                                                                 : "NOT closed";
     });
@@ -396,7 +403,9 @@ int run_export(const Options& o) {
 
     // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
     // and a core is often free (the reduction of a big trunk waits for nothing either).
-    const std::vector<NamedMesh> raw = tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors);
+    std::vector<NamedMesh> raw = tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors);
+    if (!tree.organs.empty())
+        raw.push_back({"organs", &tree.organs.mesh, tmpl.colors.leaves, false});
     std::vector<std::string> raw_states;
     Stopwatch clock;
     FinishedTree finished;
@@ -425,8 +434,10 @@ int run_export(const Options& o) {
                         leaf_budget.c_str());
         else
             std::printf("  reduced (budget %zu + %s):\n", finished.budgets[i], leaf_budget.c_str());
-        const std::vector<NamedMesh> parts =
+        std::vector<NamedMesh> parts =
             tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors);
+        if (i < finished.organs.size() && !finished.organs[i].empty())
+            parts.push_back({"organs", &finished.organs[i].mesh, tmpl.colors.leaves, false});
         print_parts(parts, part_states(parts), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
@@ -456,6 +467,7 @@ int run_derive(const Options& o) {
     if (tree.growth != lsystem_growth.name)
         throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
                          tree.growth);
+    if (o.lint) print_lint(tree, stderr);
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     std::string text = derive_word(tree).to_string();
     text.push_back('\n');
@@ -507,6 +519,7 @@ int run(int argc, char** argv) {
     }
     if (o.command == "export") return run_export(o);
     if (o.command == "derive") return run_derive(o);
+    if (o.command == "lint") return run_lint(configured_template(o));
     if (o.command == "skeleton") return run_skeleton(o);
     throw UsageError("unknown command '" + o.command + "'");
 }

@@ -505,7 +505,8 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
             out = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
                                  fields.crown_box, leaves);
     }
-    add_polygon_leaves(out, skeleton.polygons);
+    if (static_cast<PolygonPart>(p.polygon_part) == PolygonPart::Leaves)
+        add_polygon_leaves(out, skeleton.polygons);
     return out;
 }
 
@@ -535,7 +536,8 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
 
     check_extent(out.skeleton);
-    throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
+    out.organs = tree_organs(out.skeleton, p);  // small; an unknown organ fails before meshing
+    throw_if_cancelled(options.cancel);         // each stage below starts only when still wanted
     Stopwatch clock;
     const bool crown_wanted = p.crown_mesh != 0;
     // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in

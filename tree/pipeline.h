@@ -18,14 +18,16 @@
 #include "sdf/cone_field.h"
 #include "sdf/sphere_field.h"
 #include "tree/branch_prisms.h"
+#include "tree/organs.h"
 
 namespace sylva {
 
 struct Tree {
     Skeleton skeleton;
     Mesh trunk;
-    Mesh crown;   // empty without tips, with sphere_diameter 0 or crown_mesh 0
-    Mesh leaves;  // open quads by design (two triangles up, two down per leaf); may be empty
+    Mesh crown;        // empty without tips, with sphere_diameter 0 or crown_mesh 0
+    Mesh leaves;       // open quads by design (two triangles up, two down per leaf); may be empty
+    OrganMesh organs;  // flowers, fruit, cones (tree/organs.h); empty for most trees
     // Struts added between crown blobs so a low budget can draw the crown (crown_merge.h);
     // 0 when the crown is meshed as grown.
     std::size_t crown_bridges = 0;
@@ -126,8 +128,8 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
 
 // The tree's leaves (generate_tree's last stage): scattered over the crown's field, or where
 // the crown is meshed in a shell one leaf deep under its surface, then the turtle's
-// polygons. `params` as generate_tree meshes with (the budget's crown resolution). Throws
-// Cancelled once `cancel` is set.
+// polygons (unless polygon_part puts them among the organs). `params` as generate_tree meshes with
+// (the budget's crown resolution). Throws Cancelled once `cancel` is set.
 Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeParams& params,
                  CancelFlag cancel = nullptr);
 

@@ -19,6 +19,7 @@
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
+#include "ui/organ_view.h"
 #include "ui/panels.h"
 #include "ui/release_bench.h"
 #include "ui/scale_figure.h"
@@ -102,6 +103,7 @@ struct Viewport {
     Backdrop backdrop;
     GroundGrid grid;
     MeshRenderer trunk, crown, leaves;
+    OrganView organs;  // flowers, fruit, cones (ui/organ_view.h), shown with the leaves
     LineRenderer skeleton;
     LineRenderer figure;  // the 1.8 m person beside the trunk
     // Space colonization: the envelope's wire, its attraction points, and the skeleton up to
@@ -167,6 +169,11 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
     viewport.trunk.upload(meshes.trunk);
     viewport.crown.upload(meshes.crown);
     viewport.leaves.upload(meshes.leaves);
+    const std::vector<sylva::OrganMesh>& organs = generated.finished.organs;
+    upload_organs(viewport.organs,
+                  organs.empty() ? generated.tree.organs
+                                 : organs[std::min<std::size_t>(
+                                       static_cast<std::size_t>(meshes.level), organs.size() - 1)]);
     viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
     viewport.wind.ready = false;
     return meshes.level;
@@ -361,6 +368,8 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         part.renderer.draw(view, projection, part.color);
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
+    if (show.leaves && !replay && !planted)
+        draw_organs(viewport.organs, view, projection, colors, show.wireframe, kWireColor);
     viewport.grid.draw(view, projection);
     if (show.scale_figure && !planted) viewport.figure.draw(view, projection, kFigureColor);
     if (replay)

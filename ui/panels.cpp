@@ -17,6 +17,7 @@
 #include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
+#include "ui/rules_warnings.h"
 #include "ui/template_controls.h"
 
 namespace sylva::studio {
@@ -441,6 +442,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     }
     const TextMark mark{state.error_line, state.error_column};
     rules_editor("rules", state.tree_template.grammar, mark, editor, height);
+    rules_warnings(state.tree_template, editor);
     if (state.error_line > 0) {
         ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
         ImGui::SameLine();
