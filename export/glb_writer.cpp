@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
 
@@ -60,6 +61,9 @@ class GltfBuilder {
         if (added) add_mesh(part, mat, name);
         const int node = add_group(parent, name);
         model_.nodes[static_cast<std::size_t>(node)].mesh = shared->second;
+        if (part.textures && !part.textures->extras_json.empty())
+            model_.nodes[static_cast<std::size_t>(node)].extras =
+                gltf_value(nlohmann::json::parse(part.textures->extras_json));
     }
 
     void write(std::ostream& out) {
@@ -285,7 +289,16 @@ class GltfBuilder {
         tinygltf::Material m;
         m.name = part.name;
         m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
-        if (!options_.palette_png.empty()) {  // the swatches carry the colour
+        if (part.textures) {  // the images carry colour and normals, alpha-tested
+            const PartTextures& t = *part.textures;
+            m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+            m.pbrMetallicRoughness.baseColorTexture.index =
+                image_texture(t.name + "_albedo", t.albedo_png);
+            if (!t.normal_png.empty())
+                m.normalTexture.index = image_texture(t.name + "_normal", t.normal_png);
+            m.alphaMode = "MASK";
+            m.alphaCutoff = t.alpha_cutoff;
+        } else if (!options_.palette_png.empty()) {  // the swatches carry the colour
             m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
             m.pbrMetallicRoughness.baseColorTexture.index = palette_texture();
         }
@@ -298,9 +311,53 @@ class GltfBuilder {
         return index;
     }
 
-    // The palette PNG as the one image, texture and (nearest, clamped) sampler; made once.
+    // A PNG as an image and a texture with a trilinear, clamped sampler (made once, shared):
+    // the impostors' textures, minified far away. Returns the texture's index.
+    int image_texture(const std::string& name, const std::vector<std::uint8_t>& png) {
+        if (mipmapped_sampler_ < 0) {
+            tinygltf::Sampler sampler;
+            sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+            sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+            sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            model_.samplers.push_back(sampler);
+            mipmapped_sampler_ = static_cast<int>(model_.samplers.size()) - 1;
+        }
+        tinygltf::Image image;
+        image.name = name;
+        image.mimeType = "image/png";
+        image.bufferView = add_view(png.data(), png.size(), 0);
+        model_.images.push_back(image);
+        tinygltf::Texture texture;
+        texture.name = name;
+        texture.source = static_cast<int>(model_.images.size()) - 1;
+        texture.sampler = mipmapped_sampler_;
+        model_.textures.push_back(texture);
+        return static_cast<int>(model_.textures.size()) - 1;
+    }
+
+    // JSON (extras) as tinygltf's value tree.
+    static tinygltf::Value gltf_value(const nlohmann::json& j) {
+        if (j.is_object()) {
+            tinygltf::Value::Object object;
+            for (const auto& [key, value] : j.items()) object[key] = gltf_value(value);
+            return tinygltf::Value(std::move(object));
+        }
+        if (j.is_array()) {
+            tinygltf::Value::Array array;
+            for (const auto& value : j) array.push_back(gltf_value(value));
+            return tinygltf::Value(std::move(array));
+        }
+        if (j.is_string()) return tinygltf::Value(j.get<std::string>());
+        if (j.is_boolean()) return tinygltf::Value(j.get<bool>());
+        if (j.is_number_integer()) return tinygltf::Value(j.get<int>());
+        if (j.is_number()) return tinygltf::Value(j.get<double>());
+        return {};
+    }
+
+    // The palette PNG as an image, texture and (nearest, clamped) sampler; made once.
     int palette_texture() {
-        if (!model_.textures.empty()) return 0;
+        if (palette_texture_ >= 0) return palette_texture_;
         tinygltf::Image image;
         image.name = "palette";
         image.mimeType = "image/png";
@@ -313,16 +370,19 @@ class GltfBuilder {
         sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
         model_.samplers.push_back(sampler);
         tinygltf::Texture texture;
-        texture.source = 0;
-        texture.sampler = 0;
+        texture.source = static_cast<int>(model_.images.size()) - 1;
+        texture.sampler = static_cast<int>(model_.samplers.size()) - 1;
         model_.textures.push_back(texture);
-        return 0;
+        palette_texture_ = static_cast<int>(model_.textures.size()) - 1;
+        return palette_texture_;
     }
 
     const ExportOptions& options_;
     tinygltf::Model model_;
     std::vector<unsigned char> bytes_;
     std::map<std::string, int> materials_;
+    int palette_texture_ = -1;
+    int mipmapped_sampler_ = -1;
     std::map<std::tuple<const Mesh*, const PartAttributes*, int>, int> meshes_;
 };
 
