@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -129,6 +130,34 @@ class GltfBuilder {
         return out;
     }
 
+    // Per vertex, the direction of increasing u and in w the sign that makes
+    // cross(normal, tangent) run up the image (v up, as PartAttributes' v runs; glTF's
+    // normal maps are +Y up): a normal map then reads the same in every engine, as the
+    // validator asks, instead of a tangent space each runtime generates its own way.
+    static std::vector<glm::vec4> tangents(const Vertices& v) {
+        std::vector<glm::vec4> out(v.positions.size(), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+        for (std::size_t k = 0; k + 2 < v.indices.size(); k += 3) {
+            const std::uint32_t a = v.indices[k], b = v.indices[k + 1], c = v.indices[k + 2];
+            const glm::vec3 e1 = v.positions[b] - v.positions[a],
+                            e2 = v.positions[c] - v.positions[a];
+            const glm::vec2 d1 = v.uv[b] - v.uv[a], d2 = v.uv[c] - v.uv[a];
+            const float det = d1.x * d2.y - d2.x * d1.y;
+            if (det == 0.0f) continue;  // no UV area: keep the default
+            const glm::vec3 t = (e1 * d2.y - e2 * d1.y) / det;
+            const glm::vec3 bitangent = (e2 * d1.x - e1 * d2.x) / det;
+            for (std::uint32_t i : {a, b, c}) {
+                const glm::vec3& n = v.normals[i];
+                const glm::vec3 orthogonal = t - n * glm::dot(n, t);  // Gram-Schmidt
+                const float length = glm::length(orthogonal);
+                if (!(length > 0.0f)) continue;
+                const float w =
+                    glm::dot(glm::cross(n, orthogonal), bitangent) < 0.0f ? -1.0f : 1.0f;
+                out[i] = glm::vec4(orthogonal / length, w);
+            }
+        }
+        return out;
+    }
+
     void add_mesh(const NamedMesh& part, int mat, const std::string& name) {
         const Vertices v = vertices(part);
         tinygltf::Primitive primitive;
@@ -136,6 +165,8 @@ class GltfBuilder {
         primitive.attributes["POSITION"] = add_vec3(v.positions, true);
         if (!part.collision) {
             primitive.attributes["NORMAL"] = add_vec3(v.normals, false);
+            if (part.textures && !part.textures->normal_png.empty() && !v.uv.empty())
+                primitive.attributes["TANGENT"] = add_floats(tangents(v));
             add_engine_attributes(primitive, part, v);
             primitive.material = mat;
         }
