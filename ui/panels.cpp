@@ -17,6 +17,7 @@
 #include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
+#include "ui/impostor_view.h"
 #include "ui/template_controls.h"
 
 namespace sylva::studio {
@@ -511,11 +512,17 @@ void view_section(StudioState& state) {
     ImGui::SameLine();
     ImGui::BeginDisabled(!v.low_poly);
     ImGui::SetNextItemWidth(90.0f);
-    ImGui::SliderInt("##lod", &v.lod_level, 0, kLodLevels - 1, "LOD %d");
+    ImGui::SliderInt("##lod", &v.lod_level, 0, kImpostorSlot,
+                     v.lod_level == kImpostorSlot ? "impostor" : "LOD %d");
     tooltip(
         "the level of the LOD chain an export with \"LOD chain\" writes: budget, 1/2, 1/4, "
-        "1/8 (keys 0-3)");
+        "1/8 (keys 0-3), then the octahedral impostor of export --impostor (key 4)");
     ImGui::EndDisabled();
+    if (impostor_slot_shown(v)) {  // ui/impostor_view.h
+        ImGui::SameLine();
+        ImGui::Checkbox("tree", &v.impostor_tree);
+        tooltip("show the tree the impostor stands for (LOD 0) in its place, to compare");
+    }
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
     ImGui::Checkbox("scale figure", &v.scale_figure);
