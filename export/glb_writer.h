@@ -6,7 +6,10 @@
 // (export/named_mesh.h) become TEXCOORD_0 (v flipped to glTF's v down), COLOR_0 (the
 // tint) and the wind in the profile's channel (export/engine_profile.h); collision parts
 // are bare POSITION + indices without material, once under the root; a palette
-// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture.
+// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture. A part with
+// its own textures (NamedMesh::textures: the impostor levels) gets them embedded as its
+// material's baseColorTexture and normalTexture (trilinear, clamped), alphaMode MASK,
+// TANGENTs from its UVs, and their extras JSON on its node.
 #pragma once
 
 #include <filesystem>
