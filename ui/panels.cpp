@@ -704,7 +704,10 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
         const Tree& t = shown.tree;
         ImGui::Text("%s  ", state.shown_template.name.c_str());
         ImGui::SameLine(0.0f, 0.0f);
-        if (shown.reduced()) {
+        if (shown.reduced() && impostor_slot_shown(state.view)) {
+            ImGui::Text("impostor of LOD0: 2 triangles, 8 x 8 views of 128 px%s",
+                        state.view.impostor_tree ? " (showing LOD0)" : "");
+        } else if (shown.reduced()) {
             const GameMeshTotals totals = game_mesh_totals(shown, state.view.lod_level);
             const std::string label = "game mesh LOD" + std::to_string(totals.level) + ": ";
             totals_line(label, totals, false);
