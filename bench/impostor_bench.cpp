@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
                 repeat);
     std::printf("%-10s %9s %8s %8s %10s %10s %8s %9s\n", "template", "triangles", "atlas",
                 "atlas cpu", "billboard", "png", "png cpu", "png KiB");
-    double worst = 0.0;
+    double worst = 0.0, worst_cpu = 0.0;
     for (const std::string& name : names) {
         TreeTemplate t = load_template(name);
         t.colors = tree_colors(t);
@@ -101,10 +101,16 @@ int main(int argc, char** argv) {
             png_bytes = encode_png(atlas.albedo).size() + encode_png(atlas.normal).size();
         });
         worst = std::max(worst, bake.wall);
+        worst_cpu = std::max(worst_cpu, bake.cpu);
         std::printf("%-10s %9zu %8.1f %8.1f %10.1f %10.1f %8.1f %9.0f\n", name.c_str(), triangles,
                     bake.wall, bake.cpu, billboard.wall, png.wall, png.cpu,
                     static_cast<double>(png_bytes) / 1024.0);
     }
-    std::printf("slowest atlas bake: %.1f ms (goal: at most 100 ms on 2 cores)\n", worst);
+    // CPU time bounds the wall time of an idle machine from above (both threads' work,
+    // as if done one after the other); on a busy machine the wall time is the scheduler's.
+    std::printf(
+        "slowest atlas bake: %.1f ms wall, %.1f ms CPU of both threads (goal: at most 100 ms on "
+        "2 cores)\n",
+        worst, worst_cpu);
     return 0;
 }
