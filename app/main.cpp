@@ -16,6 +16,7 @@
 
 #include "app/forest_cli.h"
 #include "app/lint_cli.h"
+#include "app/impostor_cli.h"
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
@@ -91,6 +92,17 @@ constexpr const char* kOptions = R"(
                    crown_shape (auto in every built-in template)
   --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
+  --impostor       append far levels baked from LOD0 (docs/impostors.md): an octahedral
+                   impostor (one quad, albedo + normal/depth atlas of 8 x 8 views, a
+                   shader per engine in engine_kits/) as the last level of a --lod chain,
+                   or after the tree as LOD1; .glb embeds the atlas, .obj writes
+                   OUT_impostor_albedo.png ... beside it; OUT_impostor.json has the layout
+  --impostor-kind K
+                   octahedral (default), billboard (crossed quads any importer shows) or
+                   both (billboard, then octahedral); implies --impostor
+  --impostor-size PX, --impostor-views N, --impostor-quads Q
+                   atlas side (default 1024), N x N views (default 8, 2 to 32),
+                   billboard quads (default 3, or 2)
   --format F       obj, glb, ply or fbx (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
   --profile P      generic (default), unity, unreal or godot: collision names, the wind
@@ -230,6 +242,13 @@ Options parse_options(int argc, char** argv) {
                 throw UsageError("--crown-shape expects auto, blobs or hulls, not '" + name + "'");
         } else if (arg == "--lod") {
             o.lod = true;
+        } else if (arg.rfind("--impostor", 0) == 0) {
+            try {  // app/impostor_cli.h
+                if (!parse_impostor_flag(arg, value, o.export_options.impostor))
+                    throw UsageError("unknown option '" + arg + "'");
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(e.what());
+            }
         } else if (arg == "--fidelity") {
             o.fidelity = true;
         } else if (arg == "--lint") {
@@ -384,6 +403,8 @@ int run_export(const Options& o) {
         throw UsageError("--format " + std::string(format->name) + " does not match '" + o.output +
                          "' (a " + std::string(by_extension->name) +
                          " file name): use the extension " + std::string(format->extension));
+    if (o.export_options.impostor.kind != ImpostorKind::None && format->name == "ply")
+        throw UsageError("--impostor needs textures, which PLY does not carry: use .glb or .obj");
     output_target(o.output);  // a directory or device at -o is refused before the work
     TreeTemplate tmpl = configured_template(o);
     FinishSettings finish;
@@ -441,6 +462,8 @@ int run_export(const Options& o) {
         print_parts(parts, part_states(parts), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
+    print_far_levels(o.export_options.impostor,
+                     finished.levels.empty() ? 1 : finished.levels.size());
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),
                 tips(tree.skeleton).size());
     for (size_t i = 0; i < tree.times.size(); ++i)

@@ -6,6 +6,7 @@
 #include "core/file_set.h"
 #include "export/collision.h"
 #include "export/engine_kit.h"
+#include "export/impostor_level.h"
 #include "export/index_colors.h"
 #include "export/organ_attributes.h"
 #include "export/palette.h"
@@ -166,7 +167,20 @@ EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const P
                 {name, &model.hulls.back(), glm::vec3(1.0f), true, nullptr, true});
         }
     }
+    if (options.impostor.kind != ImpostorKind::None && !model.levels.empty())
+        add_far_levels(model, options);
     return model;
+}
+
+std::vector<BakePart> bake_parts(const ModelParts& level) {
+    std::vector<BakePart> parts;
+    for (const NamedMesh& part : level) {
+        if (part.collision || !part.mesh || part.mesh->triangles.empty()) continue;
+        const std::vector<glm::vec3>* tint =
+            part.attributes && !part.attributes->tint.empty() ? &part.attributes->tint : nullptr;
+        parts.push_back({part.mesh, part.color, tint, !part.closed});
+    }
+    return parts;
 }
 
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
@@ -179,8 +193,12 @@ std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
     std::function<void(FileSet&)> kit;
     if (!options.engine_kit.empty())
         kit = [&](FileSet& files) { add_engine_kit(files, options.engine_kit, options.profile); };
-    return write_lod_chain(path, engine_model(tree, finished, colors, options).levels, with_palette,
-                           format, kit);
+    const EngineModel model = engine_model(tree, finished, colors, options);
+    if (model.atlas || model.billboard)
+        with_palette.sidecars.push_back(
+            {"_impostor.json", far_levels_layout(model, output_target(path),
+                                                 format ? format : format_from_extension(path))});
+    return write_lod_chain(path, model.levels, with_palette, format, kit);
 }
 
 }  // namespace sylva

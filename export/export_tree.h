@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "export/export.h"
+#include "impostor/impostor_bake.h"
 #include "tree/lowpoly_tree.h"
 
 namespace sylva {
@@ -86,19 +87,31 @@ std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& fin
 // collision hulls (export/collision.h) in level 0, named for the profile after the mesh
 // they belong to (the model, or its `_LOD0` in a chain), materials named with
 // options.material_prefix. Owns what the parts point to (besides the meshes owned by `tree`
-// and `finished`); moving it keeps them.
+// and `finished`); moving it keeps them. With options.impostor, the far levels
+// (export/impostor_level.h) come last: a billboard level and/or an octahedral impostor
+// level, baked from level 0's parts.
 struct EngineModel {
     std::vector<ModelParts> levels;
     std::deque<PartAttributes> attributes;
     std::deque<Mesh> hulls;
+    std::deque<Mesh> far_meshes;        // the impostor's and the billboard's quads
+    std::deque<PartTextures> textures;  // their images
+    // What the far levels were baked as (without pixels), for the layout JSON.
+    std::optional<ImpostorAtlas> atlas;
+    std::optional<BillboardTexture> billboard;
 };
 EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const PartColors& colors,
                          const ExportOptions& options);
 
+// What the impostor bakes of a level: its parts but collision, with their colours, tints
+// (attributes) and sides.
+std::vector<BakePart> bake_parts(const ModelParts& level);
+
 // Writes engine_model() of the finished tree to `path` (format: given, or from the
-// extension), and with options.engine_kit the profile's import kit there, all in one
-// transaction. Returns every file written. Throws InputError for an unknown extension, IoError when
-// a file cannot be written.
+// extension), and with options.engine_kit the profile's import kit there, with
+// options.impostor the layout JSON `<stem>_impostor.json` beside it, all in one transaction.
+// Returns every file written. Throws InputError for an unknown extension, IoError when a file
+// cannot be written.
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
                                               const FinishedTree& finished,
                                               const PartColors& colors,

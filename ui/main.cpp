@@ -16,6 +16,7 @@
 #include "ui/layout_panel.h"
 #endif
 #include "ui/forest_preview.h"
+#include "ui/impostor_view.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
@@ -112,7 +113,8 @@ struct Viewport {
     static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
     int points_step = kNothing, replay_step = kNothing;
-    WindView wind;  // the wind toggle's parts (ui/wind_view.h)
+    WindView wind;          // the wind toggle's parts (ui/wind_view.h)
+    ImpostorView impostor;  // the LOD slider's impostor slot (ui/impostor_view.h)
 };
 
 GLFWwindow* create_window() {
@@ -297,7 +299,7 @@ void handle_shortcuts(StudioState& state) {
         if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
         if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
         if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
-        for (int level = 0; level < kLodLevels; ++level)
+        for (int level = 0; level <= kImpostorSlot; ++level)
             if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
                 state.view.low_poly = true;
                 state.view.lod_level = level;
@@ -360,11 +362,14 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         const MeshRenderer& renderer;
         glm::vec3 color;
     };
+    // The impostor slot draws the impostor instead of the tree, unless comparing.
+    const bool impostor = impostor_slot_shown(show) && !show.impostor_tree && !planted && !replay;
+    if (impostor) viewport.impostor.draw(view, projection, glm::vec3(glm::inverse(view)[3]));
     for (const Part& part :
          {Part{show.trunk, planted ? *forest.trunk : viewport.trunk, colors.trunk},
           Part{show.crown, planted ? *forest.crown : viewport.crown, colors.crown},
           Part{show.leaves, planted ? *forest.leaves : viewport.leaves, colors.leaves}}) {
-        if (!part.on || replay) continue;
+        if (!part.on || replay || impostor) continue;
         part.renderer.draw(view, projection, part.color);
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
@@ -498,21 +503,23 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.view.turntable) state.camera.yaw_deg += 0.5f;
         if (state.tree_changed) {
             place_scale_figure(viewport, *state.tree);
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
             update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
             state.frame_next_tree = false;
         } else if (state.tree &&
-                   shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+                   shown_parts(*state.tree, mesh_level(state.view)).level != uploaded_level) {
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
         }
+        if (state.tree && impostor_slot_shown(state.view) && state.tree->reduced())
+            viewport.impostor.update(state.tree, tree_colors(state.shown_template));
         if (state.tree && state.view.wind) {
             upload_swayed(viewport, *state.tree, uploaded_level,
                           options.wind_seconds.value_or(static_cast<float>(glfwGetTime())));
             swaying = true;
         } else if (state.tree && swaying) {
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
             swaying = false;
         }
         update_colonization(viewport, state, false);

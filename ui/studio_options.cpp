@@ -3,6 +3,8 @@
 #include <charconv>
 #include <string_view>
 
+#include "ui/studio_state.h"
+
 namespace sylva::studio {
 
 StudioOptions parse_studio_options(int argc, const char* const* argv) {
@@ -34,6 +36,9 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--lod takes a level from 0 to 3, got '" + std::string(text) +
                                  "'");
             options.lod_level = level;
+            options.low_poly = true;
+        } else if (arg == "--impostor") {  // the LOD slider's slot after LOD 3
+            options.lod_level = kLodLevels;
             options.low_poly = true;
         } else if (arg == "--no-envelope") {
             options.envelope = false;
@@ -105,8 +110,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
-           "[--points]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--impostor]\n"
+           "                    [--no-envelope] [--points]\n"
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
            "                    [--forest-preview] [--screenshot PATH [--frames N]]\n"
@@ -118,6 +123,7 @@ std::string studio_usage() {
            "  --low-poly         show the game mesh: what an export at the template's budget\n"
            "                     writes (trunk + crown reduced, leaves thinned)\n"
            "  --lod N            show level N (0-3) of its LOD chain; implies --low-poly\n"
+           "  --impostor         show the octahedral impostor (export --impostor) instead\n"
            "  --no-envelope      space colonization: hide the envelope's wire cage\n"
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"

@@ -137,6 +137,8 @@ struct ViewToggles {
     bool wireframe = false;
     bool low_poly = false;  // show the game mesh: what an export at the budget writes
     int lod_level = 0;      // which level of the LOD chain the low-poly view shows
+    // At the slider's impostor slot (ui/impostor_view.h): the tree it stands for instead.
+    bool impostor_tree = false;
     // Space colonization trees only (ui/colonization_view.h):
     bool envelope = true;      // the envelope as a wire cage
     bool points = false;       // the attraction points the growth started from
