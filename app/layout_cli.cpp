@@ -36,8 +36,9 @@ constexpr const char* kLayoutHelp = R"(usage: sylva layout examples
             sylva forest --layout) and .svg; --sheet also writes one picture of the
             example and every variation. The same input, seed and flags give the same bytes.
   --size N        each variation grown to N polygons (corners for an example of one
-                  polygon); --size A..B spreads the sizes over A to B; default: from
-                  just above the example's size to 12 times it
+                  polygon); Nx: N times the example's size; A..B (or Ax..Bx) spreads
+                  the sizes over A to B; default: from just above the example's size
+                  to 12 times it
   --area A        grown to about A square units of the example instead
   --length CLASS=LO..HI
                   edge lengths of a class in LO to HI (LO.. for no upper end): CLASS is a
@@ -163,6 +164,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         layout::VariationSettings vary;
         CostLimits limits;
         std::vector<std::pair<std::string, layout::LengthRange>> lengths;
+        std::string size_spec;  // resolved once the example's size is known
         for (std::size_t i = 2; i < args.size(); ++i) {
             const std::string& a = args[i];
             auto value = [&]() -> const std::string& {
@@ -183,16 +185,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
                 seed = number<std::uint64_t>(a, value(), 0, UINT64_MAX);
             } else if (a == "--size") {
                 generate_only();
-                const std::string v = value();
-                const std::size_t dots = v.find("..");
-                if (dots == std::string::npos) {
-                    vary.size = number<int>(a, v, 1, 1000000);
-                } else {
-                    vary.spread_low = number<int>(a, v.substr(0, dots), 1, 1000000);
-                    vary.spread_high = number<int>(a, v.substr(dots + 2), 1, 1000000);
-                    if (vary.spread_high < vary.spread_low)
-                        throw UsageError("--size A..B needs A <= B, not '" + v + "'");
-                }
+                size_spec = value();
             } else if (a == "--area") {
                 generate_only();
                 vary.area = number<double>(a, value(), 1e-9, 1e15);
@@ -248,7 +241,30 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         if (input.empty()) throw UsageError("layout " + sub + " needs an EXAMPLE");
         if (output.empty() && (sub == "derive" || sheet.empty()))
             throw UsageError("layout " + sub + " needs -o");
-        if (vary.size > 0 && vary.area > 0) throw UsageError("--size and --area: give one");
+        if (!size_spec.empty() && vary.area > 0) throw UsageError("--size and --area: give one");
+        // N, A..B, Nx or Ax..Bx (x: times the example's size); checked before any work.
+        struct SizeSpec {
+            double low = 0, high = 0;
+            bool relative = false;
+        } spec;
+        if (!size_spec.empty()) {
+            const std::size_t dots = size_spec.find("..");
+            auto part = [&](std::string t, bool& relative) {
+                relative = !t.empty() && t.back() == 'x';
+                if (relative) t.pop_back();
+                return relative ? number<double>("--size", t, 1e-3, 1e6)
+                                : static_cast<double>(number<int>("--size", t, 1, 1000000));
+            };
+            bool r1 = false, r2 = false;
+            spec.low = part(size_spec.substr(0, dots), r1);
+            spec.high = dots == std::string::npos ? spec.low : part(size_spec.substr(dots + 2), r2);
+            if (dots != std::string::npos && r1 != r2)
+                throw UsageError("--size A..B: both absolute or both with x, not '" + size_spec +
+                                 "'");
+            if (spec.high < spec.low)
+                throw UsageError("--size A..B needs A <= B, not '" + size_spec + "'");
+            spec.relative = r1;
+        }
 
         if (sub == "derive") {
             output_target(output);  // a folder or device at -o is refused before the work
@@ -293,6 +309,15 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
             vary.lengths.ranges[cls] = range;
         }
         const layout::GrowthTable table(grammar);
+        if (!size_spec.empty()) {
+            const double unit = spec.relative ? table.example_size() : 1.0;
+            const int low = std::max(1, static_cast<int>(std::lround(spec.low * unit)));
+            const int high = std::max(low, static_cast<int>(std::lround(spec.high * unit)));
+            if (low == high)
+                vary.size = low;
+            else
+                vary.spread_low = low, vary.spread_high = high;
+        }
         check_layout_cost(layout::generate_cost(table, count, vary), limits,
                           "generating from " + input);
         layout::VariationsReport report;

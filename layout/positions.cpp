@@ -95,13 +95,30 @@ void orthonormalize(std::vector<std::vector<double>>& basis) {
     basis = std::move(out);
 }
 
-void project(const std::vector<std::vector<double>>& q, const std::vector<double>& t,
-             std::vector<double>& s) {
+// An orthonormal basis of a null space in blocks of columns (an orthogonal graph's two axes
+// are independent systems): projecting costs what the blocks hold, not vectors x columns.
+struct Basis {
+    struct Block {
+        std::vector<int> cols;
+        std::vector<std::vector<double>> q;  // orthonormal, over `cols`
+    };
+    std::vector<Block> blocks;
+    bool empty() const {
+        for (const Block& b : blocks)
+            if (!b.q.empty()) return false;
+        return true;
+    }
+};
+
+void project(const Basis& basis, const std::vector<double>& t, std::vector<double>& s) {
     s.assign(t.size(), 0.0);
-    for (const auto& b : q) {
-        double d = 0;
-        for (std::size_t i = 0; i < t.size(); ++i) d += b[i] * t[i];
-        for (std::size_t i = 0; i < t.size(); ++i) s[i] += d * b[i];
+    for (const Basis::Block& block : basis.blocks) {
+        const std::size_t n = block.cols.size();
+        for (const auto& b : block.q) {
+            double d = 0;
+            for (std::size_t i = 0; i < n; ++i) d += b[i] * t[block.cols[i]];
+            for (std::size_t i = 0; i < n; ++i) s[block.cols[i]] += d * b[i];
+        }
     }
 }
 
@@ -135,8 +152,13 @@ LengthRange range_of(const Label& label, double mean, const Directions& dirs,
 
 }  // namespace
 
-std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, std::uint64_t seed,
-                                   const LengthSettings& lengths, int attempts, int relax) {
+namespace {
+
+// One way of drawing: the null space of the graph's own faces (`refine` false), or of its
+// rectangular refinement, compacted first (`refine` true; orthogonal graphs only).
+std::optional<PolygonMesh> realize_with(const AngleGraph& g, const Directions& dirs,
+                                        std::uint64_t seed, const LengthSettings& lengths,
+                                        int attempts, int relax, bool refine) {
     const Analysis a = analyze(g, dirs);
     if (!a.planar || !a.complete) return std::nullopt;
     const int nv = static_cast<int>(g.vertices.size());
@@ -163,7 +185,9 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
     // The graph whose faces close: orthogonal graphs refined into rectangles (any lengths
     // then draw them without crossings), others as they are.
     const bool ortho = orthogonal(dirs);
-    const std::optional<Refinement> refined = ortho ? rectangularize(g, dirs) : std::nullopt;
+    const std::optional<Refinement> refined =
+        ortho && refine ? rectangularize(g, dirs) : std::nullopt;
+    if (refine && !refined) return std::nullopt;
     const AngleGraph& h = refined ? refined->graph : g;
     const int hv = static_cast<int>(h.vertices.size());
     // Its edges: parts of an input edge (group = that edge) or added ones (group -1).
@@ -224,7 +248,7 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
         ++nrows;
     }
     // The null space, made when needed (refined graphs mostly do without, see below).
-    std::vector<std::vector<double>> basis;
+    Basis basis;
     bool have_basis = false;
     auto make_basis = [&] {
         if (have_basis) return;
@@ -232,28 +256,27 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
         if (ortho) {
             // Parts along the first direction's axis only meet rows_a, the others rows_b.
             for (int axis = 0; axis < 2; ++axis) {
-                std::vector<int> cols;
+                Basis::Block block;
                 for (int p = 0; p < np; ++p)
-                    if ((part_dir[p] % 2) == axis) cols.push_back(p);
+                    if ((part_dir[p] % 2) == axis) block.cols.push_back(p);
                 const std::vector<double>& rows = axis == 0 ? rows_a : rows_b;
-                std::vector<double> sub(static_cast<std::size_t>(nrows) * cols.size());
+                const std::size_t nc = block.cols.size();
+                std::vector<double> sub(static_cast<std::size_t>(nrows) * nc);
                 for (int r = 0; r < nrows; ++r)
-                    for (std::size_t c = 0; c < cols.size(); ++c)
-                        sub[r * cols.size() + c] = rows[static_cast<std::size_t>(r) * np + cols[c]];
-                std::vector<std::vector<double>> part =
-                    null_space(std::move(sub), nrows, static_cast<int>(cols.size()));
-                orthonormalize(part);
-                for (const auto& b : part) {
-                    std::vector<double> full(np, 0.0);
-                    for (std::size_t c = 0; c < cols.size(); ++c) full[cols[c]] = b[c];
-                    basis.push_back(std::move(full));
-                }
+                    for (std::size_t c = 0; c < nc; ++c)
+                        sub[r * nc + c] = rows[static_cast<std::size_t>(r) * np + block.cols[c]];
+                block.q = null_space(std::move(sub), nrows, static_cast<int>(nc));
+                orthonormalize(block.q);
+                basis.blocks.push_back(std::move(block));
             }
         } else {
+            Basis::Block block;
+            for (int p = 0; p < np; ++p) block.cols.push_back(p);
             std::vector<double> rows = rows_a;
             rows.insert(rows.end(), rows_b.begin(), rows_b.end());
-            basis = null_space(std::move(rows), 2 * nrows, np);
-            orthonormalize(basis);
+            block.q = null_space(std::move(rows), 2 * nrows, np);
+            orthonormalize(block.q);
+            basis.blocks.push_back(std::move(block));
         }
     };
     if (!refined) {
@@ -440,7 +463,7 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
             into_ranges(x, z);
             bool ok = satisfied(x);
             double last_gap = std::numeric_limits<double>::infinity();
-            for (int iter = 1; iter <= 3000 && !ok; ++iter) {
+            for (int iter = 1; iter <= 1500 && !ok; ++iter) {
                 for (int p = 0; p < np; ++p) mid[p] = 0.5 * (target[p] + z[p] - dual[p]);
                 project(basis, mid, x);
                 for (int p = 0; p < np; ++p) mid[p] = x[p] + dual[p];
@@ -502,6 +525,30 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
         }
         return mesh;
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, std::uint64_t seed,
+                                   const LengthSettings& lengths, int attempts, int relax) {
+    const bool ortho = orthogonal(dirs);
+    // The thesis's way first: lengths nearest the sampled targets in the null space of the
+    // faces, checked for crossings. Orthogonal graphs then fall back on their rectangular
+    // refinement, which cannot cross (and past the ranges' ends draw only that way); with
+    // holes (enclosed outside faces), whose sides the faces alone do not keep apart, they
+    // start there.
+    bool holes = false;
+    if (ortho) {
+        const Analysis a = analyze(g, dirs);
+        for (std::size_t w = 0; w < a.walks.size(); ++w)
+            holes = holes || (static_cast<int>(w) != a.outer && a.walks[w].color == 0);
+    }
+    if ((relax == 0 && !holes) || !ortho)
+        if (auto mesh = realize_with(g, dirs, seed, lengths,
+                                     ortho ? std::min(attempts, 2) : attempts, relax, false))
+            return mesh;
+    if (ortho) return realize_with(g, dirs, seed ^ 0x5eedULL, lengths, 1, relax, true);
     return std::nullopt;
 }
 

@@ -23,7 +23,9 @@ forest::ForestSettings forest_preview_settings(const TreeTemplate& tree,
         glm::dvec2 lo(1e300), hi(-1e300);
         for (const forest::GroundPolygon& p : plan.ground->polygons)
             for (const glm::dvec2& q : p.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
-        const double scale = size / std::max({hi.x - lo.x, hi.y - lo.y, 1e-9});
+        const double scale =
+            std::min(kForestPreviewPlanScale,
+                     kForestPreviewPlanMaxSide / std::max({hi.x - lo.x, hi.y - lo.y, 1e-9}));
         s.ground = *plan.ground;
         for (forest::GroundPolygon& p : s.ground.polygons)
             for (glm::dvec2& q : p.points) q = (q - 0.5 * (lo + hi)) * scale;

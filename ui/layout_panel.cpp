@@ -298,7 +298,6 @@ bool plant_layout(LayoutPanelState& s, StudioState& studio) {
     ForestPreviewPlan& plan = studio.view.forest_plan;
     plan.ground = std::make_shared<const forest::Ground>(ground_of(r->variations[s.selected]));
     plan.id = ++s.planted;
-    studio.view.forest_options.size = std::max(studio.view.forest_options.size, 60.0f);
     studio.view.forest = true;
     s.message = "planting variation " + std::to_string(s.selected) + " with " +
                 studio.shown_template.name + " (the forest view)";
@@ -312,12 +311,15 @@ void open_layout_file(LayoutPanelState& state, const std::string& path) {
     state.selected = 0;
 }
 
-void draw_layout_panel(LayoutPanelState& s, StudioState& studio, float width, float height) {
+void draw_layout_panel(LayoutPanelState& s, StudioState& studio, const PanelLayout& layout) {
     if (!s.open) return;
     refresh(s);
     if (s.plant_when_ready && plant_layout(s, studio)) s.plant_when_ready = false;
-    ImGui::SetNextWindowPos(ImVec2(width * 0.2f, 20.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(width * 0.6f, height * 0.88f), ImGuiCond_FirstUseEver);
+    // Over the lower half of the 3D view, reaching a little over the side panels.
+    const float x0 = 0.5f * layout.left, x1 = layout.width - 0.5f * layout.right;
+    ImGui::SetNextWindowPos(ImVec2(x0, 0.42f * layout.height), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(x1 - x0, 0.55f * layout.height - layout.bottom),
+                             ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("2D layouts from one example", &s.open)) {
         ImGui::End();
         return;
@@ -375,7 +377,7 @@ void draw_layout_panel(LayoutPanelState& s, StudioState& studio, float width, fl
         g.starters.size(), g.rules.size(), r->derive_ms, h.graphs,
         h.stopped_by == "closed" ? "closed" : ("ended by its " + h.stopped_by + " limit").c_str());
     // The example, the primitives and the starter rules; then the rules, scrolling.
-    const float cell = 110.0f, small = 56.0f;
+    const float cell = 90.0f, small = 48.0f;
     ImGui::BeginGroup();
     ImGui::TextUnformatted("example");
     draw_picture(picture_of(r->input->mesh), cell, cell);
@@ -385,8 +387,8 @@ void draw_layout_panel(LayoutPanelState& s, StudioState& studio, float width, fl
     ImGui::TextUnformatted("primitives");
     for (std::size_t i = 0; i < g.primitives.size(); ++i) {
         if (i % 6 != 0) ImGui::SameLine();
-        draw_picture(picture_of(layout::Piece{g.primitives[i], false, {}}, g.dirs), small * 0.8f,
-                     small * 0.8f);
+        draw_picture(picture_of(layout::Piece{g.primitives[i], false, {}}, g.dirs), small * 0.85f,
+                     small * 0.85f);
     }
     ImGui::EndGroup();
     ImGui::SameLine();
@@ -398,7 +400,7 @@ void draw_layout_panel(LayoutPanelState& s, StudioState& studio, float width, fl
     }
     ImGui::EndGroup();
     ImGui::TextUnformatted("rules  L <-> R1 v R2 ... (red: open ends, the interface)");
-    ImGui::BeginChild("rules", ImVec2(0, 2.2f * (small + 8.0f)), true);
+    ImGui::BeginChild("rules", ImVec2(0, 1.7f * (small + 8.0f)), true);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(g.rules.size()), small + 8.0f);
     while (clipper.Step())

@@ -17,6 +17,7 @@
 #include "layout/generate.h"
 #include "layout/variations.h"
 #include "ui/file_dialog.h"
+#include "ui/panels.h"
 #include "ui/studio_state.h"
 
 namespace sylva::studio {
@@ -61,9 +62,10 @@ bool select_layout_example(LayoutPanelState& state, const std::string& name_or_p
 // Opens a .mesh / .json file in the panel (a dropped or chosen file).
 void open_layout_file(LayoutPanelState& state, const std::string& path);
 
-// A floating window over the 3D view; nothing when the panel is closed. Planting a plan
-// sets the forest preview's plan (`studio.view.forest_plan`) and switches the preview on.
-void draw_layout_panel(LayoutPanelState& state, StudioState& studio, float width, float height);
+// A floating window over the lower half of the 3D view (the forest planted from it shows
+// above); nothing when the panel is closed. Planting a plan sets the forest preview's plan
+// (`studio.view.forest_plan`) and switches the preview on.
+void draw_layout_panel(LayoutPanelState& state, StudioState& studio, const PanelLayout& layout);
 
 // Plants variation `selected` of the shown result into the forest preview and switches the
 // preview on; false when there is none yet.

@@ -538,7 +538,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_variants_strip(strip, state, layout);
 #ifdef SYLVA_HAS_LAYOUT
         if (state.layout_requested) layout_panel.open = true, state.layout_requested = false;
-        draw_layout_panel(layout_panel, state, layout.width, layout.height);
+        draw_layout_panel(layout_panel, state, layout);
 #endif
         draw_dialogs(state);  // last: see panels.h
         const bool asking = cost_dialog_open() && !generation_running(state);
