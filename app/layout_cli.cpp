@@ -66,9 +66,19 @@ T number(const std::string& flag, const std::string& text, T lo, T hi) {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
     bool ok = error == std::errc() && end == text.data() + text.size() && !text.empty();
     if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(v);
-    if (!ok || v < lo || v > hi)
-        throw UsageError(flag + " expects a number from " + std::to_string(lo) + " to " +
-                         std::to_string(hi) + ", not '" + text + "'");
+    if (!ok || v < lo || v > hi) {
+        auto shown = [](T x) {
+            if constexpr (std::is_floating_point_v<T>) {
+                char out[32];
+                std::snprintf(out, sizeof out, "%g", x);
+                return std::string(out);
+            } else {
+                return std::to_string(x);
+            }
+        };
+        throw UsageError(flag + " expects a number from " + shown(lo) + " to " + shown(hi) +
+                         ", not '" + text + "'");
+    }
     return v;
 }
 
@@ -83,7 +93,7 @@ bool is_grammar_file(const std::string& path) {
 
 std::string figure(double v) {
     char text[32];
-    std::snprintf(text, sizeof text, v < 1e7 ? "%.3g" : "%.3g", v);
+    std::snprintf(text, sizeof text, "%.3g", v);
     return text;
 }
 

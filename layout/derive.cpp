@@ -414,6 +414,11 @@ Grammar derive_grammar(const Example& example, const DeriveSettings& settings) {
     };
     std::size_t expanded = 0;
     std::vector<Node> next;
+    // An example with more distinct stars than the budget has graphs: nothing grows.
+    if (report.graphs >= settings.max_graphs) {
+        report.stopped_by = "graphs";
+        stopped = true;
+    }
     while (!frontier.empty() && !stopped) {
         if (settings.max_generations > 0 && report.generations >= settings.max_generations) {
             report.stopped_by = "generations";

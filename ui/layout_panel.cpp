@@ -10,10 +10,12 @@
 
 #include "core/errors.h"
 #include "forest/forest.h"
+#include "layout/cost.h"
 #include "layout/derive.h"
 #include "layout/examples.h"
 #include "layout/geometry.h"
 #include "layout/positions.h"
+#include "tree/cost.h"
 #include "ui/forest_preview_plan.h"
 
 namespace sylva::studio {
@@ -181,23 +183,36 @@ std::shared_ptr<const LayoutResult> run_job(std::string source, int seed, int co
     r->seed = seed, r->count = count, r->size = size;
     try {
         const auto t0 = Clock::now();
+        // Refused above the command line's default limits, as `sylva layout` refuses it.
+        const CostLimits limits;
+        auto affordable = [&](const layout::LayoutCost& c, const std::string& what) {
+            if (c.seconds > limits.max_seconds || c.bytes > limits.max_bytes) {
+                char text[160];
+                std::snprintf(text, sizeof text, " is estimated at about %.2g GB and %.3g s",
+                              c.bytes / 1e9, c.seconds);
+                throw InputError(what + " (" + c.what + ")" + text + ", too much for the studio");
+            }
+        };
         if (!table) {
             input = layout::make_example(layout::load_example(r->source));
             layout::DeriveSettings d;
             d.cancel = cancel.get();
+            affordable(layout::derive_cost(*input, d), "deriving this example");
             table = std::make_shared<const layout::GrowthTable>(layout::derive_grammar(*input, d));
         }
         r->input = std::move(input);
         r->table = table;
         const layout::Grammar& g = table->grammar();
         for (std::size_t i = 0; i < g.starters.size() && i < 8; ++i)
-            if (auto m = layout::realize(g.starters[i], g.dirs, i + 1, {}, 12, 3))
-                r->starters.push_back(std::move(*m));
+            if (g.starters[i].vertices.size() <= 4096)
+                if (auto m = layout::realize(g.starters[i], g.dirs, i + 1, {}, 12, 3))
+                    r->starters.push_back(std::move(*m));
         const auto t1 = Clock::now();
         layout::VariationSettings v;
         v.size = size;
         v.cancel = cancel.get();
         v.threads = 1;  // the UI thread and the tree's own jobs keep the other cores
+        affordable(layout::generate_cost(*table, count, v), "these variations");
         r->variations = layout::generate_layouts(*table, count, static_cast<std::uint64_t>(seed), v,
                                                  &r->report);
         r->derive_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
