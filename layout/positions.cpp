@@ -156,9 +156,15 @@ namespace {
 
 // One way of drawing: the null space of the graph's own faces (`refine` false), or of its
 // rectangular refinement, compacted first (`refine` true; orthogonal graphs only).
+// `structural` (per edge, in units of its mean): lengths the structure asks for (from a
+// compaction), raising the targets of edges it makes much longer, so that a long edge the
+// structure forces (a path along thirty plots) does not squeeze everything next to it in
+// the least-squares fit. `units` gets the drawing's edge lengths in those units.
 std::optional<PolygonMesh> realize_with(const AngleGraph& g, const Directions& dirs,
                                         std::uint64_t seed, const LengthSettings& lengths,
-                                        int attempts, int relax, bool refine) {
+                                        int attempts, int relax, bool refine,
+                                        const std::vector<double>* structural = nullptr,
+                                        std::vector<double>* units = nullptr) {
     const Analysis a = analyze(g, dirs);
     if (!a.planar || !a.complete) return std::nullopt;
     const int nv = static_cast<int>(g.vertices.size());
@@ -432,6 +438,8 @@ std::optional<PolygonMesh> realize_with(const AngleGraph& g, const Directions& d
             double t = std::sqrt(face_scale[l] * face_scale[r]) *
                        std::pow(stretch[l] * stretch[r], 0.5 * c2);
             t = std::clamp(t, lo[e], std::min(hi[e], 1e9));
+            if (structural && (*structural)[e] > 1.5 * t)
+                t = std::min((*structural)[e], std::min(hi[e], 1e9));
             for (int p : parts[e]) target[p] = t / static_cast<double>(parts[e].size());
         }
         // Refined orthogonal graphs: compaction to the targets first (fast, and any lengths
@@ -484,6 +492,11 @@ std::optional<PolygonMesh> realize_with(const AngleGraph& g, const Directions& d
             if (!ok) return std::nullopt;
         }
         (void)done;
+        if (units) {
+            units->assign(ne, 0.0);
+            for (int e = 0; e < ne; ++e)
+                for (int p : parts[e]) (*units)[e] += x[p] * scale[p] / mean[e];
+        }
         // Positions along a spanning tree from vertex 0 of the refined graph; the input's
         // vertices keep their indices in it.
         std::vector<glm::dvec2> pos(hv);
@@ -544,12 +557,18 @@ std::optional<PolygonMesh> realize(const AngleGraph& g, const Directions& dirs, 
         for (std::size_t w = 0; w < a.walks.size(); ++w)
             holes = holes || (static_cast<int>(w) != a.outer && a.walks[w].color == 0);
     }
-    if ((relax == 0 && !holes) || !ortho)
-        if (auto mesh = realize_with(g, dirs, seed, lengths,
-                                     ortho ? std::min(attempts, 2) : attempts, relax, false))
+    if (!ortho) return realize_with(g, dirs, seed, lengths, attempts, relax, false);
+    // The structure's own lengths: the compaction of the refinement, every edge at its target
+    // or longer where the structure needs it.
+    std::vector<double> structural;
+    std::optional<PolygonMesh> compacted = realize_with(
+        g, dirs, seed ^ 0x5eedULL, lengths, 1, std::max(relax, 1), true, nullptr, &structural);
+    if (!holes && !structural.empty())
+        if (auto mesh = realize_with(g, dirs, seed, lengths, std::min(attempts, 2), relax, false,
+                                     &structural))
             return mesh;
-    if (ortho) return realize_with(g, dirs, seed ^ 0x5eedULL, lengths, 1, relax, true);
-    return std::nullopt;
+    if (relax == 0) return realize_with(g, dirs, seed ^ 0x5eedULL, lengths, 1, 0, true);
+    return compacted;
 }
 
 }  // namespace sylva::layout

@@ -5,15 +5,18 @@
 // directions exactly.
 //
 // Lengths are sampled as the thesis suggests, within ranges: each edge has a range (by
-// default 0.3 to 3 times the example's mean length for its label; the user may set ranges per
+// default 0.5 to 3 times the example's mean length for its label; the user may set ranges per
 // edge class, the pair of colours either side). Lengths are measured in units of that mean,
 // so a least-squares fit keeps every polygon's proportions where it can. The target lengths
 // scale each colour by one factor per layout and each polygon by a little more, stretched a
 // little along one axis, so plots of one class keep plausible, similar proportions. The
-// target is projected onto the null space and pushed into the ranges by alternating
-// projections; positions follow by walking a spanning tree. A drawing that is not planar
-// (the turning test admits spirals that overlap for some lengths) or leaves a range is
-// rejected and sampled again.
+// lengths nearest the target in the null space and within the ranges are found by the
+// alternating direction method of multipliers; positions follow by walking a spanning tree.
+// A drawing that is not planar (the turning test admits spirals that overlap for some
+// lengths) is sampled again. Orthogonal graphs are also refined into rectangles and
+// compacted (rectangularize.h), which cannot cross: that drawing tells which edges the
+// structure makes long (their targets are raised, so the fit does not squeeze their
+// neighbours) and is the one used when the fit crosses or the graph has holes.
 //
 // Pure functions; thread-safe.
 #pragma once
@@ -34,7 +37,7 @@ struct LengthRange {
 
 struct LengthSettings {
     // Every edge's default range: these factors times the example's mean for its label.
-    double min_factor = 0.3, max_factor = 3.0;
+    double min_factor = 0.5, max_factor = 3.0;
     // Ranges by edge class (edge_class()): "meadow/path" (that pair of colours), "meadow"
     // (any edge of a meadow polygon; two such ranges meet in their overlap) or "*".
     std::map<std::string, LengthRange> ranges;
