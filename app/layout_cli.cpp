@@ -43,7 +43,7 @@ constexpr const char* kLayoutHelp = R"(usage: sylva layout examples
   --length CLASS=LO..HI
                   edge lengths of a class in LO to HI (LO.. for no upper end): CLASS is a
                   colour pair (meadow/path, forest/outside), one colour (any edge of it) or
-                  *; default per edge 0.3 to 3 times the example's mean for its kind
+                  *; default per edge 0.5 to 3 times the example's mean for its kind
   --max-steps N   rule applications per variation (default 4 x size + 64)
   --max-layout-vertices N
                   refuse moves that would pass N vertices (default: none)
