@@ -27,7 +27,7 @@
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
 #ifdef SYLVA_HAS_LAYOUT
-#include "layout/layout_cli.h"
+#include "app/layout_cli.h"
 #endif
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
@@ -61,8 +61,8 @@ Usage:
   sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
   sylva templates
   sylva layout   examples | derive EXAMPLE -o grammar.json |
-                 generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
-                 (2D layouts from one example, seed 002; see docs/layout.md)
+                 generate EXAMPLE|GRAMMAR [--count N] [--size N] [--seed S] -o DIR/
+                 (2D plans grown from one example; see sylva layout --help, docs/layout.md)
   sylva --help, sylva COMMAND --help
 )";
 
@@ -525,9 +525,9 @@ int run(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
     if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);
 #ifdef SYLVA_HAS_LAYOUT
-    // `sylva layout ...` (layout/layout_cli.h) parses its own arguments.
+    // `sylva layout ...` (app/layout_cli.h) parses its own arguments.
     if (argc >= 2 && std::string(argv[1]) == "layout")
-        return layout::run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
+        return run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
                                       stderr);
 #endif
     Options o = parse_options(argc, argv);

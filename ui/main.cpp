@@ -396,10 +396,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 #ifdef SYLVA_HAS_LAYOUT
     LayoutPanelState layout_panel;
     if (options.layout_example && !select_layout_example(layout_panel, *options.layout_example)) {
-        std::fprintf(stderr, "sylva-studio: no layout example '%s' (see sylva layout examples)\n",
+        std::fprintf(stderr,
+                     "sylva-studio: '%s' is neither a layout example (see sylva layout examples) "
+                     "nor a file\n",
                      options.layout_example->c_str());
         return 2;
     }
+    layout_panel.plant_when_ready = options.layout_example && options.forest_preview;
 #endif
     state.view.low_poly = options.low_poly;
     {
@@ -491,6 +494,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         poll_jobs(state);
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
+#ifdef SYLVA_HAS_LAYOUT
+            if (ext == ".mesh" || ext == ".json") {  // a layout example
+                open_layout_file(layout_panel, file);
+                continue;
+            }
+#endif
             if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
                 state.template_path = file;
                 open_template_file(state);
@@ -544,7 +553,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_status_bar(state, layout, frame_rate.shown());
         draw_variants_strip(strip, state, layout);
 #ifdef SYLVA_HAS_LAYOUT
-        draw_layout_panel(layout_panel, layout.width, layout.height);
+        if (state.layout_requested) layout_panel.open = true, state.layout_requested = false;
+        draw_layout_panel(layout_panel, state, layout);
 #endif
         draw_dialogs(state);  // last: see panels.h
         const bool asking = cost_dialog_open() && !generation_running(state);
@@ -614,6 +624,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     glfwHideWindow(window);
     release_variants_strip(strip);
     release_forest_preview(forest);
+#ifdef SYLVA_HAS_LAYOUT
+    release_layout_panel(layout_panel);
+#endif
     cancel_generations(state);
     return 0;
 }

@@ -537,6 +537,10 @@ void view_section(StudioState& state) {
     tooltip("saves the 3D view as a PNG in the working folder");
     message_line(state.screenshot_message, false);
     forest_preview_row(state);  // ui/forest_preview.h
+#ifdef SYLVA_HAS_LAYOUT
+    if (ImGui::Button("2D layouts...")) state.layout_requested = true;  // ui/layout_panel.h
+    tooltip("ground plans grown from one drawn example, to plant as a forest");
+#endif
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");

@@ -150,6 +150,7 @@ struct ViewToggles {
     // A small square of forest planted with the shown template (ui/forest_preview.h).
     bool forest = false;
     ForestPreviewOptions forest_options;
+    ForestPreviewPlan forest_plan;  // a 2D layout planted instead of the square (layout panel)
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -236,8 +237,9 @@ struct StudioState {
     // "screenshot": main saves the 3D view as a PNG after the next frame is drawn.
     bool screenshot_requested = false;
     std::string screenshot_message;
-    bool show_shortcuts = false;  // the list of keys (F1, "?")
-    std::string forest_status;    // the forest preview's progress or error, for the View row
+    bool show_shortcuts = false;    // the list of keys (F1, "?")
+    std::string forest_status;      // the forest preview's progress or error, for the View row
+    bool layout_requested = false;  // the View row's "2D layouts" button (a build with layout/)
 };
 
 // True when the next generation should show a draft: the low-poly view is on and a slider
