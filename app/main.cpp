@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "app/forest_cli.h"
-#include "app/lint_cli.h"
 #include "app/impostor_cli.h"
+#include "app/lint_cli.h"
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
@@ -527,8 +527,7 @@ int run(int argc, char** argv) {
 #ifdef SYLVA_HAS_LAYOUT
     // `sylva layout ...` (app/layout_cli.h) parses its own arguments.
     if (argc >= 2 && std::string(argv[1]) == "layout")
-        return run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
-                                      stderr);
+        return run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout, stderr);
 #endif
     Options o = parse_options(argc, argv);
     if (o.command == "--help" || o.command == "-h" || o.command == "help") {
