@@ -24,7 +24,7 @@ constexpr std::string_view kNoiseKinds[] = {"gradient", "value_linear", "value_c
                                             "value_cubic"};
 constexpr std::string_view kCrownShapes[] = {"auto", "blobs", "hulls"};
 constexpr std::string_view kBranchStyles[] = {"auto", "prisms", "surface"};
-constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none"};
+constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none", "textured"};
 constexpr std::string_view kEnvelopes[] = {"sphere",   "ellipsoid",  "cone",
                                            "cylinder", "hemisphere", "template"};
 constexpr std::string_view kEnvelopeTemplates[] = {
@@ -161,9 +161,9 @@ const std::vector<Field>& fields() {
          &TreeParams::branch_style},
         {{"leaf_style",
           "leaves: cards (a game mesh over its leaf budget draws a card per patch of foliage), "
-          "leaves (it keeps some of the tree's own leaves, grown) or none (no leaves, the crown "
-          "alone)",
-          0, 2, true, kLeafStyles},
+          "leaves (it keeps some of the tree's own leaves, grown), none (no leaves, the crown "
+          "alone) or textured (cards with a texture of leaves, for alpha-tested engines)",
+          0, 3, true, kLeafStyles},
          nullptr,
          &TreeParams::leaf_style},
         // Space colonization (Liebemann 2017, chapter 3).

@@ -115,9 +115,10 @@ enum class BranchStyle {
 };
 // Choices of the `leaf_style` parameter: how leaves are drawn.
 enum class LeafStyle {
-    Cards = 0,   // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
-    Leaves = 1,  // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
-    None = 2,    // no leaves at all: the crown alone, flat coloured
+    Cards = 0,     // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
+    Leaves = 1,    // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
+    None = 2,      // no leaves at all: the crown alone, flat coloured
+    Textured = 3,  // cards, always, with a texture of leaves (export/leaf_atlas.h)
 };
 
 // The branch style `params` resolve to (never Automatic).

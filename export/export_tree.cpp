@@ -8,6 +8,7 @@
 #include "export/engine_kit.h"
 #include "export/impostor_level.h"
 #include "export/index_colors.h"
+#include "export/leaf_atlas.h"
 #include "export/organ_attributes.h"
 #include "export/palette.h"
 #include "export/part_attributes.h"
@@ -153,6 +154,13 @@ EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const P
             part.attributes = &model.attributes.back();
             done[&mesh] = {part.attributes, part.color};
         }
+    // Textured leaf cards: one texture of leaves for every level's cards.
+    if (tree.leaf_style == LeafStyle::Textured && !finished.levels.empty()) {
+        model.textures.push_back(leaf_atlas(tree.leaf_shape, colors.leaves));
+        for (ModelParts& level : model.levels)
+            for (NamedMesh& part : level)
+                if (part.name == "leaves") part.textures = &model.textures.back();
+    }
     const bool collision =
         engine.collision.value_or(profile_info(options.profile).collision_by_default);
     if (collision && !model.levels.empty()) {

@@ -530,6 +530,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
     out.leaf_style = static_cast<LeafStyle>(tree.params.leaf_style);
+    out.leaf_shape = static_cast<LeafShape>(tree.params.leaf_shape);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     p.trunk_resolution = trunk_resolution_for_budget(p, options.budget);

@@ -42,6 +42,7 @@ struct Tree {
     CrownShape crown_shape = CrownShape::Automatic;
     // The template's leaf_style: how a game mesh draws the leaves.
     LeafStyle leaf_style = LeafStyle::Cards;
+    LeafShape leaf_shape = LeafShape::Round;  // the template's: textured cards draw it
     // The template's crown_lump_triangles: triangles of the budget per hull.
     std::size_t crown_lump_triangles = 70;
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
