@@ -92,13 +92,12 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
         }
     }
     ImGui::SetNextItemWidth(-1.0f);
-    std::string hint = "file name (.toml)";
-    if (!dialog.saving) {
-        hint = "file name (";
-        for (std::size_t i = 0; i < dialog.extensions.size(); ++i)
-            hint += (i ? ", " : "") + dialog.extensions[i];
-        hint += ")";
-    }
+    const std::string first = dialog.extensions.empty() ? "" : dialog.extensions.front();
+    std::string hint = "file name (" + first;
+    if (!dialog.saving)
+        for (std::size_t i = 1; i < dialog.extensions.size(); ++i)
+            hint += ", " + dialog.extensions[i];
+    hint += ")";
     const bool entered = ImGui::InputTextWithHint("##name", hint.c_str(), &dialog.name,
                                                   ImGuiInputTextFlags_EnterReturnsTrue);
     const bool can_confirm = !dialog.name.empty();
@@ -106,7 +105,7 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
     if ((ImGui::Button(dialog.saving ? "Save" : "Open") || entered) && can_confirm) {
         fs::path path =
             fs::path(dialog.name).is_absolute() ? fs::path(dialog.name) : folder / dialog.name;
-        if (dialog.saving && !path.has_extension()) path += ".toml";
+        if (dialog.saving && !path.has_extension()) path += first;
         chosen = path.string();
     }
     ImGui::EndDisabled();

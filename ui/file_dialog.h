@@ -26,7 +26,9 @@ struct FileDialogState {
     bool saving = false;          // Save as (a new name may be typed) or Open
     std::string folder;           // the folder shown
     std::string name;             // the file name field
-    // What the dialog opens: the files it lists, and the word its title and hints use.
+    // What it lists and names: template files by default; the first extension is the one a
+    // new name gets. `what` names them in the title ("template", "layout example") and
+    // gives each kind of file a popup of its own.
     std::vector<std::string> extensions{".toml", ".lsys", ".txt"};
     std::string what = "template";
 };

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <string_view>
 
+#include "ui/studio_state.h"
+
 namespace sylva::studio {
 
 StudioOptions parse_studio_options(int argc, const char* const* argv) {
@@ -34,6 +36,9 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--lod takes a level from 0 to 3, got '" + std::string(text) +
                                  "'");
             options.lod_level = level;
+            options.low_poly = true;
+        } else if (arg == "--impostor") {  // the LOD slider's slot after LOD 3
+            options.lod_level = kLodLevels;
             options.low_poly = true;
         } else if (arg == "--no-envelope") {
             options.envelope = false;
@@ -109,8 +114,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
-           "[--points]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--impostor]\n"
+           "                    [--no-envelope] [--points]\n"
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
            "                    [--forest-preview] [--infer tree|SKELETON]\n"
@@ -123,6 +128,7 @@ std::string studio_usage() {
            "  --low-poly         show the game mesh: what an export at the template's budget\n"
            "                     writes (trunk + crown reduced, leaves thinned)\n"
            "  --lod N            show level N (0-3) of its LOD chain; implies --low-poly\n"
+           "  --impostor         show the octahedral impostor (export --impostor) instead\n"
            "  --no-envelope      space colonization: hide the envelope's wire cage\n"
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
@@ -131,7 +137,8 @@ std::string studio_usage() {
            "  --forest-preview   start with the forest view on: a 40 x 40 m square planted with\n"
            "                     the template (sylva forest's spacing, 4 variants)\n"
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
-           "                     examples lists them)\n"
+           "                     examples lists them) or a .mesh / .json file; with\n"
+           "                     --forest-preview its first variation is planted\n"
            "  --infer tree|SKELETON\n"
            "                     derive rules from the tree on screen or a skeleton file\n"
            "                     (skeleton.json, cylinder CSV, OBJ lines) and load them, with\n"
