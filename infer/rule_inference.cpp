@@ -1125,7 +1125,18 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
             const bool bracket = skeleton.segments[ri].depth > 0 || g.roots.size() > 1;
-            axiom += (bracket ? "[" : "") + turn_text(m.turn[ri]) + w.entry(0) +
+            // A straight axis (no bend, no tropism) starts along its chord, root to tip:
+            // the first segment alone carries all of its noise, and a tilt at the root
+            // moves the whole tree.
+            Turn start = m.turn[ri];
+            const Axis& root_axis = g.axes[static_cast<std::size_t>(axis)];
+            if (first.bend.pitch <= 0.0 && elasticity == 0.0 && root_axis.segments.size() > 1) {
+                const glm::dvec3 from(skeleton.segments[ri].a);
+                const glm::dvec3 to(
+                    skeleton.segments[static_cast<std::size_t>(root_axis.segments.back())].b);
+                if (glm::length(to - from) > 0.0) start = solve(Frame{}, glm::normalize(to - from));
+            }
+            axiom += (bracket ? "[" : "") + turn_text(start) + w.entry(0) +
                      start_args(axis, first, 0) + (bracket ? "]" : "");
         }
     }
