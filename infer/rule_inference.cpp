@@ -1125,16 +1125,22 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
             const bool bracket = skeleton.segments[ri].depth > 0 || g.roots.size() > 1;
-            // A straight axis (no bend, no tropism) starts along its chord, root to tip:
-            // the first segment alone carries all of its noise, and a tilt at the root
-            // moves the whole tree.
+            // A straight axis (no bend; under tropism, one whose chord is within 2 degrees of
+            // its first segment) starts along its chord, root to tip: the first segment
+            // alone carries all of its noise, and a tilt at the root moves the whole tree
+            // (tropism bends a tilted trunk further).
             Turn start = m.turn[ri];
             const Axis& root_axis = g.axes[static_cast<std::size_t>(axis)];
-            if (first.bend.pitch <= 0.0 && elasticity == 0.0 && root_axis.segments.size() > 1) {
+            if (first.bend.pitch <= 0.0 && root_axis.segments.size() > 1) {
                 const glm::dvec3 from(skeleton.segments[ri].a);
                 const glm::dvec3 to(
                     skeleton.segments[static_cast<std::size_t>(root_axis.segments.back())].b);
-                if (glm::length(to - from) > 0.0) start = solve(Frame{}, glm::normalize(to - from));
+                const glm::dvec3 head = glm::normalize(glm::dvec3(skeleton.segments[ri].b) - from);
+                if (glm::length(to - from) > 0.0) {
+                    const glm::dvec3 chord = glm::normalize(to - from);
+                    if (elasticity == 0.0 || glm::dot(chord, head) > std::cos(2.0 * kDegree))
+                        start = solve(Frame{}, chord);
+                }
             }
             axiom += (bracket ? "[" : "") + turn_text(start) + w.entry(0) +
                      start_args(axis, first, 0) + (bracket ? "]" : "");
