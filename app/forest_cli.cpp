@@ -11,11 +11,13 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/name_list.h"
 #include "export/export.h"
 #include "forest/batch.h"
 #include "forest/forest.h"
 #include "forest/species_file.h"
 #include "tree/cost.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 
 namespace sylva {
@@ -26,7 +28,7 @@ constexpr int kOk = 0, kUsage = 2;
 constexpr const char* kForestHelp = R"(
 Many trees:
   sylva batch  -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N]
-               [--set KEY=VALUE]... [--budget N] [--lod] [--format glb|obj|ply] -o DIR/
+               [--set KEY=VALUE]... [--budget N] [--lod] [--format F] -o DIR/
       N variants of one template: variant i is seeded with the i-th splitmix64 number of
       S (default 1) and, with --jitter J (0 to 1, default 0.1), has branch_length,
       branch_width, angles, tapers, crown, leaf and envelope sizes scaled by up to
@@ -118,7 +120,9 @@ struct TreeFlags {
         } else if (arg == "--format") {
             const std::string name = value();
             format = format_from_name(name);
-            if (!format) throw UsageError("--format expects obj, glb or ply, not '" + name + "'");
+            if (!format)
+                throw UsageError("--format expects " + name_list(format_names()) + ", not '" +
+                                 name + "'");
         } else if (arg == "--shading") {
             const std::string name = value();
             if (name != "flat" && name != "smooth")

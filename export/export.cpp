@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "core/name_list.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
@@ -30,11 +31,8 @@ std::string lower(std::string_view text) {
 const ExportFormat& resolve(const std::filesystem::path& path, const ExportFormat* format) {
     if (format) return *format;
     if (const ExportFormat* by_extension = format_from_extension(path)) return *by_extension;
-    std::string known;
-    for (const ExportFormat* f : kFormats)
-        known += (known.empty() ? "" : ", ") + std::string(f->extension);
     throw InputError("cannot tell the format of '" + path.string() + "' from its extension '" +
-                     path.extension().string() + "': use " + known);
+                     path.extension().string() + "': use " + name_list(format_extensions()));
 }
 
 }  // namespace
@@ -53,6 +51,24 @@ std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& p
 
 std::span<const ExportFormat* const> export_formats() {
     return kFormats;
+}
+
+std::span<const std::string_view> format_names() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const ExportFormat* f : kFormats) out.push_back(f->name);
+        return out;
+    }();
+    return names;
+}
+
+std::span<const std::string_view> format_extensions() {
+    static const std::vector<std::string_view> extensions = [] {
+        std::vector<std::string_view> out;
+        for (const ExportFormat* f : kFormats) out.push_back(f->extension);
+        return out;
+    }();
+    return extensions;
 }
 
 const ExportFormat* format_from_extension(const std::filesystem::path& path) {

@@ -16,6 +16,7 @@
 #include "export/export.h"
 #include "export/glb_writer.h"
 #include "forest/variation.h"
+#include "tree/parameters.h"
 
 namespace sylva {
 namespace {

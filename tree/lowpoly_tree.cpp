@@ -137,9 +137,10 @@ class SampledHausdorff {
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
                           const TreeBudget& budget, const DecimateSettings& settings) {
     const std::size_t hull_count = crown_hull_count(budget);
-    const bool automatic =
-        budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
-    if (hull_count == 0 || (automatic && genus(hull_source) == 0))
+    const bool only_with_handles =
+        crown_shape_info(budget.crown_shape.value_or(CrownShape::Automatic)).hulls ==
+        CrownHulls::WithHandles;
+    if (hull_count == 0 || (only_with_handles && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
     // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
     // no closer: they alone.
@@ -251,9 +252,9 @@ std::size_t leaf_budget(const TreeBudget& budget) {
 
 std::size_t crown_hull_count(const TreeBudget& budget) {
     const std::size_t total = solid_budget(budget);
-    const CrownShape shape = budget.crown_shape.value_or(CrownShape::Automatic);
-    const bool hulls = shape == CrownShape::Automatic ? total > 0 : shape == CrownShape::Hulls;
-    if (!hulls) return 0;
+    const CrownHulls rule =
+        crown_shape_info(budget.crown_shape.value_or(CrownShape::Automatic)).hulls;
+    if (rule == CrownHulls::Never || (rule == CrownHulls::WithHandles && total == 0)) return 0;
     const std::size_t per =
         std::max<std::size_t>(1, budget.lump_triangles.value_or(kTrianglesPerHull));
     return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / per);

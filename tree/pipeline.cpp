@@ -136,7 +136,7 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
     float crown_cell = fit_to_cells(fields.crown_box, fixed_cell, p.crown_resolution);
     balls = merge_coincident_balls(std::move(balls), kMergeToleranceInCells * crown_cell);
     float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
-    if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
+    if (p.crown_blend == CrownBlend::Pasko) {
         // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
         float alpha = std::clamp(1.0f - 10.0f * fusion, 0.0f, 1.0f);
         fields.crown.emplace(std::move(balls), alpha, margin, SphereBlend::PaskoSavchenko);
@@ -151,7 +151,7 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
 // the other's, 0.6 times as thick as its sphere (and at least a cell, so the grid sees it).
 std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
                                            const TreeParams& p, const Box& box) {
-    if (budget == 0 || p.crown_merge == 0) return {};
+    if (budget == 0 || !p.crown_merge) return {};
     const std::vector<Ball>& balls = crown.balls();
     if (count_crown_pieces(balls, 0.0f) * kTrianglesPerCrownPiece <= budget / 2) return {};
     const std::size_t max_pieces = std::max<std::size_t>(1, budget / 2 / kTrianglesPerMergedPiece);
@@ -370,8 +370,7 @@ int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget) {
         resolution = capped(resolution, std::sqrt(static_cast<double>(budget) /
                                                   static_cast<double>(kTrunkDetailBudget)) *
                                             resolution);
-    const bool hidden =
-        params.drop_hidden != 0 && params.crown_mesh != 0 && params.sphere_diameter > 0.0;
+    const bool hidden = params.drop_hidden && params.crown_mesh && params.sphere_diameter > 0.0;
     // With the hidden branches left out, these cells keep the mean error about that of the
     // template's resolution.
     if (hidden) resolution = capped(resolution, 1.5 * share_cells(budget));  // 60 at 800
@@ -476,7 +475,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
         LeafSettings leaves;
         leaves.density = p.leaf_density;
         leaves.size = p.leaf_size;
-        leaves.shape = static_cast<LeafShape>(p.leaf_shape);
+        leaves.shape = p.leaf_shape;
         leaves.seed = p.seed;
         leaves.cancel = cancel;
         const SphereField& crown = *fields.crown;
@@ -485,7 +484,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
         // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
         // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).
         const float shell = static_cast<float>(p.leaf_size);
-        if (p.crown_mesh != 0 && crown.is_distance_bound() && shell > 0.0f)
+        if (p.crown_mesh && crown.is_distance_bound() && shell > 0.0f)
             out = scatter_leaves(
                 [&crown, shell](const glm::vec3& q) {
                     return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
@@ -516,7 +515,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     GrowthContext growth{options.cancel, &out.times};
     growth.progress = options.growth_progress;
     out.skeleton = grow(tree, growth, &mature);
-    out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
+    out.crown_shape = tree.params.crown_shape;
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
@@ -526,12 +525,12 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     check_extent(out.skeleton);
     throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
     Stopwatch clock;
-    const bool crown_wanted = p.crown_mesh != 0;
+    const bool crown_wanted = p.crown_mesh;
     // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in
     // groups (trunk_groups): its fields are built once the crown's says which segments it
     // draws, not twice.
     const bool game_mesh = options.budget > 0;
-    const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden != 0;
+    const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden;
     TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel,
                                     !game_mesh    ? TrunkField::Whole
                                     : drop_hidden ? TrunkField::None

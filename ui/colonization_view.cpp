@@ -76,14 +76,14 @@ std::vector<glm::vec3> envelope_wire(const Envelope& envelope, int meridians, in
 }
 
 std::vector<glm::vec3> template_envelope_wire(const TreeTemplate& tree_template) {
-    return envelope_wire(template_envelope(tree_template.params));
+    return envelope_wire(template_envelope(colonization_params(tree_template.params)));
 }
 
 std::vector<glm::vec3> template_attraction_points(const TreeTemplate& tree_template) {
     // The same call colonization_growth's grow() makes; the tests check the two agree.
-    const TreeParams& p = tree_template.params;
-    return attraction_points(template_envelope(p), p.attraction_points,
-                             static_cast<PointDistribution>(p.point_distribution), p.seed);
+    const ColonizationParams& p = colonization_params(tree_template.params);
+    return attraction_points(template_envelope(p), p.attraction_points, p.point_distribution,
+                             tree_template.params.seed);
 }
 
 std::vector<glm::vec3> attraction_points_alive(const TreeTemplate& tree_template, int step) {

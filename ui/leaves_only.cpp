@@ -3,6 +3,8 @@
 #include <chrono>
 #include <string_view>
 
+#include "tree/parameters.h"
+
 namespace sylva::studio {
 namespace {
 

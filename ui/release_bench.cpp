@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/tree_params.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 
 namespace sylva::studio {

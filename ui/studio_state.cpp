@@ -18,6 +18,7 @@
 #include "marching/marching_cubes.h"
 #include "tree/cost.h"
 #include "tree/leaf_thinning.h"
+#include "tree/parameters.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 #include "ui/leaves_only.h"
@@ -249,7 +250,7 @@ void save_recent_files(const StudioState& state) {
 // on, and no crown triangles. The usual reason is a tree scaled up until the crown's grid
 // cells are larger than its spheres.
 std::string crown_notice_for(const Tree& tree, const TreeParams& p) {
-    if (!tree.crown.triangles.empty() || p.crown_mesh == 0 || p.sphere_diameter <= 0.0 ||
+    if (!tree.crown.triangles.empty() || !p.crown_mesh || p.sphere_diameter <= 0.0 ||
         tree.skeleton.segments.empty())
         return {};
     const Box box = skeleton_bounds(tree.skeleton);

@@ -10,10 +10,10 @@
 #include <map>
 #include <mutex>
 
-#include "colonization/colonization_growth.h"
-#include "core/tree_params.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
-#include "tree/template_crown.h"
+#include "tree/unread_params.h"
+#include "turtle/grammar_reads.h"
 
 namespace sylva::studio {
 namespace {
@@ -36,22 +36,6 @@ bool parse_number(std::string_view text, double& value) {
     if (text.front() == '+') text.remove_prefix(1);
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     return error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
-}
-
-// The lines of `text`, without their newlines.
-std::vector<std::string_view> lines_of(std::string_view text) {
-    std::vector<std::string_view> lines;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) {
-            if (start < text.size()) lines.push_back(text.substr(start));
-            break;
-        }
-        lines.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return lines;
 }
 
 // One #define line taken apart: where its value stands (offsets into the line) and its
@@ -105,163 +89,6 @@ bool whole(double v) {
     return std::floor(v) == v && std::abs(v) < 1e9;
 }
 
-// The text a turtle draws from: the axiom and every production's successor, comments and
-// directives left out (the predecessor and condition of a rule are matched, not drawn).
-std::vector<std::string_view> drawn_texts(std::string_view grammar) {
-    std::vector<std::string_view> texts;
-    for (std::string_view line : lines_of(grammar)) {
-        line = trim(line);
-        if (line.empty() || line.front() == '#') continue;  // comments, #define, #axiom, #rules
-        if (const auto hash = line.find('#'); hash != std::string_view::npos)
-            line = line.substr(0, hash);
-        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos)
-            line = line.substr(arrow + 2);
-        else if (line.starts_with("axiom:"))
-            line = line.substr(6);
-        texts.push_back(line);
-    }
-    return texts;
-}
-
-// True when one of `symbols` is drawn without an argument anywhere, so the turtle uses the
-// global default for it.
-bool uses_default(const std::vector<std::string_view>& texts, std::string_view symbols) {
-    for (std::string_view text : texts) {
-        int depth = 0;
-        for (std::size_t i = 0; i < text.size(); ++i) {
-            const char c = text[i];
-            if (c == '(') ++depth;
-            if (c == ')') --depth;
-            if (depth != 0 || symbols.find(c) == std::string_view::npos) continue;
-            const auto next = text.find_first_not_of(" \t", i + 1);
-            if (next == std::string_view::npos || text[next] != '(') return true;
-        }
-    }
-    return false;
-}
-
-// True when an expression of the grammar names the parameter (template parameters are
-// constants every expression sees).
-bool names_param(std::string_view grammar, std::string_view key) {
-    for (std::string_view line : lines_of(grammar)) {
-        std::string_view code = line;
-        const auto first = code.find_first_not_of(" \t");
-        if (first != std::string_view::npos && code[first] == '#') {
-            // A #define's value may name it; its comment does not count.
-            const auto second = code.find('#', first + 1);
-            code = code.substr(0, second);
-        } else if (const auto hash = code.find('#'); hash != std::string_view::npos) {
-            code = code.substr(0, hash);
-        }
-        for (auto at = code.find(key); at != std::string_view::npos; at = code.find(key, at + 1)) {
-            const bool before = at > 0 && is_name_char(code[at - 1]);
-            const bool after = at + key.size() < code.size() && is_name_char(code[at + key.size()]);
-            if (!before && !after) return true;
-        }
-    }
-    return false;
-}
-
-// The successors of the rules for module `symbol` (the text after "->" of each line whose
-// predecessor starts with it).
-std::vector<std::string_view> successors_of(std::string_view grammar, char symbol) {
-    std::vector<std::string_view> out;
-    for (std::string_view line : lines_of(grammar)) {
-        line = trim(line);
-        if (line.empty() || line.front() != symbol) continue;
-        if (const auto hash = line.find('#'); hash != std::string_view::npos)
-            line = line.substr(0, hash);
-        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos)
-            out.push_back(line.substr(arrow + 2));
-    }
-    return out;
-}
-
-// True when `text` sets a width ('!(w)') before it draws: through the rules of the modules
-// it starts with, `depth` levels deep.
-bool sets_width_first(std::string_view grammar, std::string_view text, int depth) {
-    int parens = 0;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '(') ++parens;
-        if (c == ')') --parens;
-        if (parens != 0) continue;
-        if (c == '!') {
-            const auto next = text.find_first_not_of(" \t", i + 1);
-            if (next != std::string_view::npos && text[next] == '(') return true;
-            return false;  // '!' alone scales the starting width
-        }
-        if (c == 'F' || c == 'f') return false;
-        if (std::isalpha(static_cast<unsigned char>(c))) {
-            if (depth == 0) return false;
-            const std::vector<std::string_view> rules = successors_of(grammar, c);
-            if (rules.empty()) continue;  // a module without rules draws nothing
-            return std::all_of(rules.begin(), rules.end(), [&](std::string_view successor) {
-                return sets_width_first(grammar, successor, depth - 1);
-            });
-        }
-    }
-    return false;
-}
-
-// The axiom (or the rules it starts with) sets its own starting width before the first F:
-// branch_width is never drawn.
-bool axiom_sets_width(std::string_view grammar) {
-    const std::vector<std::string_view> texts = drawn_texts(grammar);
-    return !texts.empty() && sets_width_first(grammar, texts.front(), 2);
-}
-
-bool colonization_key(std::string_view key) {
-    static constexpr std::array<std::string_view, 34> keys = {
-        "attraction_points", "influence_radius",
-        "kill_distance",     "step_size",
-        "max_iterations",    "envelope",
-        "envelope_size_x",   "envelope_size_y",
-        "envelope_size_z",   "envelope_base",
-        "envelope_offset_x", "envelope_offset_z",
-        "envelope_template", "envelope_tilt",
-        "obstacle",          "obstacle_x",
-        "obstacle_y",        "obstacle_z",
-        "obstacle_size_x",   "obstacle_size_y",
-        "obstacle_size_z",   "roots",
-        "root_spread",       "point_distribution",
-        "trunk_height",      "tropism_vector_x",
-        "tropism_vector_y",  "tropism_vector_z",
-        "max_degree",        "max_depth",
-        "max_no_grow",       "weighted_growth",
-        "curve_reduction",   "angle_smoothing"};
-    return std::find(keys.begin(), keys.end(), key) != keys.end();
-}
-
-// colonization_growth.h's why_max_no_grow_is_unused, which grows the tree: kept per set of
-// parameters, since the panel asks every frame. Empty when it cannot tell (a bad template).
-std::string max_no_grow_unused(const TreeTemplate& tree) {
-    std::string key = tree.growth;
-    for (const ParamInfo& info : param_infos()) {
-        char buffer[40];
-        std::snprintf(buffer, sizeof buffer, "|%.17g", *get_param(tree.params, info.key));
-        key += buffer;
-    }
-    static std::mutex mutex;
-    static std::map<std::string, std::string> known;
-    {
-        const std::lock_guard lock(mutex);
-        if (auto found = known.find(key); found != known.end()) return found->second;
-    }
-    std::string why;
-    try {
-        GrowthContext context;
-        context.template_crown = [](std::string_view name) { return template_crown(name); };
-        why = why_max_no_grow_is_unused(tree, context);
-    } catch (const std::exception&) {
-        // The growth reports the error itself; the slider stays enabled.
-    }
-    const std::lock_guard lock(mutex);
-    if (known.size() > 256) known.clear();
-    known.emplace(std::move(key), why);
-    return why;
-}
-
 }  // namespace
 
 std::string shortest_number(double value) {
@@ -286,7 +113,7 @@ double round_for_range(double value, double min, double max) {
 std::vector<GrammarConstant> grammar_constants(std::string_view grammar) {
     std::vector<GrammarConstant> constants;
     int number = 0;
-    for (std::string_view line : lines_of(grammar)) {
+    for (std::string_view line : grammar_lines(grammar)) {
         ++number;
         DefineLine define;
         if (!parse_define_line(line, define)) continue;
@@ -336,121 +163,44 @@ bool set_grammar_constant(std::string& grammar, std::string_view name, double va
 }
 
 std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate& tree) {
-    std::map<std::string, std::string, std::less<>> inert;
-    const TreeParams& p = tree.params;
-    const bool colonization = tree.growth == "colonization";
-    auto mark = [&](std::string_view key, std::string reason) {
-        inert.emplace(std::string(key), std::move(reason));
-    };
-    if (colonization) {
-        for (std::string_view key : {"generations", "branch_length", "pitch_angle", "yaw_angle",
-                                     "branch_width", "trunk_taper", "branch_taper", "tropism"})
-            mark(key,
-                 "an L-system parameter: space colonization does not read it (its branches "
-                 "follow the attraction points; widths come from tip_width and pipe_exponent)");
-        if (p.envelope == kEnvelopeTemplate) {
-            for (std::string_view key :
-                 {"envelope_size_x", "envelope_size_y", "envelope_size_z", "envelope_base",
-                  "envelope_offset_x", "envelope_offset_z", "envelope_tilt"})
-                mark(key,
-                     "the envelope is another template's crown (envelope = template): "
-                     "its own size and place are not used");
-        } else {
-            mark("envelope_template", "only used with envelope = template");
-        }
-        if (p.obstacle == 0)
-            for (std::string_view key : {"obstacle_x", "obstacle_y", "obstacle_z",
-                                         "obstacle_size_x", "obstacle_size_y", "obstacle_size_z"})
-                mark(key, "no obstacle: set obstacle to sphere or box first");
-        if (p.roots <= 1)
-            mark("root_spread", "one root: the spread of a circle of roots is unused");
-        for (std::string_view key : {"bend", "bend_frequency", "jitter", "width_variation"})
-            mark(key,
-                 "a turtle parameter: space colonization does not read it (tropism_variation "
-                 "varies its growth directions)");
-        if (std::string why = max_no_grow_unused(tree); !why.empty())
-            mark("max_no_grow", std::move(why));
-    } else {
-        for (const ParamInfo& info : param_infos())
-            if (colonization_key(info.key))
-                mark(info.key,
-                     "a space colonization parameter: the L-system does not read it "
-                     "(switch growth to colonization)");
-        const std::vector<std::string_view> texts = drawn_texts(tree.grammar);
-        auto unread = [&](std::string_view key, std::string_view symbols) {
-            return !uses_default(texts, symbols) && !names_param(tree.grammar, key);
-        };
-        if (unread("branch_length", "Ff"))
-            mark("branch_length", "every F and f in the rules gives its own length");
-        if (unread("pitch_angle", "&^"))
-            mark("pitch_angle", "every & and ^ in the rules gives its own angle");
-        if (unread("yaw_angle", "+-\\/"))
-            mark("yaw_angle", "every +, -, \\ and / in the rules gives its own angle");
-        if (tree.mode == TurtleMode::Lptg && !names_param(tree.grammar, "tropism"))
-            mark("tropism", "the lptg turtle (seed 001) does not bend towards gravity");
-        if ((inert.contains("tropism") || p.tropism == 0.0) &&
-            !names_param(tree.grammar, "tropism"))
-            mark("tropism_variation", "no tropism to vary: set tropism first");
-        const auto width_reason = [&](WidthModel model) -> std::string {
-            switch (model) {
-                case WidthModel::Explicit:
-                    return "widths = explicit: only ! in the rules sets widths";
-                case WidthModel::Pipe:
-                    return "widths = pipe: the pipe model sets every width from tip_width";
-                default:
-                    return "widths = taper: per-segment factors set the widths";
-            }
-        };
-        for (std::string_view key :
-             {"trunk_taper", "branch_taper", "tip_width", "pipe_exponent", "branch_width"}) {
-            if (names_param(tree.grammar, key)) continue;
-            const bool taper_key = key == "trunk_taper" || key == "branch_taper";
-            const bool pipe_key = key == "tip_width" || key == "pipe_exponent";
-            bool read = true;
-            switch (tree.width_model) {
-                case WidthModel::Explicit:
-                    read = key == "branch_width" && !axiom_sets_width(tree.grammar);
-                    break;
-                case WidthModel::Taper:
-                    read = taper_key || (key == "branch_width" && !axiom_sets_width(tree.grammar));
-                    break;
-                case WidthModel::Pipe:
-                    read = pipe_key;
-                    break;
-            }
-            if (!read) {
-                std::string reason = width_reason(tree.width_model);
-                if (key == "branch_width" && tree.width_model != WidthModel::Pipe)
-                    reason = "the axiom sets its own starting width with !(...)";
-                mark(key, reason);
-            }
-        }
+    // Asked every frame, and a growth method may grow the tree to answer (colonization's
+    // max_no_grow): answers are kept per template and parameters.
+    std::string key = tree.growth + "|" + std::to_string(static_cast<int>(tree.mode)) + "|" +
+                      std::to_string(static_cast<int>(tree.width_model)) + "|" + tree.grammar;
+    for (const ParamInfo& info : param_infos()) {
+        char buffer[40];
+        std::snprintf(buffer, sizeof buffer, "|%.17g", *get_param(tree.params, info.key));
+        key += buffer;
     }
-    if (p.bend == 0.0) mark("bend_frequency", "bend is 0: there is no bending to shape");
-    if (p.leaf_density <= 0.0)
-        for (std::string_view key : {"leaf_size", "leaf_shape"})
-            mark(key, "leaf_density is 0: the crown carries no leaves");
-    if (p.crown_mesh == 0)
-        for (std::string_view key : {"crown_resolution", "crown_blend", "crown_fusion",
-                                     "crown_shape", "crown_lump_triangles"})
-            mark(key, "crown_mesh is off: the crown is not meshed (its leaves stay)");
-    if (p.triangle_budget == 0)
-        mark("crown_shape", "triangle_budget is 0: the game mesh keeps the crown as meshed");
-    if (p.triangle_budget == 0 || static_cast<CrownShape>(p.crown_shape) == CrownShape::Blobs)
-        mark("crown_lump_triangles", "the game mesh draws the crown as blobs, not as lumps");
-    if (p.sphere_diameter <= 0.0)
-        for (std::string_view key :
-             {"crown_resolution", "crown_blend", "crown_fusion", "crown_offset", "leaf_density",
-              "leaf_size", "leaf_shape", "crown_mesh", "crown_merge", "crown_shape",
-              "crown_lump_triangles"})
-            mark(key, "sphere_diameter is 0: the tree has no crown");
-    return inert;
+    using Unread = std::map<std::string, std::string, std::less<>>;
+    static std::mutex mutex;
+    static std::map<std::string, Unread> known;
+    {
+        const std::lock_guard lock(mutex);
+        if (auto found = known.find(key); found != known.end()) return found->second;
+    }
+    Unread unread = unread_params(tree);
+    const std::lock_guard lock(mutex);
+    if (known.size() > 256) known.clear();
+    known.emplace(std::move(key), unread);
+    return unread;
+}
+
+std::vector<ParameterRow> parameter_rows(const TreeTemplate& tree) {
+    const auto inert = inert_params(tree);
+    std::vector<ParameterRow> rows;
+    for (ParamGroup group : param_groups())
+        for (const ParamInfo& info : param_infos()) {
+            if (info.group != group) continue;
+            ParameterRow row{&info, {}};
+            if (auto found = inert.find(info.key); found != inert.end()) row.unread = found->second;
+            rows.push_back(std::move(row));
+        }
+    return rows;
 }
 
 SliderRange slider_range(std::string_view key, double value) {
-    const ParamInfo* info = nullptr;
-    for (const ParamInfo& i : param_infos())
-        if (i.key == key) info = &i;
+    const ParamInfo* info = find_param(key);
     if (!info) return {0, 1};
     // Useful drags for parameters whose valid range is far wider; typed values (Ctrl+click)
     // may go to the whole range.
@@ -475,7 +225,7 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
         used = trunk_resolution_for_budget(params, budget);
         set = params.trunk_resolution;
         TreeParams shown = params;  // every branch meshed
-        shown.drop_hidden = 0;
+        shown.drop_hidden = false;
         why += used < trunk_resolution_for_budget(shown, budget)
                    ? ", since drop_hidden is on"
                    : ", below " + std::to_string(kTrunkDetailBudget) + " triangles";

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/param_table.h"
 #include "core/tree_template.h"
 
 namespace sylva::studio {
@@ -45,8 +46,22 @@ std::string shortest_number(double value);
 double round_for_range(double value, double min, double max);
 
 // Global parameters the template's rules or growth method never read, each with the reason
-// ("every F in the rules gives its own length"). Keys of param_infos().
+// ("every F in the rules gives its own length"): tree/unread_params.h's answer, kept per
+// template and parameters since the panel asks every frame. Keys of param_infos().
+// Thread-safe.
 std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate& tree);
+
+// One control of the parameter panel: a parameter of the registry (tree/parameters.h) and,
+// when the tree never reads it, why (the control is then greyed out).
+struct ParameterRow {
+    const ParamInfo* info;
+    std::string unread;  // empty: read
+};
+
+// Every parameter of the registry, by group (param_groups()' order), each with its reason
+// when inert: what the panel draws, so a growth method's parameters show without an edit
+// here.
+std::vector<ParameterRow> parameter_rows(const TreeTemplate& tree);
 
 // The slider's ends for a parameter: its useful range, widened so it contains `value` (a
 // template's own default, e.g. the spruce's leaf_density 4000) and clipped to the valid range.

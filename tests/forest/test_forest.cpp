@@ -17,6 +17,7 @@
 #include "forest/ground.h"
 #include "forest/poisson_disk.h"
 #include "forest/species_file.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 
 namespace {
@@ -161,7 +162,7 @@ TEST(SpeciesFile, TemplatesWeightsAndOverrides) {
     EXPECT_EQ(species[0].tree.name, "oak");
     EXPECT_EQ(species[0].weight, 2.0);
     EXPECT_EQ(species[0].tree.params.leaf_density, 40.0);
-    EXPECT_EQ(species[0].tree.params.leaf_shape, static_cast<int>(LeafShape::Needle));
+    EXPECT_EQ(species[0].tree.params.leaf_shape, LeafShape::Needle);
     EXPECT_EQ(species[1].weight, 1.0);
     try {
         parse_species_json(R"({"species": [{"template": "oak"}, {"template": "birch",

@@ -19,6 +19,7 @@
 #include "tree/crown_hulls.h"
 #include "tree/crown_merge.h"
 #include "tree/lowpoly_tree.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 

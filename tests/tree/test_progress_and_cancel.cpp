@@ -22,6 +22,7 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "turtle/derivation.h"
+#include "turtle/lsystem_params.h"
 #include "turtle/lsystem_parser.h"
 
 namespace sylva {
@@ -78,7 +79,7 @@ TEST(GrowthProgress, EveryGrowthMethodRisesToOne) {
 
 TEST(GrowthProgress, ThePipelineHandsItOn) {
     TreeTemplate t = load_template("ternary");
-    t.params.generations = 5;
+    t.params.blocks.edit<LSystemParams>().generations = 5;
     std::vector<float> fractions;
     MeshOptions options;
     options.growth_progress = [&](float f) { fractions.push_back(f); };
@@ -134,7 +135,7 @@ double seconds_to_cancel(const std::function<void(CancelFlag)>& work) {
 const Tree& crossing_tree() {
     static const Tree tree = [] {
         TreeTemplate t = load_template("ternary");
-        t.params.generations = 7;
+        t.params.blocks.edit<LSystemParams>().generations = 7;
         MeshOptions options;
         options.budget = 800;
         return generate_tree(t, options);

@@ -8,6 +8,7 @@
 
 #include "marching/mesh_checks.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 

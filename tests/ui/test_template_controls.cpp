@@ -7,8 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "core/tree_params.h"
+#include "colonization/colonization_params.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 #include "ui/template_controls.h"
 
@@ -115,9 +116,9 @@ TEST(TemplateControls, MaxNoGrowIsGreyedWhereTheGrowthGivesItNothingToDo) {
 // for its release instead of ending (the maple's last stall is 8 passes from the end).
 TEST(TemplateControls, MaxNoGrowActsOnAStallInTheLastPass) {
     TreeTemplate maple = load_template("maple");
-    maple.params.max_no_grow = 0;
+    maple.params.blocks.edit<ColonizationParams>().max_no_grow = 0;
     const Skeleton never = grow(maple);
-    maple.params.max_no_grow = 8;
+    maple.params.blocks.edit<ColonizationParams>().max_no_grow = 8;
     EXPECT_NE(grow(maple).segments.size(), never.segments.size());
 }
 

@@ -1,12 +1,14 @@
-// The variation and age parameters: defaults that change nothing, ranges checked with the
-// key named, and colour variation per seed (crown and leaves shifted together).
+// The parameter registry: every key of the shared table and of each growth method's table
+// is read and written by key, ranges are checked with the key named, variation defaults
+// change nothing, and a vector's keys and a flag's words read as before.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "core/color_variation.h"
+#include "colonization/colonization_params.h"
 #include "core/errors.h"
-#include "core/tree_params.h"
+#include "tree/parameters.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -14,9 +16,9 @@ namespace {
 TEST(VariationParams, DefaultsChangeNothing) {
     const TreeParams p;
     EXPECT_EQ(p.age, 1.0);
-    EXPECT_EQ(p.bend, 0.0);
-    EXPECT_EQ(p.jitter, 0.0);
-    EXPECT_EQ(p.width_variation, 0.0);
+    EXPECT_EQ(lsystem_params(p).bend, 0.0);
+    EXPECT_EQ(lsystem_params(p).jitter, 0.0);
+    EXPECT_EQ(lsystem_params(p).width_variation, 0.0);
     EXPECT_EQ(p.tropism_variation, 0.0);
     EXPECT_EQ(p.color_variation, 0.0);
 }
@@ -43,7 +45,7 @@ TEST(VariationParams, OutOfRangeValuesNameTheKey) {
     set_param(p, "age", "0.25");
     set_param(p, "bend", "30");
     EXPECT_EQ(p.age, 0.25);
-    EXPECT_EQ(p.bend, 30.0);
+    EXPECT_EQ(lsystem_params(p).bend, 30.0);
 }
 
 // The value in a refusal reads back as what was given: "not 10" for 10.0000000001 would
@@ -63,24 +65,6 @@ TEST(VariationParams, ARefusedValueIsShownAsGiven) {
         EXPECT_NE(std::string(e.what()).find("= 1.0000001 is out of range"), std::string::npos)
             << e.what();
     }
-}
-
-TEST(ColorVariation, ZeroKeepsTheColoursAndSeedsDiffer) {
-    const PartColors base;
-    const PartColors same = varied_colors(base, 0.0, 99);
-    EXPECT_EQ(same.trunk, base.trunk);
-    EXPECT_EQ(same.crown, base.crown);
-    const PartColors a = varied_colors(base, 0.8, 1), b = varied_colors(base, 0.8, 2);
-    EXPECT_NE(a.crown, b.crown);
-    EXPECT_EQ(a.crown, varied_colors(base, 0.8, 1).crown);
-    for (const glm::vec3& c : {a.trunk, a.crown, a.leaves, b.trunk, b.crown, b.leaves})
-        for (int i = 0; i < 3; ++i) {
-            EXPECT_GE(c[i], 0.0f);
-            EXPECT_LE(c[i], 1.0f);
-        }
-    // Crown and leaves shift by the same factors, so they stay matched.
-    for (int i = 0; i < 3; ++i)
-        EXPECT_NEAR(a.crown[i] / base.crown[i], a.leaves[i] / base.leaves[i], 1e-5);
 }
 
 }  // namespace
