@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "tree/growth.h"
 #include "tree/parameters.h"
@@ -102,6 +103,16 @@ std::string parameter_reference_markdown() {
         }
     }
     return out.str();
+}
+
+std::string parameters_doc(std::string_view doc) {
+    const std::size_t begin = doc.find(kGeneratedBegin);
+    const std::size_t end = doc.find(kGeneratedEnd);
+    if (begin == std::string_view::npos || end == std::string_view::npos || end < begin)
+        throw std::invalid_argument("the parameters' doc has no generated-text markers");
+    const std::size_t body = begin + kGeneratedBegin.size();
+    return std::string(doc.substr(0, body)) + "\n\n" + parameter_reference_markdown() + "\n" +
+           std::string(doc.substr(end));
 }
 
 }  // namespace sylva
