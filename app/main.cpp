@@ -28,7 +28,7 @@
 #ifdef SYLVA_HAS_LAYOUT
 #include "layout/layout_cli.h"
 #endif
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/cost.h"
 #include "tree/growth.h"

@@ -45,9 +45,9 @@
 #include <vector>
 
 #include "core/large_pages.h"
+#include "core/mesh_checks.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
-#include "marching/mesh_checks.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 

@@ -24,8 +24,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
-#include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "sdf/capped_cone.h"
 #include "sdf/sphere_field.h"

@@ -11,10 +11,10 @@
 #include <numeric>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/handle_cutting.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/quadric_collapse.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

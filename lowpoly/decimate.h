@@ -102,7 +102,7 @@ struct DecimateResult {
     std::size_t triangles = 0;   // over all parts
     bool within_budget = false;  // triangles <= max_triangles
     // How often a reduction was redone with fewer collapses because a part failed
-    // check_topology (marching/mesh_checks.h). 0 in every case seen so far: the link
+    // check_topology (core/mesh_checks.h). 0 in every case seen so far: the link
     // condition and the guards keep the manifold; the back-off is the safety net.
     int backoffs = 0;
     int handles_cut = 0;  // see DecimateSettings::cut_handles

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "core/convex_hull.h"
+#include "core/mesh_checks.h"
 #include "export/export_tree.h"
 #include "export/part_attributes.h"
 #include "export/wind_motion.h"
-#include "marching/mesh_checks.h"
 #include "tree/template_library.h"
 
 namespace sylva {

@@ -25,6 +25,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "export/export.h"
 #include "export/export_tree.h"
 #include "export/glb_writer.h"
@@ -32,7 +33,6 @@
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 #include "tree/leaf_thinning.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"

@@ -9,9 +9,9 @@
 #include <glm/vec2.hpp>
 #include <limits>
 
+#include "core/mesh_checks.h"
 #include "export/export_tree.h"
 #include "lowpoly/merge_meshes.h"
-#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh_checks.h"
 #include "core/random.h"
 #include "export/export_tree.h"
-#include "marching/mesh_checks.h"
 #include "quality/folds.h"
 #include "quality/self_intersections.h"
 #include "tree/parameters.h"

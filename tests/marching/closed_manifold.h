@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 
 namespace sylva {
 

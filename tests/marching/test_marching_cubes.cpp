@@ -17,8 +17,8 @@
 
 #include "closed_manifold.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

@@ -16,9 +16,9 @@
 
 #include "closed_manifold.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 #include "marching/vdb_mesher.h"
 
 namespace sylva {

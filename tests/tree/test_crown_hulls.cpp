@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/disjoint_sets.h"
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "tree/crown_hulls.h"
 #include "tree/crown_merge.h"
 #include "tree/lowpoly_tree.h"

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/inner_shells.h"
-#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/pipeline.h"
 #include "tree/template_file.h"

@@ -11,8 +11,8 @@
 #include <numbers>
 #include <set>
 
+#include "core/mesh_checks.h"
 #include "core/random.h"
-#include "marching/mesh_checks.h"
 #include "tree/growth.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"

@@ -14,8 +14,8 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "export/obj_writer.h"
-#include "marching/mesh_checks.h"
 #include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"

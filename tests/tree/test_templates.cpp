@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "tree/growth.h"
 #include "tree/parameters.h"
 #include "tree/pipeline.h"

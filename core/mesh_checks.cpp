@@ -1,4 +1,4 @@
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 
 namespace sylva {
 namespace {
