@@ -19,12 +19,12 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
-#include "core/large_pages.h"
 #include "core/name_list.h"
-#include "core/signal_cleanup.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
+#include "platform/large_pages.h"
+#include "platform/signal_cleanup.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "layout/layout_cli.h"
 #endif
@@ -529,7 +529,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) use_large_pages();  // core/large_pages.h
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) use_large_pages();  // platform/large_pages.h
     // SIGINT/SIGTERM during a write remove the export's temporaries before the process ends.
     install_signal_cleanup();
     try {

@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
+#include "platform/large_pages.h"
 #include "quality/folds.h"
 #include "quality/self_intersections.h"
 #include "quality/silhouette.h"
@@ -110,7 +110,7 @@ struct Costs {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The studio's heap (core/large_pages.h), as the other benchmarks.
+    // The studio's heap (platform/large_pages.h), as the other benchmarks.
     if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
     std::vector<std::size_t> budgets = {50, 200, 800, 3000};
     bool lod = false, detail = false;

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
+#include "platform/large_pages.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
@@ -40,7 +40,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The studio's heap (core/large_pages.h): its exports, like these, follow each other in
+    // The studio's heap (platform/large_pages.h): its exports, like these, follow each other in
     // one process. SYLVA_NO_LARGE_PAGES=1 measures without.
     if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
     int repeat = 3;

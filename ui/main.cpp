@@ -5,7 +5,7 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/input_file.h"
-#include "core/large_pages.h"
+#include "platform/large_pages.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/backdrop.h"
@@ -605,7 +605,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) sylva::keep_freed_memory();  // core/large_pages.h
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) sylva::keep_freed_memory();  // platform/large_pages.h
     StudioOptions options;
     try {
         options = parse_studio_options(argc, argv);

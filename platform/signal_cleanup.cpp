@@ -1,4 +1,4 @@
-#include "core/signal_cleanup.h"
+#include "platform/signal_cleanup.h"
 
 #include <limits.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "core/large_pages.h"
+#include "platform/large_pages.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// core/large_pages.h: freed memory kept for the next allocation; the heap grown once and
+// platform/large_pages.h: freed memory kept for the next allocation; the heap grown once and
 // advised for huge pages, and later allocations (large ones too, which glibc would map apart)
 // served from that reserve.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
+#include "platform/large_pages.h"
 
 #if defined(__linux__) && defined(__GLIBC__)
 #include <unistd.h>
