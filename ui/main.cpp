@@ -9,24 +9,24 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/backdrop.h"
-#include "ui/colonization_view.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#include "ui/state/colonization_view.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "ui/layout_panel.h"
 #endif
 #include "ui/forest_preview.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
-#include "ui/orbit_camera.h"
 #include "ui/panels.h"
-#include "ui/release_bench.h"
-#include "ui/scale_figure.h"
 #include "ui/screenshot.h"
-#include "ui/studio_options.h"
-#include "ui/studio_state.h"
+#include "ui/state/orbit_camera.h"
+#include "ui/state/release_bench.h"
+#include "ui/state/scale_figure.h"
+#include "ui/state/studio_options.h"
+#include "ui/state/studio_state.h"
+#include "ui/state/wind_view.h"
 #include "ui/variants_strip.h"
-#include "ui/wind_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -110,7 +110,7 @@ struct Viewport {
     static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
     int points_step = kNothing, replay_step = kNothing;
-    WindView wind;  // the wind toggle's parts (ui/wind_view.h)
+    WindView wind;  // the wind toggle's parts (ui/state/wind_view.h)
 };
 
 GLFWwindow* create_window() {

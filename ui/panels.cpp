@@ -16,10 +16,10 @@
 #include "tree/growth.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
-#include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
-#include "ui/template_controls.h"
+#include "ui/state/colonization_view.h"
+#include "ui/state/template_controls.h"
 
 namespace sylva::studio {
 namespace {
@@ -187,8 +187,8 @@ void template_section(StudioState& state) {
     message_line(state.file_message, state.file_failed);
 }
 
-// The template's own knobs: its #define constants that carry a range (ui/template_controls.h),
-// its colours, and the way back to it as it was opened.
+// The template's own knobs: its #define constants that carry a range
+// (ui/state/template_controls.h), its colours, and the way back to it as it was opened.
 void this_tree_section(StudioState& state) {
     section("This tree");
     TreeTemplate& t = state.tree_template;

@@ -19,7 +19,7 @@
 #include "tree/parameters.h"
 #include "tree/template_file.h"
 #ifdef SYLVA_HAS_STUDIO
-#include "ui/template_controls.h"
+#include "ui/state/template_controls.h"
 #endif
 
 namespace sylva {

@@ -13,8 +13,8 @@
 #include "colonization/colonization_growth.h"
 #include "tree/growth.h"
 #include "tree/template_library.h"
-#include "ui/colonization_view.h"
-#include "ui/studio_state.h"
+#include "ui/state/colonization_view.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {

@@ -8,8 +8,8 @@
 #include "tree/parameters.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
-#include "ui/leaves_only.h"
-#include "ui/studio_state.h"
+#include "ui/state/leaves_only.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {

@@ -14,7 +14,7 @@
 #include "tree/template_file.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {

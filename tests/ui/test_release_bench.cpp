@@ -10,8 +10,8 @@
 
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
-#include "ui/release_bench.h"
-#include "ui/studio_options.h"
+#include "ui/state/release_bench.h"
+#include "ui/state/studio_options.h"
 
 namespace sylva::studio {
 namespace {

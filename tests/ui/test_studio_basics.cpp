@@ -15,7 +15,7 @@
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {

@@ -16,7 +16,7 @@
 #include "tests/ui/wait_for_generations.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {

@@ -11,7 +11,7 @@
 #include "tree/growth.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
-#include "ui/template_controls.h"
+#include "ui/state/template_controls.h"
 
 namespace sylva::studio {
 namespace {

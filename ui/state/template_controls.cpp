@@ -1,4 +1,4 @@
-#include "ui/template_controls.h"
+#include "ui/state/template_controls.h"
 
 #include <algorithm>
 #include <array>

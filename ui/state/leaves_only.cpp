@@ -1,4 +1,4 @@
-#include "ui/leaves_only.h"
+#include "ui/state/leaves_only.h"
 
 #include <chrono>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "ui/colonization_view.h"
+#include "ui/state/colonization_view.h"
 
 #include <algorithm>
 #include <cassert>

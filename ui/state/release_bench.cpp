@@ -1,4 +1,4 @@
-#include "ui/release_bench.h"
+#include "ui/state/release_bench.h"
 
 #include <charconv>
 #include <cstdio>

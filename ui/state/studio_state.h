@@ -18,8 +18,8 @@
 #include "export/export_tree.h"
 #include "tree/cost.h"
 #include "tree/pipeline.h"
-#include "ui/forest_preview_plan.h"
-#include "ui/orbit_camera.h"
+#include "ui/state/forest_preview_plan.h"
+#include "ui/state/orbit_camera.h"
 
 namespace sylva::studio {
 
@@ -122,7 +122,7 @@ struct GenerationJob {
     std::shared_ptr<const GeneratedTree> base;
     bool during_drag = false;  // started while a slider was held
     // The tree on screen when only the leaves' parameters changed: its skeleton, trunk and
-    // crown are kept and only the leaves scattered again (ui/leaves_only.h).
+    // crown are kept and only the leaves scattered again (ui/state/leaves_only.h).
     std::shared_ptr<const GeneratedTree> leaves_base;
     // The tree on screen when the job started: a job whose trunk and crown come out the same
     // reuses its reduction (reuse_reduction()).
@@ -137,12 +137,12 @@ struct ViewToggles {
     bool wireframe = false;
     bool low_poly = false;  // show the game mesh: what an export at the budget writes
     int lod_level = 0;      // which level of the LOD chain the low-poly view shows
-    // Space colonization trees only (ui/colonization_view.h):
+    // Space colonization trees only (ui/state/colonization_view.h):
     bool envelope = true;      // the envelope as a wire cage
     bool points = false;       // the attraction points the growth started from
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
-    bool wind = false;         // sway the tree with its exported wind data (ui/wind_view.h)
+    bool wind = false;         // sway the tree with its exported wind data (ui/state/wind_view.h)
     bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
     bool turntable = false;    // the camera circles the tree
     // A small square of forest planted with the shown template (ui/forest_preview.h).

@@ -1,4 +1,4 @@
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 #include <algorithm>
 #include <cassert>
@@ -21,7 +21,7 @@
 #include "tree/parameters.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
-#include "ui/leaves_only.h"
+#include "ui/state/leaves_only.h"
 
 namespace sylva::studio {
 namespace {

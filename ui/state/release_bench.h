@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

@@ -1,4 +1,4 @@
-#include "ui/orbit_camera.h"
+#include "ui/state/orbit_camera.h"
 
 #include <algorithm>
 #include <cmath>

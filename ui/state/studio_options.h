@@ -25,7 +25,7 @@ struct StudioOptions {
     std::optional<std::string> layout_example;  // open the layout panel on this example
     // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
     std::optional<float> wind_seconds;
-    // A scripted slider drag (ui/release_bench.h): "KEY=VALUE", with the low-poly view on;
+    // A scripted slider drag (ui/state/release_bench.h): "KEY=VALUE", with the low-poly view on;
     // prints the time from release to the game mesh on screen and exits.
     std::optional<std::string> bench_release;
     double bench_hold_ms = 0;  // held still at the value this long before release

@@ -1,4 +1,4 @@
-#include "ui/studio_options.h"
+#include "ui/state/studio_options.h"
 
 #include <charconv>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "ui/forest_preview_plan.h"
+#include "ui/state/forest_preview_plan.h"
 
 #include <algorithm>
 #include <glm/common.hpp>

@@ -1,4 +1,4 @@
-#include "ui/wind_view.h"
+#include "ui/state/wind_view.h"
 
 #include "export/part_attributes.h"
 

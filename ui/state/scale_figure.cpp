@@ -1,4 +1,4 @@
-#include "ui/scale_figure.h"
+#include "ui/state/scale_figure.h"
 
 #include <cmath>
 #include <numbers>
