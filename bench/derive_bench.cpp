@@ -1,12 +1,14 @@
 // Derivation throughput: modules written per second, for a D0L grammar (ABOP Fig. 1.24a)
 // and a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), one thread.
-// Usage: sylva-bench-derive [repetitions]
+// Usage: sylva-bench-derive [--markdown] [repetitions]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
+#include "bench/common.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_parser.h"
 
@@ -35,7 +37,9 @@ std::size_t modules_written(const LSystem& system, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool markdown = bench::take_flag(args, "--markdown");
+    const int repetitions = args.empty() ? 5 : std::max(1, std::atoi(args[0].c_str()));
     const Case cases[] = {
         {"D0L  F -> F[+F]F[-F]F (ABOP 1.24a)", "axiom: F\nF -> F[+F]F[-F]F\n", 9},
         {"parametric Honda (ABOP 2.6)", R"(#define r1 0.9
@@ -49,9 +53,8 @@ C(l,w) : * -> !(w)F(l)[+(45)$B(l*r2,w*wr)]B(l*r1,w*wr)
 )",
          19},
     };
-    std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
-    std::printf("%-38s %6s %12s %12s %10s\n", "grammar", "steps", "final size", "written",
-                "M modules/s");
+    if (!markdown) std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
+    bench::Table table({"grammar", "steps", "final size", "written", "M modules/s"});
     for (const Case& c : cases) {
         LSystem system = parse_lsystem(c.grammar);
         std::size_t written = modules_written(system, c.steps);
@@ -68,8 +71,9 @@ C(l,w) : * -> !(w)F(l)[+(45)$B(l*r2,w*wr)]B(l*r1,w*wr)
             best = std::min(best, seconds);
         }
         // One derive of n steps writes the words of steps 1..n: `written` modules.
-        std::printf("%-38s %6d %12zu %12zu %10.1f\n", c.name, c.steps, size, written,
-                    static_cast<double>(written) / best / 1e6);
+        table.row({c.name, std::to_string(c.steps), std::to_string(size), std::to_string(written),
+                   bench::format("%.1f", static_cast<double>(written) / best / 1e6)});
     }
+    table.print(markdown);
     return 0;
 }
