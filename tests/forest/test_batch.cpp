@@ -13,6 +13,7 @@
 #include "core/random.h"
 #include "forest/batch.h"
 #include "forest/variation.h"
+#include "tests/helpers.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
@@ -22,17 +23,10 @@ namespace {
 namespace fs = std::filesystem;
 using namespace sylva;
 
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::map<std::string, std::string> files_in(const fs::path& dir) {
     std::map<std::string, std::string> files;
     for (const auto& entry : fs::directory_iterator(dir))
-        files[entry.path().filename().string()] = read(entry.path());
+        files[entry.path().filename().string()] = test::read_file(entry.path());
     return files;
 }
 
@@ -150,7 +144,7 @@ TEST_F(Batch, FourShardsMakeTheWholeBatch) {
     }
     for (std::size_t i = 0; i < 4; ++i) {
         const nlohmann::json m =
-            nlohmann::json::parse(read(dir_ / "shards" / manifest_file_name({i, 4})));
+            nlohmann::json::parse(test::read_file(dir_ / "shards" / manifest_file_name({i, 4})));
         for (const auto& item : m["items"]) items.push_back(item);
         fs::remove(dir_ / "shards" / manifest_file_name({i, 4}));
     }

@@ -4,16 +4,15 @@
 // --set and template files, land in skeleton.json and show as the studio's controls (enabled
 // for a dummy tree, greyed with the reason for another).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "core/errors.h"
 #include "tests/growth_method/dummy/dummy_growth.h"
+#include "tests/helpers.h"
 #include "tree/growth.h"
 #include "tree/parameter_help.h"
 #include "tree/parameters.h"
@@ -29,15 +28,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* kKeys[] = {"dummy_height", "dummy_stems", "dummy_fan"};
 
-// Exit code and output (stdout and stderr) of the CLI built with the dummy method.
-std::pair<int, std::string> run(const std::string& args) {
-    const std::string command = std::string(SYLVA_WITH_DUMMY) + " " + args + " 2>&1";
-    std::string output;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+// Exit code and output of the CLI built with the dummy method.
+test::CommandResult run(const std::string& args) {
+    return test::run_command(std::string(SYLVA_WITH_DUMMY) + " " + args);
 }
 
 TreeTemplate dummy_tree() {
@@ -70,22 +63,21 @@ TEST(GrowthMethod, TemplateFilesAndSetReadItsParameters) {
     EXPECT_EQ(*get_param(parse_template_file(text, "back.toml").params, "dummy_height"), 5.0);
 }
 
-TEST(GrowthMethod, TheCliGrowsItAndWritesItsParameters) {
-    const fs::path dir = fs::temp_directory_path() / ("sylva_dummy_" + std::to_string(getpid()));
-    fs::create_directories(dir);
+using GrowthMethodCli = test::TempFolderTest;
+
+TEST_F(GrowthMethodCli, GrowsItAndWritesItsParameters) {
+    const fs::path& dir = dir_;
     const fs::path file = dir / "stems.toml";
     std::ofstream(file) << template_file_text(dummy_tree());
     const auto [code, out] = run("skeleton -t " + file.string() + " --set dummy_height=4 -o " +
                                  (dir / "skeleton.json").string());
     EXPECT_EQ(code, 0) << out;
     EXPECT_NE(out.find("3 segments"), std::string::npos) << out;
-    std::ifstream json(dir / "skeleton.json");
-    const std::string doc((std::istreambuf_iterator<char>(json)), {});
+    const std::string doc = test::read_file(dir / "skeleton.json");
     EXPECT_NE(doc.find("\"dummy_height\": 4.0"), std::string::npos) << doc.substr(0, 400);
     const auto [export_code, exported] =
         run("export -t " + file.string() + " -o " + (dir / "stems.glb").string());
     EXPECT_EQ(export_code, 0) << exported;
-    fs::remove_all(dir);
 }
 
 #ifdef SYLVA_HAS_STUDIO

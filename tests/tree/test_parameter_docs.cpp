@@ -2,10 +2,9 @@
 // moved or reworded in its table without `scripts/docs` fails here.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "tests/helpers.h"
 #include "tree/parameter_help.h"
 #include "tree/parameters.h"
 
@@ -13,10 +12,7 @@ namespace sylva {
 namespace {
 
 std::string committed_doc() {
-    std::ifstream in(std::string(SYLVA_SOURCE_DIR) + "/docs/parameters.md", std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return test::read_file(std::string(SYLVA_SOURCE_DIR) + "/docs/parameters.md");
 }
 
 TEST(ParameterDocs, TheCommittedTablesAreTheRegistrysOwn) {
