@@ -19,6 +19,7 @@
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "core/tree_age.h"
+#include "lowpoly/decimate.h"
 #include "lowpoly/merge_meshes.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
@@ -237,9 +238,11 @@ std::vector<std::uint8_t> trunk_groups(const Skeleton& skeleton,
         total += own[i];
     }
     // (ra + rb) L is a cone side's area over pi; marching cubes makes 5-9 triangles per
-    // square cell of it (on the built-in templates), so this is about 8,000 triangles: below,
-    // the reduction would not split the trunk (kSplitAtLeast in lowpoly/decimate.cpp).
-    constexpr double kGroupAtLeast = 1000.0;  // square cells
+    // square cell of it (on the built-in templates), about 8: a trunk of fewer square cells
+    // than this makes fewer triangles than the reduction splits into lanes.
+    constexpr double kTrianglesPerSquareCell = 8.0;
+    constexpr double kGroupAtLeast =
+        static_cast<double>(kLaneSplitTriangles) / kTrianglesPerSquareCell;  // square cells
     // A joint blend rounds every joint: pieces would lose the fillets where they meet.
     if (total < kGroupAtLeast * cell * cell || joint_blend > 0.0f) return group;
     // A piece starts where a branch leaves its parent, its base inside the parent's end,
