@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "core/name_list.h"
 #include "export/export.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
@@ -548,7 +549,7 @@ void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
-    tooltip("the extension picks the format: .obj (+ .mtl), .glb or .ply");
+    tooltip(("the extension picks the format: " + name_list(format_extensions())).c_str());
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())
