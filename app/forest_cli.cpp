@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "core/name_list.h"
 #include "export/export.h"
 #include "forest/batch.h"
 #include "forest/forest.h"
@@ -121,8 +120,7 @@ struct TreeFlags {
             const std::string name = value();
             format = format_from_name(name);
             if (!format)
-                throw UsageError("--format expects " + name_list(format_names()) + ", not '" +
-                                 name + "'");
+                throw UsageError("--format expects " + format_names() + ", not '" + name + "'");
         } else if (arg == "--shading") {
             const std::string name = value();
             if (name != "flat" && name != "smooth")

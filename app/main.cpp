@@ -54,7 +54,7 @@ constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
                  [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
-                 -o OUT.{obj,glb,ply}
+                 -o OUT.{obj,glb,ply,fbx}
   sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [-o WORD.txt]
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
@@ -90,8 +90,9 @@ constexpr const char* kOptions = R"(
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --format F       @FORMATS@ (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
-  --profile P      generic (default), unity, unreal or godot: collision names, the wind
-                   channel, OBJ/PLY units (docs/engines.md)
+  --profile P      collision names, the wind channel, OBJ/PLY units (docs/engines.md):
+@PROFILES@  --engine-kit DIR also write the profile's engine import kit (Godot, Unity, Unreal
+                   scripts and shaders; all of them for generic) into DIR (docs/engines.md)
   --collision on|off
                    convex collision hulls (trunk, crown pieces); default: on for unity,
                    unreal and godot, off for generic
@@ -140,7 +141,12 @@ std::string options_help() {
     for (const CrownShapeInfo& c : crown_shapes())
         shapes += "                   " + std::string(c.name) + ": " + std::string(c.help) + "\n";
     put("@CROWN_SHAPES@", shapes);
-    put("@FORMATS@", name_list(format_names()));
+    put("@FORMATS@", format_names());
+    std::string profiles;
+    for (const ProfileInfo& p : engine_profiles())
+        profiles +=
+            "                   " + std::string(p.name) + ": " + std::string(p.summary) + "\n";
+    put("@PROFILES@", profiles);
     return text;
 }
 
@@ -246,8 +252,7 @@ Options parse_options(int argc, char** argv) {
             std::string name = value();
             o.format = format_from_name(name);
             if (!o.format)
-                throw UsageError("--format expects " + name_list(format_names()) + ", not '" +
-                                 name + "'");
+                throw UsageError("--format expects " + format_names() + ", not '" + name + "'");
         } else if (arg == "--shading") {
             std::string name = value();
             if (name != "flat" && name != "smooth")
@@ -264,6 +269,8 @@ Options parse_options(int argc, char** argv) {
             if (state != "on" && state != "off")
                 throw UsageError("--collision expects on or off, not '" + state + "'");
             o.export_options.engine.collision = state == "on";
+        } else if (arg == "--engine-kit") {
+            o.export_options.engine_kit = value();
         } else if (arg == "--palette") {
             o.export_options.engine.palette = true;
         } else if (arg == "--no-uvs") {
@@ -407,8 +414,7 @@ int run_export(const Options& o) {
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
     // The reduction's cost depends on the meshes (their handles): known only now.
-    check_cost(estimate_reduction_cost(tree.trunk, tree.crown, mesh.budget), o.limits,
-               kRaiseLimits);
+    check_cost(estimate_reduction_cost(tree, mesh.budget), o.limits, kRaiseLimits);
 
     // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
     // and a core is often free (the reduction of a big trunk waits for nothing either).
@@ -422,6 +428,7 @@ int run_export(const Options& o) {
             finished = finish_tree(tree, finish);
             ExportOptions export_options = o.export_options;
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
+            export_options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
         [&] { raw_states = part_states(raw); });

@@ -64,6 +64,7 @@ bool closed(const Mesh& m) {
 Mesh meshopt_reduce(const Mesh& m, std::size_t target) {
     Mesh out;
     if (m.triangles.empty()) return out;
+    if (target >= m.triangles.size()) return m;  // nothing to reduce (a prism trunk's share)
     std::vector<unsigned> indices;
     indices.reserve(3 * m.triangles.size());
     for (const auto& t : m.triangles) indices.insert(indices.end(), t.begin(), t.end());

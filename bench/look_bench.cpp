@@ -19,7 +19,15 @@
 // them are no 2-manifold once welded (tested as soups), their degenerate triangles and
 // the first intersecting pairs (triangle indices into the part).
 //
-// Usage: sylva-bench-look [--budgets 50,200,800,3000] [--lod] [--detail] [TEMPLATE...]
+// With --images DIR, each measured tree's nine views go to DIR/<template>_<budget>.png (and
+// _LOD<i> for further levels), the views side by side: white where both trees cover a
+// pixel, red where only the full-detail tree does (what the game mesh lost), blue where only
+// the game mesh does.
+//
+// Usage: sylva-bench-look [--budgets 50,200,800,3000] [--lod] [--detail] [--images DIR]
+//                         [TEMPLATE...]
+#include <stb/stb_image_write.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -86,6 +94,26 @@ void print_detail(const char* part, const Mesh& mesh, const SelfIntersections& f
     if (found.pairs.size() > 4) std::printf(" ...");
 }
 
+// The nine views side by side, the rows top first: white both, red reference only, blue
+// candidate only.
+void write_comparison(const std::string& path, const Silhouettes& reference,
+                      const Silhouettes& candidate) {
+    const int n = reference.resolution, width = n * kSilhouetteViews;
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * n * 3, 0);
+    for (int v = 0; v < kSilhouetteViews; ++v)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const std::size_t at = static_cast<std::size_t>(y) * n + x;
+                const bool r = reference.views[v][at] != 0, c = candidate.views[v][at] != 0;
+                std::uint8_t* px =
+                    &rgb[(static_cast<std::size_t>(n - 1 - y) * width + v * n + x) * 3];
+                px[0] = r ? 255 : 0;
+                px[1] = r && c ? 255 : 0;
+                px[2] = c ? 255 : 0;
+            }
+    stbi_write_png(path.c_str(), width, n, 3, rgb.data(), width * 3);
+}
+
 // One measured level of one template.
 struct Row {
     std::string name;  // "oak trunk" style labels are made from it
@@ -108,6 +136,7 @@ int main(int argc, char** argv) {
     bench::use_studio_heap();  // as the other benchmarks
     std::vector<std::size_t> budgets = {50, 200, 800, 3000};
     bool lod = false, detail = false;
+    std::string images;
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -117,6 +146,8 @@ int main(int argc, char** argv) {
             lod = true;
         else if (arg == "--detail")
             detail = true;
+        else if (arg == "--images" && i + 1 < argc)
+            images = argv[++i];
         else
             names.push_back(arg);
     }
@@ -180,10 +211,14 @@ int main(int argc, char** argv) {
                 row.crown_fold = 100.0 * concave_fold_share(r.crown);
                 const double folds_ms = measure.lap_ms();
                 const Mesh* parts[] = {&r.trunk, &r.crown, &r.leaves};
-                const SilhouetteScore score =
-                    silhouette_iou(reference, rasterize_silhouettes(parts, frame, resolution));
+                const Silhouettes seen = rasterize_silhouettes(parts, frame, resolution);
+                const SilhouetteScore score = silhouette_iou(reference, seen);
                 const double silhouette_ms = measure.lap_ms();
                 row.iou = score.mean;
+                if (!images.empty())
+                    write_comparison(images + "/" + name + "_" + std::to_string(budgets[k]) +
+                                         (level ? "_LOD" + std::to_string(level) : "") + ".png",
+                                     reference, seen);
                 row.worst_view = *std::min_element(score.views.begin(), score.views.end());
 
                 costs.pairs_ms += pairs_ms;

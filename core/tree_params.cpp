@@ -7,8 +7,15 @@ namespace {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
+constexpr std::string_view kBranchStyles[] = {"auto", "prisms", "surface"};
+constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none"};
 
 }  // namespace
+
+BranchStyle branch_style(const TreeParams& params) {
+    if (params.branch_style != BranchStyle::Automatic) return params.branch_style;
+    return params.joint_blend > 0.0 ? BranchStyle::Surface : BranchStyle::Prisms;
+}
 
 const ParamTable& shared_param_table() {
     using P = TreeParams;
@@ -57,6 +64,14 @@ const ParamTable& shared_param_table() {
         param("crown_lump_triangles", &P::crown_lump_triangles, 10, 1000, GameMesh,
               "game mesh crown as hulls: triangles of the budget per lump (more: fewer, larger "
               "lumps)"),
+        param("branch_style", &P::branch_style, kBranchStyles, GameMesh,
+              "game mesh branches: prisms (a few-sided prism per branch, pointed at the tips), "
+              "surface (the trunk's smooth surface reduced with the crown) or auto (surface when "
+              "joint_blend blends the joints, else prisms)"),
+        param("leaf_style", &P::leaf_style, kLeafStyles, Leaves,
+              "leaves: cards (a game mesh over its leaf budget draws a card per patch of "
+              "foliage), leaves (it keeps some of the tree's own leaves, grown) or none (no "
+              "leaves, the crown alone)"),
         param("age", &P::age, 0, 1, Shape,
               "tree age: 0 a seedling, 1 the mature tree; grows continuously along the branches"),
         param("bend_frequency", &P::bend_frequency, 0.01, 20, Variation,

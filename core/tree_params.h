@@ -17,6 +17,18 @@ namespace sylva {
 enum class CrownBlend { Root = 0, Pasko = 1 };
 // Choices of the `leaf_shape` parameter.
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
+// Choices of the `branch_style` parameter: how a game mesh draws the trunk and branches.
+enum class BranchStyle {
+    Automatic = 0,  // prisms, unless the template blends its joints (joint_blend > 0)
+    Prisms = 1,     // a few-sided prism per branch from the skeleton (tree/branch_prisms.h)
+    Surface = 2,    // the trunk field's surface, meshed and reduced with the crown
+};
+// Choices of the `leaf_style` parameter: how leaves are drawn.
+enum class LeafStyle {
+    Cards = 0,   // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
+    Leaves = 1,  // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
+    None = 2,    // no leaves at all: the crown alone, flat coloured
+};
 
 struct TreeParams {
     int trunk_resolution = 96;     // P_Tres: marching-cubes cells along the longest side
@@ -37,6 +49,8 @@ struct TreeParams {
     int triangle_budget = 800;  // export: trunk + crown reduced to this (0 = no reduction)
     CrownShape crown_shape = CrownShape::Automatic;  // how the game mesh draws the crown
     int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
+    BranchStyle branch_style = BranchStyle::Automatic;  // how the game mesh draws the branches
+    LeafStyle leaf_style = LeafStyle::Cards;            // how the game mesh draws the leaves
     // Variation and age (core/noise.h, core/tree_age.h). The defaults change nothing.
     double age = 1.0;                // 0: a seedling, 1: the mature tree the template describes
     double bend_frequency = 0.5;     // noise cycles per meter along a branch
@@ -49,6 +63,9 @@ struct TreeParams {
 };
 
 class ParamTable;
+
+// The branch style `params` resolve to (never Automatic).
+BranchStyle branch_style(const TreeParams& params);
 
 // The table of the shared parameters above (seed aside: it is not a number a slider or a
 // range can hold, and every reader treats it on its own).

@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/name_list.h"
+#include "export/fbx_writer.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
@@ -19,6 +20,7 @@ const ExportFormat* const kFormats[] = {
     &obj_format,
     &glb_format,
     &ply_format,
+    &fbx_format,
 };
 
 std::string lower(std::string_view text) {
@@ -51,15 +53,6 @@ std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& p
 
 std::span<const ExportFormat* const> export_formats() {
     return kFormats;
-}
-
-std::span<const std::string_view> format_names() {
-    static const std::vector<std::string_view> names = [] {
-        std::vector<std::string_view> out;
-        for (const ExportFormat* f : kFormats) out.push_back(f->name);
-        return out;
-    }();
-    return names;
 }
 
 std::span<const std::string_view> format_extensions() {
@@ -95,12 +88,23 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options,
-                                                   const ExportFormat* format) {
+                                                   const ExportFormat* format,
+                                                   const std::function<void(FileSet&)>& extra) {
     const ExportFormat& chosen = resolve(path, format);
     // Siblings (an .mtl, the other levels) go beside the file a symlink at `path` points to.
     FileSet files;
     chosen.write(files, output_target(path), levels, options);
+    if (extra) extra(files);
     return files.commit();
+}
+
+std::string format_names() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const ExportFormat* f : kFormats) out.push_back(f->name);
+        return out;
+    }();
+    return name_list(names);
 }
 
 }  // namespace sylva

@@ -46,9 +46,16 @@ struct ExportOptions {
     bool ply_binary = true;
     // The model's name: glTF root node, and with _LOD0.. the level nodes of a LOD chain.
     std::string model_name = "tree";
+    // Material names become `<prefix>_<part>` (write_tree() puts it on the parts; empty:
+    // the part names). material_prefix() (export/export_tree.h) makes one per tree, so
+    // trees imported into one engine project do not share materials by name.
+    std::string material_prefix{};
     // The engine whose conventions the export follows (export/engine_profile.h).
     EngineProfile profile = EngineProfile::Generic;
     EngineSettings engine{};  // read by write_tree(), not by the writers
+    // write_tree() also writes the profile's engine import kit here (export/engine_kit.h),
+    // as one transaction with the model; empty: no kit.
+    std::filesystem::path engine_kit{};
     // The palette texture's PNG when the parts' UVs point into it (write_tree() sets it
     // with engine.palette): embedded in a glb, `<stem>_palette.png` beside an OBJ.
     std::vector<std::uint8_t> palette_png{};

@@ -2,19 +2,29 @@
 
 #include <map>
 
+#include "core/data_paths.h"
+#include "core/file_set.h"
 #include "export/collision.h"
+#include "export/engine_kit.h"
 #include "export/palette.h"
 #include "export/part_attributes.h"
 
 namespace sylva {
 
 std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Mesh& leaves,
-                                  const PartColors& colors) {
+                                  const PartColors& colors, std::string_view material_prefix) {
     std::vector<NamedMesh> parts;
     if (!trunk.triangles.empty()) parts.push_back({"trunk", &trunk, colors.trunk, true});
     if (!crown.triangles.empty()) parts.push_back({"crown", &crown, colors.crown, true});
     if (!leaves.triangles.empty()) parts.push_back({"leaves", &leaves, colors.leaves, false});
+    if (!material_prefix.empty())
+        for (NamedMesh& part : parts)
+            part.material = std::string(material_prefix) + "_" + part.name;
     return parts;
+}
+
+std::string material_prefix(std::string_view template_name, std::uint64_t seed) {
+    return safe_file_name(template_name) + "_s" + std::to_string(seed);
 }
 
 SolidParts finest_solids(const Tree& tree, const FinishedTree& finished) {
@@ -53,18 +63,20 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
 }
 
 std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
-                                       const PartColors& colors) {
-    if (finished.levels.empty()) return {tree_parts(tree.trunk, tree.crown, tree.leaves, colors)};
+                                       const PartColors& colors, std::string_view material_prefix) {
+    if (finished.levels.empty())
+        return {tree_parts(tree.trunk, tree.crown, tree.leaves, colors, material_prefix)};
     std::vector<ModelParts> levels;
     for (const ReducedTree& level : finished.levels)
-        levels.push_back(tree_parts(level.trunk, level.crown, level.leaves, colors));
+        levels.push_back(
+            tree_parts(level.trunk, level.crown, level.leaves, colors, material_prefix));
     return levels;
 }
 
 EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const PartColors& colors,
                          const ExportOptions& options) {
     EngineModel model;
-    model.levels = finished_parts(tree, finished, colors);
+    model.levels = finished_parts(tree, finished, colors, options.material_prefix);
     const EngineSettings& engine = options.engine;
     // One frame for all levels, so a level's wind and tint match the next one's.
     const TreeFrame frame = tree_frame(tree.trunk, tree.crown, tree.leaves);
@@ -94,7 +106,8 @@ EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const P
         for (Mesh& hull : collision_hulls(solids.trunk, solids.crown, tree.skeleton)) {
             model.hulls.push_back(std::move(hull));
             const std::string name =
-                collision_name(options.profile, options.model_name, model.hulls.size() - 1);
+                collision_name(options.profile, options.model_name, model.hulls.size() - 1,
+                               model.levels.size() > 1);
             model.levels[0].push_back(
                 {name, &model.hulls.back(), glm::vec3(1.0f), true, nullptr, true});
         }
@@ -109,8 +122,11 @@ std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
                                               const ExportFormat* format) {
     ExportOptions with_palette = options;
     if (options.engine.palette) with_palette.palette_png = palette_png(colors);
+    std::function<void(FileSet&)> kit;
+    if (!options.engine_kit.empty())
+        kit = [&](FileSet& files) { add_engine_kit(files, options.engine_kit, options.profile); };
     return write_lod_chain(path, engine_model(tree, finished, colors, options).levels, with_palette,
-                           format);
+                           format, kit);
 }
 
 }  // namespace sylva

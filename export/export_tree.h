@@ -15,9 +15,15 @@
 namespace sylva {
 
 // The parts as the exporters want them: trunk, crown and leaves with the template's
-// colours, leaves marked open; empty parts left out. The meshes must outlive the result.
+// colours, leaves marked open; empty parts left out; materials `<material_prefix>_<part>`
+// (the part names when the prefix is empty). The meshes must outlive the result.
 std::vector<NamedMesh> tree_parts(const Mesh& trunk, const Mesh& crown, const Mesh& leaves,
-                                  const PartColors& colors);
+                                  const PartColors& colors, std::string_view material_prefix = {});
+
+// The material prefix of one tree: its template's name (made a safe file name) and its
+// seed, `oak_s7`: the same tree always gets the same names, two templates or two seeds
+// never share one.
+std::string material_prefix(std::string_view template_name, std::uint64_t seed);
 
 struct FinishSettings {
     // Trunk + crown triangles and the leaves' own share (TreeBudget); total 0 with no part
@@ -61,13 +67,17 @@ FinishedTree finish_tree(const Tree& tree, const FinishSettings& settings,
 // The parts of each level as the writers want them: trunk, crown and leaves of that level
 // (or the tree's own when not reduced), with the template's colours, named `trunk`,
 // `crown` and `leaves` (a chain's writer adds `_LOD<i>` to node and group names, never to
-// materials). The meshes stay owned by `tree` and `finished`.
+// materials), materials as tree_parts() names them. The meshes stay owned by `tree` and
+// `finished`.
 std::vector<ModelParts> finished_parts(const Tree& tree, const FinishedTree& finished,
-                                       const PartColors& colors);
+                                       const PartColors& colors,
+                                       std::string_view material_prefix = {});
 
 // The finished parts dressed for engines as options.engine and options.profile say: every
 // part with its UVs, tint and wind (export/part_attributes.h), and with collision on, the
-// collision hulls (export/collision.h) in level 0, named for the profile. Owns what the
+// collision hulls (export/collision.h) in level 0, named for the profile after the mesh
+// they belong to (the model, or its `_LOD0` in a chain), materials named with
+// options.material_prefix. Owns what the
 // parts point to (besides the meshes owned by `tree` and `finished`); moving it keeps them.
 struct EngineModel {
     std::vector<ModelParts> levels;
@@ -78,9 +88,9 @@ EngineModel engine_model(const Tree& tree, const FinishedTree& finished, const P
                          const ExportOptions& options);
 
 // Writes engine_model() of the finished tree to `path` (format: given, or from the
-// extension). Returns every
-// file written. Throws InputError for an unknown extension, IoError when a file cannot be
-// written.
+// extension), and with options.engine_kit the profile's import kit there, all in one
+// transaction. Returns every file written. Throws InputError for an unknown extension, IoError when
+// a file cannot be written.
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
                                               const FinishedTree& finished,
                                               const PartColors& colors,

@@ -173,13 +173,22 @@ class GltfBuilder {
             for (std::uint32_t s : v.source) w.push_back(a.wind[s]);
             primitive.attributes["COLOR_1"] = add_normalized<std::uint8_t>(w);
         } else {
+            const ProfileInfo& profile = profile_info(options_.profile);
+            // Unity's importers flip v on every set: written flipped, it arrives as in the
+            // other profiles.
+            auto v_of = [&](float y) { return profile.wind_v_flipped ? 1.0f - y : y; };
             std::vector<glm::vec2> w1, w2;
             for (std::uint32_t s : v.source) {
-                w1.push_back({a.wind[s].x, a.wind[s].y});
-                w2.push_back({a.wind[s].z, a.wind[s].w});
+                w1.push_back({a.wind[s].x, v_of(a.wind[s].y)});
+                w2.push_back({a.wind[s].z, v_of(a.wind[s].w)});
             }
-            primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
-            primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
+            if (profile.wind_as_floats) {
+                primitive.attributes["TEXCOORD_1"] = add_floats(w1);
+                primitive.attributes["TEXCOORD_2"] = add_floats(w2);
+            } else {
+                primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
+                primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
+            }
         }
     }
 
@@ -278,12 +287,13 @@ class GltfBuilder {
         return static_cast<int>(model_.accessors.size()) - 1;
     }
 
-    // One material per part name, shared by every LOD level.
+    // One material per material name, shared by every LOD level.
     int material(const NamedMesh& part) {
-        auto found = materials_.find(part.name);
+        const std::string& name = material_name(part);
+        auto found = materials_.find(name);
         if (found != materials_.end()) return found->second;
         tinygltf::Material m;
-        m.name = part.name;
+        m.name = name;
         m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
         if (!options_.palette_png.empty()) {  // the swatches carry the colour
             m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
@@ -294,7 +304,7 @@ class GltfBuilder {
         m.doubleSided = !part.closed;
         model_.materials.push_back(m);
         const int index = static_cast<int>(model_.materials.size()) - 1;
-        materials_[part.name] = index;
+        materials_[name] = index;
         return index;
     }
 

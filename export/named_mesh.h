@@ -1,6 +1,6 @@
-// A part of a model as the exporters see it: a name, a mesh, a colour, whether it is a
-// closed solid, and optionally what engines want on top (UVs, tints, wind; a collision
-// shape). The writers (OBJ, glTF, PLY) take lists of these.
+// A part of a model as the exporters see it: a name, a mesh, a colour, a material name,
+// whether it is a closed solid, and optionally what engines want on top (UVs, tints, wind; a
+// collision shape). The writers (OBJ, glTF, PLY) take lists of these.
 #pragma once
 
 #include <array>
@@ -41,6 +41,14 @@ struct NamedMesh {
     // A collision shape (a convex hull): written without material, colour or attributes,
     // once per model (not per LOD level), and left out of PLY.
     bool collision = false;
+    // The material's name when it is not the part's: `oak_s1_trunk` for the trunk of one
+    // tree, so two trees imported into one engine project keep two materials.
+    std::string material{};
 };
+
+// The name of the part's material: NamedMesh::material, else the part's name.
+inline const std::string& material_name(const NamedMesh& part) {
+    return part.material.empty() ? part.name : part.material;
+}
 
 }  // namespace sylva

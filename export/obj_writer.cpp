@@ -95,7 +95,7 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
         // distinct corner UV, so seams split no vertex.
         const ShadedMesh shaded = flat ? ShadedMesh{} : smooth_shaded(mesh, options.crease_degrees);
         const std::string group = part.name + std::string(group_suffix);
-        out << "o " << group << "\ng " << group << "\nusemtl " << part.name << "\n"
+        out << "o " << group << "\ng " << group << "\nusemtl " << material_name(part) << "\n"
             << (flat ? "s off\n" : "s 1\n");
         const bool tinted = attributes && !attributes->tint.empty();
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -158,7 +158,7 @@ void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts, std::stri
     std::string line;
     for (const NamedMesh& part : parts) {
         if (!has_triangles(part) || part.collision) continue;
-        out << "\nnewmtl " << part.name << "\n";
+        out << "\nnewmtl " << material_name(part) << "\n";
         out << "Ka 0 0 0\n";
         append_vector(line, "Kd", texture.empty() ? part.color : glm::vec3(1.0f));
         out << line;
@@ -222,8 +222,9 @@ void add_obj_files(FileSet& files, const std::filesystem::path& path,
     for (const auto& level : levels)
         for (const NamedMesh& part : level)
             if (part.mesh && !part.mesh->triangles.empty() && !part.collision &&
-                std::none_of(all_parts.begin(), all_parts.end(),
-                             [&](const NamedMesh& p) { return p.name == part.name; }))
+                std::none_of(all_parts.begin(), all_parts.end(), [&](const NamedMesh& p) {
+                    return material_name(p) == material_name(part);
+                }))
                 all_parts.push_back(part);
     files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
         write_mtl(out, all_parts, texture);

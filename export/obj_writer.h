@@ -29,6 +29,7 @@ void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 // per part `o` and `g` with the part's name + `group_suffix` (`_LOD<i>` in a chain, so
 // engines group the levels), `usemtl` with the part's name (materials are shared by the
 // levels), `v`, `vn` and `f v//vn` lines. Empty parts are left out.
+// Materials are named as material_name() (export/named_mesh.h) says.
 void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
                         const ExportOptions& options, std::string_view mtl_file_name,
                         std::string_view group_suffix = {});

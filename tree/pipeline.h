@@ -17,6 +17,7 @@
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "sdf/sphere_field.h"
+#include "tree/branch_prisms.h"
 
 namespace sylva {
 
@@ -30,8 +31,15 @@ struct Tree {
     std::size_t crown_bridges = 0;
     // Segments a game mesh left out of the trunk because the crown hides them (drop_hidden).
     std::size_t hidden_segments = 0;
+    // A game mesh whose branches are prisms (BranchStyle::Prisms): the branches it may draw,
+    // and `trunk` is every one of them as prisms for the budget (branch_prisms()); a
+    // reduction draws as many as its own budget buys. Empty when the trunk is the field's
+    // surface.
+    BranchAxes branch_axes;
     // The template's crown_shape: how a game mesh draws the crown unless its budget says.
     CrownShape crown_shape = CrownShape::Automatic;
+    // The template's leaf_style: how a game mesh draws the leaves.
+    LeafStyle leaf_style = LeafStyle::Cards;
     // The template's crown_lump_triangles: triangles of the budget per hull.
     std::size_t crown_lump_triangles = 70;
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;

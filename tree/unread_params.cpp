@@ -30,8 +30,10 @@ std::map<std::string, std::string, std::less<>> unread_params(const TreeTemplate
         for (std::string_view key : {"crown_resolution", "crown_blend", "crown_fusion",
                                      "crown_shape", "crown_lump_triangles"})
             mark(key, "crown_mesh is off: the crown is not meshed (its leaves stay)");
-    if (p.triangle_budget == 0)
+    if (p.triangle_budget == 0) {
         mark("crown_shape", "triangle_budget is 0: the game mesh keeps the crown as meshed");
+        mark("branch_style", "triangle_budget is 0: the game mesh keeps the trunk as meshed");
+    }
     if (p.triangle_budget == 0 || crown_shape_info(p.crown_shape).hulls == CrownHulls::Never)
         mark("crown_lump_triangles", "the game mesh draws the crown as blobs, not as lumps");
     if (p.sphere_diameter <= 0.0)

@@ -534,15 +534,14 @@ void view_section(StudioState& state) {
 void profile_combo(EngineProfile& profile) {
     ImGui::SetNextItemWidth(110.0f);
     if (ImGui::BeginCombo("profile", std::string(profile_info(profile).name).c_str())) {
-        for (EngineProfile p : {EngineProfile::Generic, EngineProfile::Unity, EngineProfile::Unreal,
-                                EngineProfile::Godot})
-            if (ImGui::Selectable(std::string(profile_info(p).name).c_str(), p == profile))
-                profile = p;
+        for (const ProfileInfo& p : engine_profiles()) {
+            if (ImGui::Selectable(std::string(p.name).c_str(), p.profile == profile))
+                profile = p.profile;
+            tooltip(std::string(p.summary).c_str());
+        }
         ImGui::EndCombo();
     }
-    tooltip(
-        "collision names, wind channel and OBJ/PLY units for unity, unreal or godot; generic "
-        "writes no collision");
+    tooltip(std::string(profile_info(profile).summary).c_str());
 }
 
 void export_section(StudioState& state) {

@@ -138,6 +138,7 @@ TEST(Pipeline, TheMeshHugsTheSkeleton) {
 TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
     TreeTemplate willow = load_template("willow");
     ASSERT_TRUE(willow.params.drop_hidden);
+    willow.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree kept = generate_tree(willow, game);
@@ -176,7 +177,8 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
 // vertex lies as near that surface or inside a branch, where a piece's base meets its
 // parent. Checked to fail when a group's segments are left out (its branches are lost).
 TEST(Pipeline, AGameMeshTrunkComesInPiecesWithTheSameSurface) {
-    const TreeTemplate bush = load_template("bush");
+    TreeTemplate bush = load_template("bush");
+    bush.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree pieces = generate_tree(bush, game);

@@ -221,6 +221,9 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
     const auto budget = static_cast<std::size_t>(std::max(params.triangle_budget, 0));
     int used = 0, set = 0;
     std::string why = "what it can show";
+    if (key == "trunk_resolution" && budget > 0 && branch_style(params) == BranchStyle::Prisms)
+        return "\nthe game mesh draws its branches as prisms: this meshes the full-detail "
+               "trunk and sets the thinnest branch drawn";
     if (key == "trunk_resolution") {
         used = trunk_resolution_for_budget(params, budget);
         set = params.trunk_resolution;
