@@ -305,13 +305,15 @@ DecimateSettings with_foot(DecimateSettings settings, const Mesh& trunk) {
 }  // namespace
 
 Mesh game_leaves(const Tree& tree, std::size_t budget) {
-    if (tree.leaves.triangles.size() <= budget) return tree.leaves;
+    const bool textured = tree.leaf_style == LeafStyle::Textured;
+    if (tree.leaves.triangles.size() <= budget && !textured) return tree.leaves;
     switch (tree.leaf_style) {
         case LeafStyle::None:
             return {};
         case LeafStyle::Leaves:
             return thin_leaves(tree.leaves, budget);
         case LeafStyle::Cards:
+        case LeafStyle::Textured:
             break;
     }
     LeafCardSettings cards;
