@@ -22,6 +22,7 @@
 #include "infer/rule_inference.h"
 #include "tree/growth.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace {
 
@@ -57,9 +58,9 @@ std::string randomized_grammar(const std::string& grammar, Random& random) {
 
 bool deterministic(const TreeTemplate& t) {
     return t.growth == "lsystem" && t.grammar.find("rand(") == std::string::npos &&
-           t.grammar.find(" : 0.") == std::string::npos && t.params.jitter == 0.0 &&
-           t.params.bend == 0.0 && t.params.width_variation == 0.0 &&
-           t.params.tropism_variation == 0.0;
+           t.grammar.find(" : 0.") == std::string::npos && lsystem_params(t.params).jitter == 0.0 &&
+           lsystem_params(t.params).bend == 0.0 &&
+           lsystem_params(t.params).width_variation == 0.0 && t.params.tropism_variation == 0.0;
 }
 
 ExampleTree as_example(const Skeleton& skeleton, const TreeParams& params) {
@@ -188,7 +189,7 @@ int main(int argc, char** argv) {
     TreeTemplate big = *builtin_templates().front();
     for (const TreeTemplate* b : builtin_templates())
         if (b->name == "honda") big = *b;
-    big.params.generations = 14;
+    big.params.blocks.edit<LSystemParams>().generations = 14;
     const Skeleton skeleton = grow(big);
     const ExampleTree example = as_example(skeleton, big.params);
     double best = 1e9;

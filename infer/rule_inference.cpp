@@ -17,6 +17,7 @@
 #include "infer/skeleton_figures.h"
 #include "tree/growth.h"
 #include "tree/template_file.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -943,7 +944,8 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
                             bool* used_tips) {
     const Skeleton& skeleton = example.skeleton;
     const TreeParams source = example.params.value_or(TreeParams{});
-    const double elasticity = example.params ? source.tropism : 0.0;
+    const LSystemParams& source_lsystem = lsystem_params(source);
+    const double elasticity = example.params ? source_lsystem.tropism : 0.0;
     const Measured m = measure(skeleton, g, elasticity, convention);
     throw_if_cancelled(settings.cancel);
     InferredTemplate result;
@@ -1204,11 +1206,12 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
     tree.mode = TurtleMode::Abop;
     tree.grammar = grammar;
     tree.params = source;
-    tree.params.generations = generations;
-    tree.params.tropism = elasticity;
-    tree.params.jitter = 0.0;
-    tree.params.bend = 0.0;
-    tree.params.width_variation = 0.0;
+    LSystemParams& lsystem = tree.params.blocks.edit<LSystemParams>();
+    lsystem.generations = generations;
+    lsystem.tropism = elasticity;
+    lsystem.jitter = 0.0;
+    lsystem.bend = 0.0;
+    lsystem.width_variation = 0.0;
     tree.params.tropism_variation = 0.0;
     tree.params.age = 1.0;
     const bool have_widths = std::any_of(skeleton.segments.begin(), skeleton.segments.end(),
@@ -1239,7 +1242,7 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         result.generalised.push_back("crown, leaf and meshing parameters carried over");
     }
     for (const std::string& note : example.notes) result.dropped.push_back(note);
-    if (elasticity != 0.0 || source.jitter != 0.0 || source.bend != 0.0)
+    if (elasticity != 0.0 || source_lsystem.jitter != 0.0 || source_lsystem.bend != 0.0)
         result.generalised.push_back("angles are measured against tropism " + num(elasticity) +
                                      "; the example's noise (jitter, bend) is averaged out");
 

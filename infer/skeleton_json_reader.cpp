@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
+#include "tree/parameters.h"
 
 namespace sylva {
 namespace {

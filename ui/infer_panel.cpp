@@ -11,7 +11,7 @@
 #include "core/cancel.h"
 #include "core/errors.h"
 #include "infer/example_tree.h"
-#include "ui/orbit_camera.h"
+#include "ui/state/orbit_camera.h"
 
 namespace sylva::studio {
 namespace {

@@ -22,7 +22,7 @@
 #include "ui/file_dialog.h"
 #include "ui/line_renderer.h"
 #include "ui/panels.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

@@ -18,6 +18,7 @@
 #include "tree/growth.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -42,7 +43,7 @@ TEST(InferReaders, SkeletonJsonReadsBackWhatSylvaWrites) {
     const ExampleTree example = parse_example_tree(skeleton_json(skeleton, tree.params), "h.json");
     ASSERT_EQ(example.skeleton.segments.size(), skeleton.segments.size());
     ASSERT_TRUE(example.params);
-    EXPECT_EQ(example.params->generations, tree.params.generations);
+    EXPECT_EQ(lsystem_params(*example.params).generations, lsystem_params(tree.params).generations);
     for (std::size_t i = 0; i < skeleton.segments.size(); ++i)
         EXPECT_LT(example.skeleton.segments[i].parent, static_cast<int>(i));
 }
