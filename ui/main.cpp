@@ -20,6 +20,7 @@
 #include "ui/mesh_renderer.h"
 #include "ui/panels.h"
 #include "ui/screenshot.h"
+#include "ui/shortcuts.h"
 #include "ui/state/orbit_camera.h"
 #include "ui/state/release_bench.h"
 #include "ui/state/scale_figure.h"
@@ -70,11 +71,7 @@ void remember_glfw_error(int /*code*/, const char* description) {
 }
 
 // Keys pressed since the last frame, with their modifiers, recorded by GLFW's key callback
-// (ImGui's backend chains it): ImGui 1.86 samples key state once per frame, so a tap shorter
-// than a frame would be lost to a shortcut that asked ImGui.
-struct KeyPress {
-    int key, mods;
-};
+// (ImGui's backend chains it); ui/shortcuts.h acts on them.
 std::vector<KeyPress> g_key_presses;
 
 void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
@@ -271,34 +268,6 @@ void handle_camera_input(StudioState& state, float view_height) {
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
 }
 
-// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, Ctrl+S save, F frame, P screenshot,
-// T turntable, F1 the shortcut list, Esc cancel, 0-3 show that LOD level of the game mesh
-// (switching the low-poly view on). While a text field has the keyboard,
-// Ctrl+Z / Ctrl+Y are its own undo of the typing, and F and the digits are text.
-void handle_shortcuts(StudioState& state) {
-    const bool typing = ImGui::GetIO().WantTextInput;
-    for (const KeyPress& press : g_key_presses) {
-        const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
-        if (ctrl && press.key == GLFW_KEY_E) start_export(state);
-        if (typing) continue;
-        if (ctrl && press.key == GLFW_KEY_Z) shift ? redo(state) : undo(state);
-        if (ctrl && press.key == GLFW_KEY_Y) redo(state);
-        if (ctrl && press.key == GLFW_KEY_S) save_template_to_file(state);
-        if (ctrl && press.key == GLFW_KEY_O) request_file_dialog(false);
-        if (!ctrl && press.key == GLFW_KEY_F) state.frame_requested = true;
-        if (!ctrl && press.key == GLFW_KEY_P) state.screenshot_requested = true;
-        if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
-        if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
-        if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
-        for (int level = 0; level < kLodLevels; ++level)
-            if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
-                state.view.low_poly = true;
-                state.view.lod_level = level;
-            }
-    }
-    g_key_presses.clear();
-}
-
 // Frames per second while the window draws continuously (idle, it sleeps between events,
 // and a rate then would only measure the sleep). Smoothed, for the status bar.
 class FrameRate {
@@ -456,6 +425,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                 std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
                     .count(),
                 0.0, timeout);
+        if (state.rules.pending)  // apply typed rules when the pause ends
+            timeout = std::clamp(seconds_until_apply(state, std::chrono::steady_clock::now()), 0.01,
+                                 timeout);
         if (animating)
             glfwPollEvents();
         else
@@ -533,7 +505,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_dialogs(state);  // last: see panels.h
         const bool asking = cost_dialog_open() && !generation_running(state);
         handle_camera_input(state, static_cast<float>(rect.height));
-        handle_shortcuts(state);
+        handle_shortcuts(state, g_key_presses);
+        g_key_presses.clear();
         ImGui::Render();
 
         // Live mode follows every edit; a new generation cancels the stale one. While a slider

@@ -341,7 +341,9 @@ void cost_confirmation(StudioState& state) {
         asked.clear();
         return;
     }
-    if (asked != state.cost_warning) {
+    // Rules applied on a typing pause show the estimate beside the editor instead; and no
+    // dialog takes the keyboard from a text field being typed into.
+    if (asked != state.cost_warning && !state.cost_warning_quiet && !ImGui::GetIO().WantTextInput) {
         asked = state.cost_warning;
         ImGui::OpenPopup(kCostDialog);
     }
@@ -362,7 +364,7 @@ void cost_confirmation(StudioState& state) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Undo the edit")) {
-        undo(state);
+        undo_refused_edit(state);
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -418,6 +420,9 @@ void cost_notice(StudioState& state) {
         state.run_costly = true;
         start_generation(state);
     }
+    ImGui::SameLine();
+    if (ImGui::Button("undo the edit")) undo_refused_edit(state);
+    tooltip("back to the edit before this one; the view frames the tree again");
 }
 
 void rules_section(StudioState& state, RulesEditorState& editor, float height) {
@@ -436,17 +441,33 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
         cost_notice(state);
         return;
     }
-    const TextMark mark{state.error_line, state.error_column};
-    rules_editor("rules", state.tree_template.grammar, mark, editor, height);
-    if (state.error_line > 0) {
-        ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
+    // The editor edits a draft (ui/state/rules_draft.h): it becomes the grammar on a typing
+    // pause or Ctrl+Enter, and only when it parses.
+    sync_rules_draft(state);
+    RulesDraft& draft = state.rules;
+    const bool refused = !draft.error.empty();
+    const TextMark mark = refused ? TextMark{draft.error_line, draft.error_column}
+                                  : TextMark{state.error_line, state.error_column};
+    const bool ctrl_enter = ctrl_enter_in_editor(editor, draft.text);
+    if (rules_editor("rules", draft.text, mark, editor, height))
+        rules_typed(state, std::chrono::steady_clock::now());
+    apply_rules_draft(state, std::chrono::steady_clock::now(), ctrl_enter);
+    if (draft.pending) {
+        ImGui::TextDisabled("typing: applied after a pause, or Ctrl+Enter");
+    } else if (mark.line > 0) {
+        ImGui::TextColored(kErrorColor, "line %d, column %d", mark.line, mark.column);
         ImGui::SameLine();
         if (ImGui::SmallButton("show")) reveal(editor, mark);
         tooltip("put the cursor there");
     }
-    wrapped_text(state.error, true);
-    if (!state.error.empty())
-        ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    if (!draft.pending && refused) {
+        wrapped_text(draft.error, true);
+        ImGui::TextDisabled("(not applied: the tree is of the last rules that parsed)");
+    } else {
+        wrapped_text(state.error, true);
+        if (!state.error.empty())
+            ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    }
     cost_notice(state);
 }
 

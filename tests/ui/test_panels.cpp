@@ -3,6 +3,8 @@
 // dialog of an expensive template: it opens in the studio's first frame, with every panel
 // appearing around it (ImGui 1.86 aborted there with `blocking_modal != NULL`), stays open
 // while another window appears, and its first button starts the held-back job.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -14,6 +16,7 @@
 #include "tree/template_file.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
+#include "ui/shortcuts.h"
 #include "ui/state/studio_state.h"
 
 namespace sylva::studio {
@@ -94,6 +97,72 @@ TEST(StudioPanels, TheCostDialogOpensInTheFirstFrameAndRunsTheJob) {
     EXPECT_FALSE(still_open);
     cancel_generation(state);
     EXPECT_FALSE(frame(state, editor));
+    EXPECT_TRUE(wait_for_generations(state));
+}
+
+// One frame as main draws it, with the keys pressed since the last one.
+void frame_with_keys(StudioState& state, RulesEditorState& editor,
+                     const std::vector<KeyPress>& keys) {
+    ImGui::NewFrame();
+    const PanelLayout layout = panel_layout(1280.0f, 800.0f);
+    draw_tree_panel(state, layout);
+    draw_rules_panel(state, editor, layout);
+    draw_status_bar(state, layout, -1.0f);
+    draw_dialogs(state);
+    handle_shortcuts(state, keys);
+    ImGui::Render();
+}
+
+// Typing ")", "0" and "f" into the rules editor: the keys are text, not the LOD, low-poly and
+// frame shortcuts; the half-typed rule is not applied; Ctrl+Enter applies (here: refuses, as
+// it does not parse, naming the line) and the editor keeps the keyboard.
+TEST(StudioPanels, TypingInTheRulesEditorIsTextNotShortcuts) {
+    HeadlessImGui imgui;
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMap[ImGuiKey_Enter] = GLFW_KEY_ENTER;
+    StudioState state;
+    RulesEditorState editor;
+    load_template_into(state, parse_template_file("name = \"t\"\ngrammar = '''\naxiom: F\n"
+                                                  "F -> F'''\n[params]\ngenerations = 2\n",
+                                                  "t.toml"));
+    const std::string before = state.tree_template.grammar;
+    frame_with_keys(state, editor, {{GLFW_KEY_F, 0}});
+    EXPECT_TRUE(state.frame_requested);  // no field has the keyboard: F frames
+    state.frame_requested = false;
+
+    reveal(editor, TextMark{2, 7});  // the end of "F -> F"
+    frame_with_keys(state, editor, {});
+    frame_with_keys(state, editor, {});
+    ASSERT_TRUE(editor.active);
+    const std::vector<std::pair<char, KeyPress>> keys = {{'F', {GLFW_KEY_F, GLFW_MOD_SHIFT}},
+                                                         {')', {GLFW_KEY_0, GLFW_MOD_SHIFT}},
+                                                         {'0', {GLFW_KEY_0, 0}},
+                                                         {'f', {GLFW_KEY_F, 0}},
+                                                         {'t', {GLFW_KEY_T, 0}}};
+    for (const auto& [c, key] : keys) {
+        io.AddInputCharacter(static_cast<unsigned>(c));
+        frame_with_keys(state, editor, {key});
+    }
+    EXPECT_EQ(state.rules.text, "axiom: F\nF -> FF)0ft");
+    EXPECT_FALSE(state.view.low_poly);
+    EXPECT_EQ(state.view.lod_level, 0);
+    EXPECT_FALSE(state.frame_requested);
+    EXPECT_FALSE(state.view.turntable);
+    EXPECT_EQ(state.tree_template.grammar, before);  // half typed: not applied
+    EXPECT_TRUE(state.cost_warning.empty());
+
+    io.KeyCtrl = true;
+    io.KeysDown[GLFW_KEY_ENTER] = true;
+    frame_with_keys(state, editor, {{GLFW_KEY_ENTER, GLFW_MOD_CONTROL}});
+    io.KeyCtrl = false;
+    io.KeysDown[GLFW_KEY_ENTER] = false;
+    frame_with_keys(state, editor, {});
+    frame_with_keys(state, editor, {});
+    EXPECT_FALSE(state.rules.pending);
+    EXPECT_EQ(state.rules.error_line, 2);  // refused: ")" does not parse
+    EXPECT_EQ(state.tree_template.grammar, before);
+    EXPECT_TRUE(editor.active);  // still typing
+    cancel_generations(state);
     EXPECT_TRUE(wait_for_generations(state));
 }
 

@@ -482,6 +482,9 @@ void start_generation(StudioState& state) {
         state.cost_warning.clear();  // it was for a value left since
         return;
     }
+    // Rules applied on a typing pause are all this edit changed: a held-back estimate is
+    // shown inline, without the dialog.
+    const bool quiet = state.rules.quiet && state.tree_template.grammar != state.requested.grammar;
     state.requested = state.tree_template;
     state.requested_budget = budget;
     // A job the estimate puts over the limits (a very fine resolution, say) waits for "run
@@ -496,6 +499,7 @@ void start_generation(StudioState& state) {
                              " at least, over the " + limits +
                              " a job may take unasked (the real time is often several times "
                              "the estimate).";
+        state.cost_warning_quiet = quiet;
         return;
     }
     state.run_costly = false;
@@ -646,6 +650,14 @@ void redo(StudioState& state) {
     TreeTemplate next = std::move(state.redo.back());
     state.redo.pop_back();
     apply_edit(state, next);
+}
+
+void undo_refused_edit(StudioState& state) {
+    undo(state);
+    state.cost_warning.clear();
+    state.cost_warning_quiet = false;
+    state.frame_requested = true;
+    state.frame_next_tree = true;
 }
 
 void start_export(StudioState& state) {

@@ -20,6 +20,7 @@
 #include "tree/pipeline.h"
 #include "ui/state/forest_preview_plan.h"
 #include "ui/state/orbit_camera.h"
+#include "ui/state/rules_draft.h"
 
 namespace sylva::studio {
 
@@ -188,6 +189,10 @@ struct StudioState {
     // An edit estimated over the cost limits (tree/cost.h) does not start a generation: the
     // estimate is shown, and "run anyway" sets run_costly and starts it once.
     std::string cost_warning;  // empty: nothing held back
+    // The warning came from rules applied on a typing pause: it is shown beside the editor and
+    // the dialog does not open (it would take the keyboard mid-word) until the user applies
+    // explicitly (Ctrl+Enter).
+    bool cost_warning_quiet = false;
     bool run_costly = false;
     // Where the studio asks first: over the CLI's limits, or over ask_segments skeleton
     // segments. The time estimate is a lower bound that misses most of what many segments
@@ -212,6 +217,9 @@ struct StudioState {
     // Said when a tree arrives whose crown vanished although it should have one (scaled up
     // past the crown grid's cells, say); empty otherwise.
     std::string crown_notice;
+
+    // The rules editor's text, applied to tree_template.grammar on a pause (rules_draft.h).
+    RulesDraft rules;
 
     // Undo history: whole templates, so picking another template can be undone too.
     std::vector<TreeTemplate> undo, redo;
@@ -312,6 +320,10 @@ bool edit_pending(const StudioState& state);
 bool commit_edit(StudioState& state);
 void undo(StudioState& state);
 void redo(StudioState& state);
+
+// "Undo the edit" of an edit held back by its estimated cost: undo(), the warning dropped,
+// and the camera frames the tree on screen now and the tree the undo brings back.
+void undo_refused_edit(StudioState& state);
 
 // Writes the tree on screen to export_settings.path on a worker thread, reduced to the edited
 // template's triangle_budget; the low-poly view's chain is reused when its budget matches.
