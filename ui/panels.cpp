@@ -189,22 +189,27 @@ void template_section(StudioState& state) {
 }
 
 // The template's own knobs: its #define constants that carry a range
-// (ui/state/template_controls.h), its colours, and the way back to it as it was opened.
+// (ui/state/template_controls.h), labelled by their help comment, and its colours.
 void this_tree_section(StudioState& state) {
-    section("This tree");
+    const std::string& query = state.parameter_search;
+    if (!query.empty()) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+    if (!ImGui::CollapsingHeader("This tree", ImGuiTreeNodeFlags_DefaultOpen)) return;
     TreeTemplate& t = state.tree_template;
     const std::vector<GrammarConstant> constants = grammar_constants(t.grammar);
     for (const GrammarConstant& c : constants) {
+        const std::string label = constant_label(c);
+        if (!search_finds(query, label + " " + c.name + " " + c.help)) continue;
+        const std::string id = label + "##define " + c.name;
         bool changed = false;
         double value = c.value;
         if (c.integer) {
             int v = static_cast<int>(c.value);
-            changed = ImGui::SliderInt(c.name.c_str(), &v, static_cast<int>(c.min),
-                                       static_cast<int>(c.max));
+            changed =
+                ImGui::SliderInt(id.c_str(), &v, static_cast<int>(c.min), static_cast<int>(c.max));
             value = v;
         } else {
             float v = static_cast<float>(c.value);
-            changed = ImGui::SliderFloat(c.name.c_str(), &v, static_cast<float>(c.min),
+            changed = ImGui::SliderFloat(id.c_str(), &v, static_cast<float>(c.min),
                                          static_cast<float>(c.max), "%.4g");
             value = round_for_range(v, c.min, c.max);
         }
@@ -214,13 +219,14 @@ void this_tree_section(StudioState& state) {
                               c.line, c.min, c.max);
         if (changed && value != c.value) set_grammar_constant(t.grammar, c.name, value);
     }
-    if (constants.empty() && reads_grammar(t)) {
+    if (constants.empty() && reads_grammar(t) && query.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
             "No constants with a range in the rules. A #define with \"# [min, max] help\" "
             "after its value becomes a slider here, e.g.  #define a 34  # [10, 60] fork angle");
         ImGui::PopTextWrapPos();
     }
+    if (!search_finds(query, "colours colors bark crown leaves")) return;
     PartColors colors = t.colors;
     const ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float;
     bool recolor = ImGui::ColorEdit3("bark", &colors.trunk.x, flags);
@@ -285,49 +291,71 @@ bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& r
     return changed;
 }
 
+// The registry's parameters under a collapsible header per group (Shape, Branches, ...,
+// core/param_table.h), filtered by the search field; the turtle and width model head Shape,
+// the seed heads Variation.
 void parameter_section(StudioState& state) {
-    section("Parameters");
     TreeTemplate& t = state.tree_template;
-    enum_combo("turtle", t.mode, {"abop", "lptg"},
-               "abop: ABOP's H, L, U turtle; lptg: Heuer's elevation / azimuth turtle");
-    enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
-               "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
-               "pipe: Murray's pipe model from tip_width");
     TreeParams& params = t.params;
-    const std::uint64_t step = 1;
-    ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step);
-    tooltip("the random choices of stochastic rules and rand(); same seed, same tree");
-    ImGui::SameLine();
-    if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
-    tooltip("a new random seed");
-    // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
-    // (crown_merge and drop_hidden act in the full-detail view too: it is meshed for the
-    // template's budget, as the game mesh is.) The rows come by group from the registry.
-    std::optional<ParamGroup> group;
-    for (const ParameterRow& row : parameter_rows(t)) {
-        const ParamInfo& info = *row.info;
-        if (group && *group != info.group) ImGui::Separator();
-        group = info.group;
-        double value = *get_param(params, info.key);
-        const bool disabled = !row.unread.empty();
-        ImGui::BeginDisabled(disabled);
-        const double own = *get_param(state.original.params, info.key);
-        const SliderRange range = slider_range(info.key, std::max(own, value));
-        const bool changed = parameter_widget(info, value, range);
-        ImGui::EndDisabled();
-        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            std::string help(info.help);
-            help += budget_resolution_note(params, info.key);
-            if (disabled)
-                ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
-                                  row.unread.c_str());
-            else if (info.choices.empty())
-                ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(), info.min,
-                                  info.max);
-            else
-                ImGui::SetTooltip("%s", help.c_str());
+    const std::string& query = state.parameter_search;
+    const std::vector<ParameterRow> rows = parameter_rows(t);
+    for (const ParamGroup group : param_groups()) {
+        const std::string title(group_title(group));
+        const bool shape = group == ParamGroup::Shape, variation = group == ParamGroup::Variation;
+        const bool turtle_found =
+            shape && search_finds(query, "turtle abop lptg widths explicit taper pipe Shape");
+        const bool seed_found = variation && search_finds(query, "seed random Variation");
+        std::vector<const ParameterRow*> found;
+        for (const ParameterRow& row : rows)
+            if (row.info->group == group && search_finds(query, parameter_search_text(*row.info)))
+                found.push_back(&row);
+        if (found.empty() && !turtle_found && !seed_found) continue;
+        if (!query.empty()) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+        if (!ImGui::CollapsingHeader(title.c_str(), shape ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+            continue;
+        ImGui::PushID(title.c_str());
+        if (turtle_found) {
+            enum_combo("turtle", t.mode, {"abop", "lptg"},
+                       "abop: ABOP's H, L, U turtle; lptg: Heuer's elevation / azimuth turtle");
+            enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
+                       "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
+                       "pipe: Murray's pipe model from tip_width");
         }
-        if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+        if (seed_found) {
+            const std::uint64_t step = 1;
+            ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step);
+            tooltip("the random choices of stochastic rules and rand(); same seed, same tree");
+            ImGui::SameLine();
+            if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
+            tooltip("a new random seed");
+        }
+        // Parameters this tree's rules and growth never read are shown, greyed, with the
+        // reason. (crown_merge and drop_hidden act in the full-detail view too: it is meshed
+        // for the template's budget, as the game mesh is.)
+        for (const ParameterRow* row : found) {
+            const ParamInfo& info = *row->info;
+            double value = *get_param(params, info.key);
+            const bool disabled = !row->unread.empty();
+            ImGui::BeginDisabled(disabled);
+            const double own = *get_param(state.original.params, info.key);
+            const SliderRange range = slider_range(info.key, std::max(own, value));
+            const bool changed = parameter_widget(info, value, range);
+            ImGui::EndDisabled();
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+                std::string help(info.help);
+                help += budget_resolution_note(params, info.key);
+                if (disabled)
+                    ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
+                                      row->unread.c_str());
+                else if (info.choices.empty())
+                    ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(),
+                                      info.min, info.max);
+                else
+                    ImGui::SetTooltip("%s", help.c_str());
+            }
+            if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+        }
+        ImGui::PopID();
     }
 }
 
@@ -639,6 +667,11 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
     actions_row(state);
     estimate_line(state);
     template_section(state);
+    section("Parameters");
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputTextWithHint("##search", "search parameters (e.g. leaf, angle)",
+                             &state.parameter_search);
+    tooltip("shows the parameters whose name, help or group has every word typed");
     this_tree_section(state);
     parameter_section(state);
     if (!state.crown_notice.empty()) {

@@ -19,8 +19,8 @@ struct StudioState;
 inline constexpr double kRulesPauseSeconds = 0.6;
 
 struct RulesDraft {
-    std::string text;     // what the editor shows, perhaps half typed
-    std::string grammar;  // the edited template's grammar the text last agreed with
+    std::string text;      // what the editor shows, perhaps half typed
+    std::string grammar;   // the edited template's grammar the text last agreed with
     bool pending = false;  // typed since the last apply
     std::chrono::steady_clock::time_point typed_at;  // the last keystroke
     // Why `text` was not applied (the parser's message, 1-based line and column); empty when
@@ -40,10 +40,10 @@ void sync_rules_draft(StudioState& state);
 void rules_typed(StudioState& state, std::chrono::steady_clock::time_point now);
 
 enum class RulesApply {
-    Nothing,   // nothing typed since the last apply
-    Waiting,   // typing has not paused long enough yet
-    Applied,   // the text parsed and is now the edited template's grammar
-    Refused,   // the text does not parse: draft.error says why, the grammar stays
+    Nothing,  // nothing typed since the last apply
+    Waiting,  // typing has not paused long enough yet
+    Applied,  // the text parsed and is now the edited template's grammar
+    Refused,  // the text does not parse: draft.error says why, the grammar stays
 };
 
 // Applies the typed text when typing has paused kRulesPauseSeconds at `now`, or at once when

@@ -234,6 +234,8 @@ struct StudioState {
     std::string export_message;
     bool export_failed = false;
 
+    std::string parameter_search;  // the Tree panel's search field: shows what matches
+
     ViewToggles view;
     OrbitCamera camera;
     bool frame_requested = false;  // frame the tree on screen now ("frame tree", F)
