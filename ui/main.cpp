@@ -450,8 +450,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
             if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
-                state.template_path = file;
-                open_template_file(state);
+                open_template_file(state, file);
             } else {
                 state.file_message = "not a template: " + file + " (drop a .toml, .lsys or .txt)";
                 state.file_failed = true;

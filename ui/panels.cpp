@@ -140,7 +140,7 @@ void template_section(StudioState& state) {
                           ImGuiComboFlags_HeightLargest)) {
         for (const TreeTemplate* t : builtin_templates()) {
             if (ImGui::Selectable(t->name.c_str(), t->name == state.tree_template.name))
-                load_template_into(state, *t);
+                switch_template(state, {*t, {}, {}});
             tooltip(t->description.c_str());
         }
         ImGui::EndCombo();
@@ -179,10 +179,7 @@ void template_section(StudioState& state) {
     if (ImGui::BeginCombo("##recent", "recent", ImGuiComboFlags_HeightLarge)) {
         if (state.recent_files.empty()) ImGui::TextDisabled("(no files opened or saved yet)");
         for (const std::string& file : state.recent_files)
-            if (ImGui::Selectable(file.c_str())) {
-                state.template_path = file;
-                open_template_file(state);
-            }
+            if (ImGui::Selectable(file.c_str())) open_template_file(state, file);
         ImGui::EndCombo();
     }
     message_line(state.file_message, state.file_failed);
@@ -398,6 +395,42 @@ void cost_confirmation(StudioState& state) {
     ImGui::SameLine();
     if (ImGui::Button("Not now")) ImGui::CloseCurrentPopup();
     tooltip("keep the edit without running it; \"run anyway\" stays under the rules");
+    ImGui::EndPopup();
+}
+
+constexpr const char* kDiscardDialog = "Discard changes?";
+
+// Asked when another template is picked or opened over unsaved edits (switch_template()):
+// opened here, at the top of the ID stack, and begun every frame while it is open.
+void discard_dialog(StudioState& state) {
+    if (state.pending_switch && !ImGui::IsPopupOpen(kDiscardDialog) &&
+        !ImGui::GetIO().WantTextInput)
+        ImGui::OpenPopup(kDiscardDialog);
+    if (!ImGui::BeginPopupModal(
+            kDiscardDialog, nullptr,
+            ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings))
+        return;
+    if (!state.pending_switch) {  // answered elsewhere
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const TemplateSwitch& next = *state.pending_switch;
+    ImGui::PushTextWrapPos(420.0f);
+    ImGui::Text("\"%s\" has unsaved changes. Open \"%s\" and discard them?",
+                state.tree_template.name.c_str(),
+                next.path.empty() ? next.tree_template.name.c_str() : next.path.c_str());
+    ImGui::TextDisabled("Undo (Ctrl+Z) brings the edits back.");
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("Discard and open")) {
+        confirm_switch(state);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Keep editing")) {
+        cancel_switch(state);
+        ImGui::CloseCurrentPopup();
+    }
     ImGui::EndPopup();
 }
 
@@ -806,13 +839,22 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
 void draw_dialogs(StudioState& state) {
     cost_confirmation(state);
     if (auto path = file_dialog(g_file_dialog, state.recent_files)) {
-        state.template_path = *path;
-        g_file_dialog.saving ? save_template_to_file(state) : open_template_file(state);
+        if (g_file_dialog.saving) {
+            state.template_path = *path;
+            save_template_to_file(state);
+        } else {
+            open_template_file(state, *path);
+        }
     }
+    discard_dialog(state);
 }
 
 bool cost_dialog_open() {
     return ImGui::IsPopupOpen(kCostDialog);
+}
+
+bool discard_dialog_open() {
+    return ImGui::IsPopupOpen(kDiscardDialog);
 }
 
 }  // namespace sylva::studio

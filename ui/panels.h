@@ -39,4 +39,7 @@ void draw_dialogs(StudioState& state);
 // True while the "run anyway?" confirmation is open (after draw_dialogs).
 bool cost_dialog_open();
 
+// True while "discard changes?" is open (after draw_dialogs).
+bool discard_dialog_open();
+
 }  // namespace sylva::studio

@@ -14,6 +14,7 @@
 
 #include "tests/ui/wait_for_generations.h"
 #include "tree/template_file.h"
+#include "tree/template_library.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
 #include "ui/shortcuts.h"
@@ -162,6 +163,35 @@ TEST(StudioPanels, TypingInTheRulesEditorIsTextNotShortcuts) {
     EXPECT_EQ(state.rules.error_line, 2);  // refused: ")" does not parse
     EXPECT_EQ(state.tree_template.grammar, before);
     EXPECT_TRUE(editor.active);  // still typing
+    cancel_generations(state);
+    EXPECT_TRUE(wait_for_generations(state));
+}
+
+// "Discard changes?" is an ImGui modal opened the ImGui way: OpenPopup once, BeginPopupModal
+// every frame; it stays open until answered and closes when the switch is confirmed.
+TEST(StudioPanels, TheDiscardDialogOpensOverUnsavedEditsAndCloses) {
+    HeadlessImGui imgui;
+    StudioState state;
+    RulesEditorState editor;
+    load_template_into(state, load_template("oak"));
+    state.tree_template.params.seed += 1;
+    frame_with_keys(state, editor, {});
+    EXPECT_FALSE(switch_template(state, {load_template("birch"), {}, {}}));
+    for (int i = 0; i < 3; ++i) {
+        ImGui::NewFrame();
+        const PanelLayout layout = panel_layout(1280.0f, 800.0f);
+        draw_tree_panel(state, layout);
+        draw_rules_panel(state, editor, layout);
+        draw_dialogs(state);
+        EXPECT_TRUE(discard_dialog_open());
+        ImGui::Render();
+    }
+    confirm_switch(state);
+    ImGui::NewFrame();
+    draw_dialogs(state);
+    EXPECT_FALSE(discard_dialog_open());
+    ImGui::Render();
+    EXPECT_EQ(state.tree_template.name, "birch");
     cancel_generations(state);
     EXPECT_TRUE(wait_for_generations(state));
 }

@@ -550,6 +550,7 @@ TEST(StudioState, SavedTemplateOpensAsTheSameEdit) {
     EXPECT_FALSE(state.file_failed) << state.file_message;
 
     StudioState other = state_with(load_template("spruce"));
+    other.saved = other.tree_template;  // opened, not edited: no "discard changes?"
     other.template_path = state.template_path;
     open_template_file(other);
     EXPECT_FALSE(other.file_failed) << other.file_message;
@@ -636,6 +637,51 @@ TEST(StudioState, ACostlyEditIsHeldBackWithItsEstimate) {
     EXPECT_TRUE(state.cost_warning.empty());
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_TRUE(state.tree);
+}
+
+// Picking or opening another template over unsaved edits waits for "discard changes?";
+// discarding switches (and frames the new tree), keeping the edits changes nothing.
+TEST(StudioState, SwitchingTemplatesAsksBeforeDroppingUnsavedEdits) {
+    StudioState state;
+    load_template_into(state, load_template("oak"));
+    EXPECT_TRUE(switch_template(state, {load_template("birch"), {}, {}}));  // nothing to lose
+    EXPECT_EQ(state.tree_template.name, "birch");
+    EXPECT_TRUE(state.frame_next_tree);
+
+    state.tree_template.params.seed += 1;  // an edit
+    ASSERT_TRUE(unsaved_changes(state));
+    const std::string path = state.template_path;
+    EXPECT_FALSE(switch_template(state, {load_template("palm"), {}, {}}));
+    EXPECT_EQ(state.tree_template.name, "birch");
+    ASSERT_TRUE(state.pending_switch);
+    cancel_switch(state);
+    EXPECT_FALSE(state.pending_switch);
+    EXPECT_EQ(state.tree_template.name, "birch");
+    EXPECT_TRUE(unsaved_changes(state));
+
+    const auto file = std::filesystem::temp_directory_path() / "sylva_switch_test.toml";
+    {
+        StudioState writer;
+        load_template_into(writer, load_template("pine"));
+        writer.template_path = file.string();
+        save_template_to_file(writer);
+        ASSERT_FALSE(writer.file_failed) << writer.file_message;
+    }
+    open_template_file(state, file.string());
+    EXPECT_EQ(state.tree_template.name, "birch");  // waits
+    EXPECT_EQ(state.template_path, path);          // Save still writes where it did
+    ASSERT_TRUE(state.pending_switch);
+    state.frame_next_tree = false;
+    confirm_switch(state);
+    EXPECT_EQ(state.tree_template.name, "pine");
+    EXPECT_EQ(state.template_path, file.string());
+    EXPECT_FALSE(unsaved_changes(state));
+    EXPECT_TRUE(state.frame_next_tree);  // the camera frames the new tree
+    undo(state);                         // the dropped edits come back
+    EXPECT_EQ(state.tree_template.name, "birch");
+    cancel_generations(state);
+    EXPECT_TRUE(wait_for_generations(state));
+    std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -689,22 +689,52 @@ void save_template_to_file(StudioState& state) {
 }
 
 void open_template_file(StudioState& state) {
+    open_template_file(state, state.template_path);
+}
+
+void open_template_file(StudioState& state, const std::string& path) {
     try {
-        const TreeTemplate opened = load_template(state.template_path);
-        std::string text;
-        if (std::filesystem::path(state.template_path).extension() == ".toml") {
-            text = read_input_file(state.template_path, "template");
-        }
-        load_template_into(state, opened, text);
-        if (text.empty() && std::filesystem::is_regular_file(state.template_path))
-            state.original_text.clear();  // a grammar file: no comments to keep
-        remember_file(state, state.template_path);
-        state.file_message = "opened " + state.template_path;
-        state.file_failed = false;
+        TemplateSwitch next{load_template(path), {}, path};
+        if (std::filesystem::path(path).extension() == ".toml")
+            next.text = read_input_file(path, "template");
+        if (!switch_template(state, std::move(next)))
+            state.file_message = "unsaved changes: discard them to open " + path + "?";
     } catch (const std::exception& e) {
         state.file_message = e.what();
         state.file_failed = true;
     }
+}
+
+bool switch_template(StudioState& state, TemplateSwitch next) {
+    if (unsaved_changes(state)) {
+        state.pending_switch = std::move(next);
+        return false;
+    }
+    state.pending_switch.reset();
+    load_template_into(state, next.tree_template, next.text);
+    if (!next.path.empty()) {
+        // A grammar file: no comments to keep.
+        if (next.text.empty() && std::filesystem::is_regular_file(next.path))
+            state.original_text.clear();
+        state.template_path = next.path;
+        remember_file(state, next.path);
+        state.file_message = "opened " + next.path;
+        state.file_failed = false;
+    }
+    return true;
+}
+
+void confirm_switch(StudioState& state) {
+    if (!state.pending_switch) return;
+    TemplateSwitch next = std::move(*state.pending_switch);
+    state.pending_switch.reset();
+    state.saved = state.tree_template;  // the edits are dropped (undo keeps them)
+    switch_template(state, std::move(next));
+}
+
+void cancel_switch(StudioState& state) {
+    state.pending_switch.reset();
+    state.file_message.clear();
 }
 
 }  // namespace sylva::studio

@@ -158,6 +158,13 @@ struct ExportSettings {
     EngineProfile profile = EngineProfile::Generic;  // export/engine_profile.h
 };
 
+// Another template to edit: a built-in one, or one read from `path`.
+struct TemplateSwitch {
+    TreeTemplate tree_template;
+    std::string text;  // the file text it was read from (a built-in template's own when empty)
+    std::string path;  // the file it was opened from; empty for a built-in template
+};
+
 struct StudioState {
     TreeTemplate tree_template;  // what the panels edit
     // The last good tree, on screen. Shared so an export can read it on a worker without a copy.
@@ -225,6 +232,9 @@ struct StudioState {
     std::vector<TreeTemplate> undo, redo;
     TreeTemplate committed;  // the edit undo would step back from
 
+    // A switch to another template waiting for "discard changes?" (switch_template()).
+    std::optional<TemplateSwitch> pending_switch;
+
     std::string template_path = "my_tree.toml";  // Open / Save as
     std::string file_message;                    // result of the last open or save
     bool file_failed = false;
@@ -265,6 +275,15 @@ std::size_t preview_budget(const StudioState& state);
 // file text it was read from (its comments are kept on save); a built-in template's own.
 void load_template_into(StudioState& state, const TreeTemplate& tree_template,
                         std::string_view text = {});
+
+// Makes `next` the edited template (load_template_into, and for a file its path, the recent
+// files and the message), unless the edited template has unsaved changes: then it waits in
+// pending_switch for the "discard changes?" dialog and false is returned.
+bool switch_template(StudioState& state, TemplateSwitch next);
+// The dialog's answers: switch and drop the edits (undo still brings them back), or keep
+// editing.
+void confirm_switch(StudioState& state);
+void cancel_switch(StudioState& state);
 
 // Back to the template as it was opened or picked: an undoable edit.
 void reset_to_template(StudioState& state);
@@ -333,6 +352,8 @@ void start_export(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.
 void save_template_to_file(StudioState& state);
+// Opening asks first when the edited template has unsaved changes (switch_template()).
 void open_template_file(StudioState& state);
+void open_template_file(StudioState& state, const std::string& path);
 
 }  // namespace sylva::studio
