@@ -128,7 +128,7 @@ void draw_layout_panel(LayoutPanelState& state, float width, float height) {
     if (state.dirty) rebuild(state);
     ImGui::SetNextWindowPos(ImVec2(width * 0.22f, 20.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width * 0.56f, height * 0.85f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Layout (example-based, seed 002)", &state.open)) {
+    if (!ImGui::Begin("Layout (example-based)", &state.open)) {
         ImGui::End();
         return;
     }

@@ -300,7 +300,8 @@ ViewRect view_rect(const PanelLayout& layout) {
     const int left = static_cast<int>(layout.left), right = static_cast<int>(layout.right);
     const int bottom = static_cast<int>(layout.bottom);
     const int width = static_cast<int>(layout.width), height = static_cast<int>(layout.height);
-    return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom, 1)};
+    const int top = static_cast<int>(layout.top);
+    return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom - top, 1)};
 }
 
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
@@ -494,6 +495,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             return 1;
         }
 
+        const bool variants_were_open = strip.open;
+#ifdef SYLVA_HAS_LAYOUT
+        draw_menu_bar(state, strip.open, &layout_panel.open);
+#else
+        draw_menu_bar(state, strip.open, nullptr);
+#endif
+        if (strip.open && !variants_were_open && strip.thumbnails.empty() && !strip.job.valid())
+            start_variants(strip, state.tree_template);
         draw_tree_panel(state, layout);
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());

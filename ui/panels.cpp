@@ -20,6 +20,7 @@
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
 #include "ui/state/colonization_view.h"
+#include "ui/state/forest_export.h"
 #include "ui/state/template_controls.h"
 
 namespace sylva::studio {
@@ -133,6 +134,16 @@ void growth_combo(StudioState& state) {
         tooltip(std::string(method->description).c_str());
 }
 
+// Save: to the file the template came from, or through the dialog when there is none yet.
+void save_or_ask(StudioState& state) {
+    if (std::filesystem::exists(state.template_path)) {
+        save_template_to_file(state);
+    } else {
+        g_file_dialog.saving = true;
+        g_file_dialog.open_requested = true;
+    }
+}
+
 void template_section(StudioState& state) {
     // The unsaved-changes mark (the window's title carries it too, main).
     section(unsaved_changes(state) ? "Template  * unsaved changes" : "Template");
@@ -157,14 +168,7 @@ void template_section(StudioState& state) {
         "open a template file (.toml) or a grammar file (.lsys, .txt: the rules alone); "
         "Ctrl+O, or drop a file on the window");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) {
-        if (std::filesystem::exists(state.template_path)) {
-            save_template_to_file(state);
-        } else {
-            g_file_dialog.saving = true;
-            g_file_dialog.open_requested = true;
-        }
-    }
+    if (ImGui::Button("Save")) save_or_ask(state);
     tooltip(
         ("save to " + state.template_path + " (Ctrl+S); comments of the file are kept").c_str());
     ImGui::SameLine();
@@ -689,12 +693,62 @@ PanelLayout panel_layout(float width, float height) {
     layout.left = std::min(370.0f, 0.3f * width);
     layout.right = std::min(430.0f, 0.34f * width);
     layout.bottom = ImGui::GetFrameHeightWithSpacing() + 8.0f;
+    layout.top = ImGui::GetFrameHeight();  // BeginMainMenuBar's height
     return layout;
 }
 
+void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) request_file_dialog(false);
+        if (ImGui::BeginMenu("Open recent", !state.recent_files.empty())) {
+            for (const std::string& file : state.recent_files)
+                if (ImGui::MenuItem(file.c_str())) open_template_file(state, file);
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) save_or_ask(state);
+        if (ImGui::MenuItem("Save as...")) {
+            g_file_dialog.name = std::filesystem::path(state.template_path).filename().string();
+            request_file_dialog(true);
+        }
+        ImGui::Separator();
+        const bool exporting = state.export_job.valid();
+        if (ImGui::MenuItem("Export tree", "Ctrl+E", false, !exporting && state.tree))
+            start_export(state);
+        tooltip(("the tree on screen to " + state.export_settings.path).c_str());
+        if (ImGui::MenuItem("Export forest", nullptr, false, !exporting))
+            start_forest_export(state);
+        tooltip(("the forest preview's square, planted at the template's budget, to " +
+                 forest_export_path(state.export_settings.path).string() +
+                 " with its placement lists (as sylva forest writes)")
+                    .c_str());
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) state.quit_requested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z")) undo(state);
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, !state.redo.empty())) redo(state);
+        if (ImGui::MenuItem("Reset to the template")) reset_to_template(state);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        ImGui::MenuItem("Variants strip", nullptr, &variants_open);
+        if (layout_open) ImGui::MenuItem("Layout panel", nullptr, layout_open);
+        ImGui::MenuItem("Forest preview", nullptr, &state.view.forest);
+        ImGui::MenuItem("Low poly (game mesh)", nullptr, &state.view.low_poly);
+        ImGui::MenuItem("Wind", nullptr, &state.view.wind);
+        if (ImGui::MenuItem("Frame tree", "F")) state.frame_requested = true;
+        ImGui::Separator();
+        ImGui::MenuItem("Shortcuts", "F1", &state.show_shortcuts);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
 void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(layout.left, layout.height - layout.bottom));
+    ImGui::SetNextWindowPos(ImVec2(0.0f, layout.top));
+    ImGui::SetNextWindowSize(ImVec2(layout.left, layout.height - layout.bottom - layout.top));
     ImGui::Begin("Tree", nullptr, kDocked);
     ImGui::PushItemWidth(-130.0f);
     actions_row(state);
@@ -721,8 +775,8 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
 }
 
 void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(layout.right, layout.height - layout.bottom));
+    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right, layout.top));
+    ImGui::SetNextWindowSize(ImVec2(layout.right, layout.height - layout.bottom - layout.top));
     ImGui::Begin("Rules and export", nullptr, kDocked);
     ImGui::PushItemWidth(-80.0f);
     // The editor takes what the other sections leave.

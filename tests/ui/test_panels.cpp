@@ -19,6 +19,7 @@
 #include "ui/rules_editor.h"
 #include "ui/shortcuts.h"
 #include "ui/state/studio_state.h"
+#include "ui/variants_strip.h"
 
 namespace sylva::studio {
 namespace {
@@ -194,6 +195,20 @@ TEST(StudioPanels, TheDiscardDialogOpensOverUnsavedEditsAndCloses) {
     EXPECT_EQ(state.tree_template.name, "birch");
     cancel_generations(state);
     EXPECT_TRUE(wait_for_generations(state));
+}
+
+// The Variants strip's thumbnails fit side by side in the space between the panels.
+TEST(StudioPanels, VariantThumbnailsFitTheStrip) {
+    for (float width : {300.0f, 480.0f, 900.0f})
+        for (int count : {1, 4, 6, 12}) {
+            const float side = variant_thumbnail_size(width, count, 8.0f);
+            EXPECT_LE(side, static_cast<float>(kThumbnailSize));
+            if (side > 32.0f) {  // the smallest side overflows only where 32 px cannot fit
+                EXPECT_LE(static_cast<float>(count) * side + 8.0f * static_cast<float>(count - 1),
+                          width)
+                    << width << " " << count;
+            }
+        }
 }
 
 }  // namespace
