@@ -630,6 +630,66 @@ void profile_combo(EngineProfile& profile) {
     tooltip(std::string(profile_info(profile).summary).c_str());
 }
 
+// What the export writes, a line per part and a column per LOD level, when the view has the
+// game mesh at the export's budget: trunk and crown share one target, leaves have their own.
+void budget_table(const StudioState& state) {
+    const GeneratedTree* shown = state.tree.get();
+    const std::size_t budget = export_budget(state);
+    if (!shown || !shown->reduced() || shown->budget != budget) {
+        ImGui::PushTextWrapPos(0.0f);
+        if (shown && shown->reduced())
+            ImGui::TextDisabled(
+                "(the view shows the game mesh at the template's %zu; this export reduces to "
+                "%zu)",
+                shown->budget, budget);
+        else
+            ImGui::TextDisabled("(switch low poly on to see the game mesh's triangles)");
+        ImGui::PopTextWrapPos();
+        return;
+    }
+    const int levels =
+        state.export_settings.lod ? static_cast<int>(shown->finished.levels.size()) : 1;
+    if (!ImGui::BeginTable(
+            "budget", levels + 1,
+            ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV))
+        return;
+    ImGui::TableSetupColumn("writes");
+    for (int level = 0; level < levels; ++level)
+        ImGui::TableSetupColumn(levels > 1 ? ("LOD" + std::to_string(level)).c_str()
+                                           : "triangles / target");
+    ImGui::TableHeadersRow();
+    std::vector<std::vector<BudgetLine>> columns;
+    std::string notes;
+    for (int level = 0; level < levels; ++level) {
+        const GameMeshTotals totals = game_mesh_totals(*shown, level);
+        columns.push_back(budget_lines(totals));
+        if (!totals.note.empty())
+            notes += "LOD" + std::to_string(level) + ": " + totals.note + "\n";
+    }
+    for (std::size_t row = 0; row < columns.front().size(); ++row) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(columns.front()[row].part.c_str());
+        for (const std::vector<BudgetLine>& column : columns) {
+            const BudgetLine& line = column[row];
+            ImGui::TableNextColumn();
+            char cell[64];
+            if (line.target == 0)
+                std::snprintf(cell, sizeof cell, "%zu", line.triangles);
+            else if (line.target == SIZE_MAX)
+                std::snprintf(cell, sizeof cell, "%zu / all", line.triangles);
+            else
+                std::snprintf(cell, sizeof cell, "%zu / %zu", line.triangles, line.target);
+            if (line.over)
+                ImGui::TextColored(kWarningColor, "%s over", cell);
+            else
+                ImGui::TextUnformatted(cell);
+            if (line.over && !notes.empty()) tooltip(notes.c_str());
+        }
+    }
+    ImGui::EndTable();
+}
+
 void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
@@ -642,11 +702,21 @@ void export_section(StudioState& state) {
                 e.path = std::filesystem::path(e.path).replace_extension(f->extension).string();
         ImGui::EndCombo();
     }
-    int& budget = state.tree_template.params.triangle_budget;
-    if (ImGui::InputInt("budget", &budget, 100, 1000)) budget = std::max(budget, 0);
+    // The export's own budget: editing it is no edit of the template until "keep" is pressed.
+    const int template_budget = state.tree_template.params.triangle_budget;
+    int budget = static_cast<int>(export_budget(state));
+    if (ImGui::InputInt("budget", &budget, 100, 1000)) e.budget = std::max(budget, 0);
     tooltip(
-        "trunk + crown triangles after reduction (0 keeps every triangle); the "
-        "template's triangle_budget");
+        "trunk + crown triangles of this export after reduction (0 keeps every triangle); "
+        "leaves get as many again. Changing it edits no template.");
+    if (e.budget >= 0 && e.budget != template_budget) {
+        ImGui::TextDisabled("the template's is %d:", template_budget);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("keep in template")) keep_export_budget(state);
+        tooltip("make this the template's triangle_budget (the view and a save follow)");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("use template's")) e.budget = -1;
+    }
     ImGui::Checkbox("LOD chain", &e.lod);
     tooltip("four levels: budget, 1/2, 1/4, 1/8 (one .glb, or a file per level)");
     profile_combo(e.profile);
@@ -654,17 +724,7 @@ void export_section(StudioState& state) {
     ImGui::BeginDisabled(state.export_job.valid() || !state.tree);
     if (ImGui::Button("Export (Ctrl+E)")) start_export(state);
     ImGui::EndDisabled();
-    // What the export writes, level by level, when the view has it at this budget.
-    const GeneratedTree* shown = state.tree.get();
-    if (shown && shown->reduced() && static_cast<int>(shown->budget) == budget) {
-        const int levels = e.lod ? static_cast<int>(shown->finished.levels.size()) : 1;
-        for (int level = 0; level < levels; ++level) {
-            const std::string label = e.lod ? "LOD" + std::to_string(level) + ": " : "writes ";
-            totals_line(label, game_mesh_totals(*shown, level), true);
-        }
-    } else {
-        ImGui::TextDisabled("(switch low poly on to see the game mesh's triangles)");
-    }
+    budget_table(state);
     wrapped_text(state.export_message, state.export_failed);
 }
 

@@ -684,5 +684,51 @@ TEST(StudioState, SwitchingTemplatesAsksBeforeDroppingUnsavedEdits) {
     std::filesystem::remove(file);
 }
 
+// The Export section's budget is the export's: it edits no template (no unsaved mark, no
+// new tree) until "keep in template" makes it the template's budget, as an undoable edit.
+TEST(StudioState, TheExportBudgetIsNoTemplateEditUntilKept) {
+    StudioState state;
+    load_template_into(state, load_template("oak"));
+    cancel_generations(state);
+    const int template_budget = state.tree_template.params.triangle_budget;
+    EXPECT_EQ(export_budget(state), static_cast<std::size_t>(template_budget));
+    state.export_settings.budget = 1500;
+    EXPECT_EQ(export_budget(state), 1500u);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, template_budget);
+    EXPECT_FALSE(unsaved_changes(state));
+    keep_export_budget(state);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, 1500);
+    EXPECT_TRUE(unsaved_changes(state));
+    EXPECT_EQ(state.export_settings.budget, -1);  // follows the template again
+    EXPECT_EQ(export_budget(state), 1500u);
+    undo(state);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, template_budget);
+    cancel_generations(state);
+    EXPECT_TRUE(wait_for_generations(state));
+}
+
+// The budget table: one line per part, trunk and crown against their shared target, leaves
+// against theirs, the total against both; the game mesh of the view adds up.
+TEST(StudioState, TheBudgetTableHasALinePerPart) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const GameMeshTotals totals = game_mesh_totals(*state.tree, 0);
+    const std::vector<BudgetLine> lines = budget_lines(totals);
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[0].part, "trunk");
+    EXPECT_EQ(lines[1].part, "crown");
+    EXPECT_EQ(lines[3].part, "leaves");
+    EXPECT_EQ(lines[4].part, "total");
+    EXPECT_EQ(lines[0].triangles + lines[1].triangles, lines[2].triangles);
+    EXPECT_EQ(lines[2].triangles + lines[3].triangles, lines[4].triangles);
+    EXPECT_EQ(lines[2].target, export_budget(state));
+    EXPECT_EQ(lines[4].target, lines[2].target + lines[3].target);
+    EXPECT_GT(lines[0].triangles, 0u);
+    EXPECT_FALSE(lines[2].over);
+}
+
 }  // namespace
 }  // namespace sylva::studio

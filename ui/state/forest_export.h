@@ -25,7 +25,8 @@ std::filesystem::path forest_export_path(const std::filesystem::path& tree_path)
 std::string export_forest(const TreeTemplate& tree, const ForestPreviewOptions& options,
                           const std::filesystem::path& glb);
 
-// export_forest() of the edited template and the View row's forest options, on a worker
+// export_forest() of the edited template at export_budget() and the View row's forest
+// options, on a worker
 // (state.export_job: one export at a time), to forest_export_path(export_settings.path).
 void start_forest_export(StudioState& state);
 

@@ -652,6 +652,31 @@ void redo(StudioState& state) {
     apply_edit(state, next);
 }
 
+std::size_t export_budget(const StudioState& state) {
+    const int budget = state.export_settings.budget;
+    return static_cast<std::size_t>(
+        std::max(budget < 0 ? state.tree_template.params.triangle_budget : budget, 0));
+}
+
+void keep_export_budget(StudioState& state) {
+    if (state.export_settings.budget < 0) return;
+    commit_edit(state);
+    state.tree_template.params.triangle_budget = state.export_settings.budget;
+    commit_edit(state);
+    state.export_settings.budget = -1;
+}
+
+std::vector<BudgetLine> budget_lines(const GameMeshTotals& t) {
+    const bool every_leaf = t.leaf_budget == SIZE_MAX;
+    return {
+        {"trunk", t.trunk, 0, false},
+        {"crown", t.crown, 0, false},
+        {"trunk + crown", t.trunk + t.crown, t.budget, t.trunk + t.crown > t.budget},
+        {"leaves", t.leaves, t.leaf_budget, t.leaves > t.leaf_budget},
+        {"total", t.total(), every_leaf ? SIZE_MAX : t.budget + t.leaf_budget, t.over_budget},
+    };
+}
+
 void undo_refused_edit(StudioState& state) {
     undo(state);
     state.cost_warning.clear();
@@ -669,8 +694,7 @@ void start_export(StudioState& state) {
     if (state.export_job.valid()) return;  // one export at a time
     state.export_message = "exporting...";
     state.export_failed = false;
-    const auto budget =
-        static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0));
+    const std::size_t budget = export_budget(state);
     state.export_job = std::async(std::launch::async, export_tree, state.tree, state.shown_template,
                                   budget, state.export_settings);
 }

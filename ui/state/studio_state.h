@@ -84,6 +84,17 @@ struct GameMeshTotals {
 };
 // Needs a reduced tree.
 GameMeshTotals game_mesh_totals(const GeneratedTree& generated, int level);
+
+// One line of the budget table: a part's triangles against its target. Trunk and crown
+// share one target, shown on their own "trunk + crown" line; leaves have theirs; the total
+// is the sum of both.
+struct BudgetLine {
+    std::string part;  // "trunk", "crown", "trunk + crown", "leaves", "total"
+    std::size_t triangles = 0;
+    std::size_t target = 0;  // 0: none of its own (trunk, crown); SIZE_MAX: every leaf
+    bool over = false;
+};
+std::vector<BudgetLine> budget_lines(const GameMeshTotals& totals);
 // "trunk 484 + crown 316 + leaves 800 = 1600 triangles (budget 800 + 800 leaves)".
 std::string totals_text(const GameMeshTotals& totals);
 
@@ -151,9 +162,13 @@ struct ViewToggles {
     ForestPreviewOptions forest_options;
 };
 
-// The export's own settings; the triangle budget is the template's `triangle_budget`.
+// The export's own settings, apart from the template's: changing them is no edit of the
+// template (keep_export_budget() makes the budget the template's).
 struct ExportSettings {
     std::string path = "tree.glb";  // the extension picks the format: .obj, .glb, .ply
+    // Trunk + crown triangles an export reduces to (0: every triangle); negative: the edited
+    // template's triangle_budget, whatever template is picked.
+    int budget = -1;
     bool lod = false;
     EngineProfile profile = EngineProfile::Generic;  // export/engine_profile.h
 };
@@ -346,8 +361,16 @@ void redo(StudioState& state);
 // and the camera frames the tree on screen now and the tree the undo brings back.
 void undo_refused_edit(StudioState& state);
 
-// Writes the tree on screen to export_settings.path on a worker thread, reduced to the edited
-// template's triangle_budget; the low-poly view's chain is reused when its budget matches.
+// The trunk + crown triangles an export reduces to: export_settings.budget, or the edited
+// template's triangle_budget when that is negative.
+std::size_t export_budget(const StudioState& state);
+
+// Makes the export's budget the edited template's triangle_budget (an undoable edit that a
+// save writes) and lets the export follow the template again.
+void keep_export_budget(StudioState& state);
+
+// Writes the tree on screen to export_settings.path on a worker thread, reduced to
+// export_budget(); the low-poly view's chain is reused when its budget matches.
 void start_export(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.
