@@ -55,8 +55,14 @@ void message_line(const std::string& text, bool failed) {
     if (!text.empty()) tooltip(text.c_str());
 }
 
-// The studio's own file dialog (ui/file_dialog.h), shared by Open and Save as.
+// The studio's own file dialog (ui/file_dialog.h), shared by Open and Save as; the export
+// path's Browse has one of its own.
 FileDialogState g_file_dialog;
+FileDialogState g_export_dialog{.saving = true,
+                                .what = "export",
+                                .extensions = {".glb", ".obj", ".ply"},
+                                .folder = {},
+                                .name = {}};
 
 void section(const char* title) {
     ImGui::Spacing();
@@ -693,8 +699,29 @@ void budget_table(const StudioState& state) {
 void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
-    ImGui::InputText("path", &e.path);
+    ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize("Browse...").x -
+                         2.0f * ImGui::GetStyle().FramePadding.x -
+                         ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::InputText("##path", &e.path)) state.export_missing_folder.clear();
+    ImGui::PopItemWidth();
     tooltip(("the extension picks the format: " + name_list(format_extensions())).c_str());
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::Button("Browse...")) {
+        const std::filesystem::path path(e.path);
+        std::error_code ec;
+        g_export_dialog.folder = std::filesystem::absolute(path, ec).parent_path().string();
+        g_export_dialog.name = path.filename().string();
+        g_export_dialog.open_requested = true;
+    }
+    tooltip("pick the folder and name to export to");
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("path");
+    if (!state.export_missing_folder.empty()) {
+        ImGui::TextColored(kWarningColor, "%s does not exist.",
+                           state.export_missing_folder.c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("create it and export")) create_export_folder(state);
+    }
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())
@@ -961,6 +988,10 @@ void draw_dialogs(StudioState& state) {
         }
     }
     discard_dialog(state);
+    if (auto path = file_dialog(g_export_dialog, {})) {
+        state.export_settings.path = *path;
+        state.export_missing_folder.clear();
+    }
 }
 
 bool cost_dialog_open() {

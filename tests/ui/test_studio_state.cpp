@@ -730,5 +730,29 @@ TEST(StudioState, TheBudgetTableHasALinePerPart) {
     EXPECT_FALSE(lines[2].over);
 }
 
+// Exporting into a folder that does not exist writes nothing and names the folder; creating
+// it exports, and the message says what was written.
+TEST(StudioState, ExportAsksToCreateAMissingFolder) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_test_missing";
+    std::filesystem::remove_all(dir);
+    StudioState state = state_with(small_tree());
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    state.export_settings.path = (dir / "deeper" / "tree.obj").string();
+    start_export(state);
+    EXPECT_FALSE(state.export_job.valid());
+    EXPECT_EQ(state.export_missing_folder, (dir / "deeper").string());
+    EXPECT_FALSE(std::filesystem::exists(dir));
+    create_export_folder(state);
+    EXPECT_TRUE(state.export_missing_folder.empty());
+    ASSERT_TRUE(state.export_job.valid());
+    state.export_job.wait();
+    poll_jobs(state);
+    EXPECT_FALSE(state.export_failed) << state.export_message;
+    EXPECT_NE(state.export_message.find("tree.obj"), std::string::npos) << state.export_message;
+    EXPECT_TRUE(std::filesystem::exists(dir / "deeper" / "tree.obj"));
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace sylva::studio

@@ -692,11 +692,35 @@ void start_export(StudioState& state) {
         return;
     }
     if (state.export_job.valid()) return;  // one export at a time
+    const std::filesystem::path folder =
+        std::filesystem::path(state.export_settings.path).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec)) {
+        state.export_missing_folder = folder.string();
+        state.export_message = "the folder " + folder.string() + " does not exist";
+        state.export_failed = true;
+        return;
+    }
+    state.export_missing_folder.clear();
     state.export_message = "exporting...";
     state.export_failed = false;
     const std::size_t budget = export_budget(state);
     state.export_job = std::async(std::launch::async, export_tree, state.tree, state.shown_template,
                                   budget, state.export_settings);
+}
+
+void create_export_folder(StudioState& state) {
+    if (state.export_missing_folder.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(state.export_missing_folder, ec);
+    if (ec) {
+        state.export_message =
+            "cannot make the folder " + state.export_missing_folder + ": " + ec.message();
+        state.export_failed = true;
+        return;
+    }
+    state.export_missing_folder.clear();
+    start_export(state);
 }
 
 void save_template_to_file(StudioState& state) {

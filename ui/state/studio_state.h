@@ -256,6 +256,9 @@ struct StudioState {
 
     ExportSettings export_settings;
     std::future<std::string> export_job;  // the export's result message
+    // The folder of export_settings.path when it does not exist: nothing was written, and
+    // the Export section asks to create it (create_export_folder()). Empty otherwise.
+    std::string export_missing_folder;
     std::string export_message;
     bool export_failed = false;
 
@@ -370,8 +373,13 @@ std::size_t export_budget(const StudioState& state);
 void keep_export_budget(StudioState& state);
 
 // Writes the tree on screen to export_settings.path on a worker thread, reduced to
-// export_budget(); the low-poly view's chain is reused when its budget matches.
+// export_budget(); the low-poly view's chain is reused when its budget matches. A path whose
+// folder does not exist writes nothing: export_missing_folder names it, for the panel to ask.
 void start_export(StudioState& state);
+
+// Makes export_missing_folder (and the folders above it) and starts the export it held
+// back; the message names the folder when it cannot be made.
+void create_export_folder(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.
 void save_template_to_file(StudioState& state);
