@@ -11,6 +11,7 @@
 #include "ui/backdrop.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#include "ui/input_queue.h"
 #include "ui/state/colonization_view.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "ui/layout_panel.h"
@@ -429,7 +430,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.rules.pending)  // apply typed rules when the pause ends
             timeout = std::clamp(seconds_until_apply(state, std::chrono::steady_clock::now()), 0.01,
                                  timeout);
-        if (animating)
+        if (animating || input_events_waiting())
             glfwPollEvents();
         else
             glfwWaitEventsTimeout(timeout);
@@ -437,6 +438,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         frame_rate.tick(frame_start, animating);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
+        deliver_input_events(window);  // ui/input_queue.h
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -626,6 +628,7 @@ int main(int argc, char** argv) {
     glfwSetKeyCallback(window, remember_key);  // before ImGui's backend, which chains it
     glfwSetDropCallback(window, remember_drop);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    install_input_queue(window);  // after the backend's callbacks, which it wraps
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     // Loop.

@@ -519,7 +519,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     const bool refused = !draft.error.empty();
     const TextMark mark = refused ? TextMark{draft.error_line, draft.error_column}
                                   : TextMark{state.error_line, state.error_column};
-    const bool ctrl_enter = ctrl_enter_in_editor(editor, draft.text);
+    const bool ctrl_enter = ctrl_enter_in_editor(editor);
     if (rules_editor("rules", draft.text, mark, editor, height))
         rules_typed(state, std::chrono::steady_clock::now());
     apply_rules_draft(state, std::chrono::steady_clock::now(), ctrl_enter);

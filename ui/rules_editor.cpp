@@ -92,18 +92,16 @@ void reveal(RulesEditorState& editor, TextMark mark) {
     editor.select_column = std::max(mark.column, 1);
 }
 
-bool ctrl_enter_in_editor(RulesEditorState& editor, std::string_view text) {
-    const ImGuiIO& io = ImGui::GetIO();
-    const bool pressed = editor.active && io.KeyCtrl &&
-                         (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
-                          ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false));
-    if (pressed && editor.cursor >= 0) {
-        const std::string_view before =
-            text.substr(0, std::min(static_cast<std::size_t>(editor.cursor), text.size()));
-        const std::size_t newline = before.rfind('\n');
-        const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
-        editor.select_line = static_cast<int>(std::count(before.begin(), before.end(), '\n')) + 1;
-        editor.select_column = static_cast<int>(before.size() - line_start) + 1;
+bool ctrl_enter_in_editor(const RulesEditorState& editor) {
+    ImGuiIO& io = ImGui::GetIO();
+    bool pressed = false;
+    for (ImGuiKey key : {ImGuiKey_Enter, ImGuiKey_KeyPadEnter}) {
+        const int index = ImGui::GetKeyIndex(key);
+        if (!editor.active || !io.KeyCtrl || !ImGui::IsKeyPressed(index, false)) continue;
+        // The field would end its editing on it (and lose the characters typed while it
+        // takes the keyboard back): it never sees this press.
+        io.KeysDownDuration[index] = -1.0f;
+        pressed = true;
     }
     return pressed;
 }

@@ -29,8 +29,8 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
 void reveal(RulesEditorState& editor, TextMark mark);
 
 // True when Ctrl+Enter is pressed this frame while the editor has the keyboard. Call before
-// rules_editor(): ImGui ends a multi-line field's editing on Ctrl+Enter, so this also gives
-// the keyboard back to the editor on the next frame, the cursor where it was.
-bool ctrl_enter_in_editor(RulesEditorState& editor, std::string_view text);
+// rules_editor(): the press is taken from ImGui (a multi-line field would end its editing on
+// it), so the editor keeps the keyboard and the cursor.
+bool ctrl_enter_in_editor(const RulesEditorState& editor);
 
 }  // namespace sylva::studio

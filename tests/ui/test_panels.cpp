@@ -15,6 +15,7 @@
 #include "tests/ui/wait_for_generations.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
+#include "ui/input_queue.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
 #include "ui/shortcuts.h"
@@ -156,9 +157,9 @@ TEST(StudioPanels, TypingInTheRulesEditorIsTextNotShortcuts) {
     io.KeyCtrl = true;
     io.KeysDown[GLFW_KEY_ENTER] = true;
     frame_with_keys(state, editor, {{GLFW_KEY_ENTER, GLFW_MOD_CONTROL}});
+    EXPECT_TRUE(editor.active);  // the field never saw the press
     io.KeyCtrl = false;
     io.KeysDown[GLFW_KEY_ENTER] = false;
-    frame_with_keys(state, editor, {});
     frame_with_keys(state, editor, {});
     EXPECT_FALSE(state.rules.pending);
     EXPECT_EQ(state.rules.error_line, 2);  // refused: ")" does not parse
@@ -209,6 +210,43 @@ TEST(StudioPanels, VariantThumbnailsFitTheStrip) {
                     << width << " " << count;
             }
         }
+}
+
+// Quick typing under a slow frame rate: "a", Backspace, "b" and Ctrl+A within one frame
+// reach ImGui over several frames, in order, each key seen down for a frame.
+TEST(StudioPanels, TheInputQueueKeepsQuickKeysInOrder) {
+    auto key = [](int k, int action, int mods = 0) {
+        return InputEvent{InputEvent::Key, k, 0, action, mods, 0};
+    };
+    auto typed = [](char c) { return InputEvent{InputEvent::Char, 0, 0, 0, 0, unsigned(c)}; };
+    std::vector<InputEvent> events = {key(GLFW_KEY_A, GLFW_PRESS),
+                                      typed('a'),
+                                      key(GLFW_KEY_A, GLFW_RELEASE),
+                                      key(GLFW_KEY_BACKSPACE, GLFW_PRESS),
+                                      key(GLFW_KEY_BACKSPACE, GLFW_RELEASE),
+                                      key(GLFW_KEY_B, GLFW_PRESS),
+                                      typed('b'),
+                                      key(GLFW_KEY_B, GLFW_RELEASE),
+                                      key(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS, GLFW_MOD_CONTROL),
+                                      key(GLFW_KEY_A, GLFW_PRESS, GLFW_MOD_CONTROL),
+                                      key(GLFW_KEY_A, GLFW_RELEASE, GLFW_MOD_CONTROL),
+                                      key(GLFW_KEY_LEFT_CONTROL, GLFW_RELEASE)};
+    events.push_back(key(GLFW_KEY_BACKSPACE, GLFW_PRESS));  // Backspace twice
+    events.push_back(key(GLFW_KEY_BACKSPACE, GLFW_RELEASE));
+    events.push_back(key(GLFW_KEY_BACKSPACE, GLFW_PRESS));
+    events.push_back(key(GLFW_KEY_BACKSPACE, GLFW_RELEASE));
+    std::vector<std::size_t> frames;
+    std::span<const InputEvent> left(events);
+    while (!left.empty()) {
+        const std::size_t n = events_for_one_frame(left);
+        ASSERT_GT(n, 0u);
+        frames.push_back(n);
+        left = left.subspan(n);
+    }
+    // 1: A down, 'a'; 2: A up, Backspace down; 3: Backspace up, B down, 'b'; 4: B up, Ctrl
+    // down, A down (with Ctrl); 5: A up, Ctrl up, Backspace down; 6: Backspace up (it goes
+    // down again only in the next frame); 7: down; 8: up.
+    EXPECT_EQ(frames, (std::vector<std::size_t>{2, 2, 3, 3, 3, 1, 1, 1}));
 }
 
 }  // namespace
