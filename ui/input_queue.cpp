@@ -33,7 +33,7 @@ bool editing_key(const InputEvent& e) {
 std::size_t events_for_one_frame(std::span<const InputEvent> events) {
     std::vector<int> pressed;   // keys that went down in this frame
     std::vector<int> released;  // ... and up
-    bool edited = false;       // ... one of them an editing key
+    bool edited = false;        // ... one of them an editing key
     std::size_t n = 0;
     for (const InputEvent& e : events) {
         if (e.kind == InputEvent::Char) {

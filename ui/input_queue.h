@@ -21,7 +21,7 @@ namespace sylva::studio {
 struct InputEvent {
     enum Kind { Key, Char } kind = Key;
     int key = 0, scancode = 0, action = 0, mods = 0;  // Key: GLFW's values
-    unsigned codepoint = 0;                          // Char
+    unsigned codepoint = 0;                           // Char
 };
 
 // How many of `events` (oldest first) one frame takes: at least one when there are any.

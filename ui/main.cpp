@@ -171,7 +171,9 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
 }
 
 // The wind toggle: the shown parts swayed to `seconds` and uploaded in place of the rest.
-void upload_swayed(Viewport& viewport, const GeneratedTree& generated, int level, float seconds) {
+void upload_swayed(Viewport& viewport, const GeneratedTree& generated, int level, float seconds,
+                   const sylva::WindMotion& motion) {
+    viewport.wind.motion = motion;
     if (!viewport.wind.ready) {
         const ShownParts meshes = shown_parts(generated, level);
         const sylva::Tree& tree = generated.tree;
@@ -474,7 +476,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         if (state.tree && state.view.wind) {
             upload_swayed(viewport, *state.tree, uploaded_level,
-                          options.wind_seconds.value_or(static_cast<float>(glfwGetTime())));
+                          options.wind_seconds.value_or(static_cast<float>(glfwGetTime())),
+                          state.view.wind_motion);
             swaying = true;
         } else if (state.tree && swaying) {
             uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);

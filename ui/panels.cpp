@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <glm/trigonometric.hpp>
 #include <optional>
 #include <random>
 #include <string>
@@ -457,6 +459,7 @@ void shortcuts_window(StudioState& state) {
             {"Ctrl+O", "open a template"},
             {"Ctrl+S", "save the template"},
             {"Ctrl+E", "export"},
+            {"Ctrl+Enter", "apply the rules being typed (else after a pause)"},
             {"F", "frame the tree"},
             {"0 - 3", "show that LOD of the game mesh"},
             {"P", "screenshot of the 3D view"},
@@ -577,6 +580,23 @@ void colonization_view_row(ViewToggles& v, int last) {
     ImGui::EndDisabled();
 }
 
+// The wind the view sways the tree in (export/wind_motion.h, docs/wind.glsl's uniforms):
+// how far the top moves and where from. The exported data does not depend on them.
+void wind_row(WindMotion& motion) {
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::SliderFloat("strength", &motion.strength, 0.0f, 2.0f, "%.2f m");
+    tooltip("metres the top of the tree moves in a steady wind (the shader's strength)");
+    ImGui::SameLine();
+    float degrees = glm::degrees(std::atan2(motion.direction.y, motion.direction.x));
+    if (degrees < 0.0f) degrees += 360.0f;
+    ImGui::SetNextItemWidth(110.0f);
+    if (ImGui::SliderFloat("from", &degrees, 0.0f, 360.0f, "%.0f deg")) {
+        const float r = glm::radians(degrees);
+        motion.direction = {std::cos(r), std::sin(r)};
+    }
+    tooltip("the wind's direction on the ground, degrees from +x towards +z");
+}
+
 void view_section(StudioState& state) {
     section("View");
     ViewToggles& v = state.view;
@@ -607,6 +627,7 @@ void view_section(StudioState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
+    if (v.wind) wind_row(v.wind_motion);
     ImGui::Checkbox("scale figure", &v.scale_figure);
     tooltip("a 1.8 m person beside the trunk");
     ImGui::SameLine();

@@ -267,9 +267,16 @@ TEST(TemplateControls, ConstantSlidersAreLabelledByTheirHelp) {
     EXPECT_EQ(constant_label(constants[0]), "fork angle");
     EXPECT_EQ(constant_label(constants[1]), "branches");
     EXPECT_EQ(constant_label(constants[2]), "d");  // no help: the name
-    for (const TreeTemplate* t : builtin_templates())
-        for (const GrammarConstant& c : grammar_constants(t->grammar))
-            EXPECT_GT(constant_label(c).size(), 1u) << t->name << ": #define " << c.name;
+    for (const TreeTemplate* t : builtin_templates()) {
+        std::vector<std::string> labels;
+        for (const GrammarConstant& c : grammar_constants(t->grammar)) {
+            const std::string label = constant_label(c);
+            EXPECT_GT(label.size(), 1u) << t->name << ": #define " << c.name;
+            EXPECT_EQ(std::count(labels.begin(), labels.end(), label), 0)
+                << t->name << ": two sliders read \"" << label << "\"";
+            labels.push_back(label);
+        }
+    }
 }
 
 // Every parameter sits in one of the artist's groups, and the search

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "export/export_tree.h"
+#include "export/wind_motion.h"
 #include "tree/cost.h"
 #include "tree/pipeline.h"
 #include "ui/state/forest_preview_plan.h"
@@ -155,6 +156,7 @@ struct ViewToggles {
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
     bool wind = false;         // sway the tree with its exported wind data (ui/state/wind_view.h)
+    WindMotion wind_motion;    // the wind the view sways it in: strength and direction
     bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
     bool turntable = false;    // the camera circles the tree
     // A small square of forest planted with the shown template (ui/forest_preview.h).

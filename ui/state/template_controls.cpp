@@ -243,7 +243,7 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
 
 std::string constant_label(const GrammarConstant& constant) {
     const std::string_view help = constant.help;
-    const std::string_view label = trim(help.substr(0, help.find_first_of(",(;:")));
+    const std::string_view label = trim(help.substr(0, help.find_first_of(",(;")));
     return label.empty() ? constant.name : std::string(label);
 }
 

@@ -51,9 +51,10 @@ double round_for_range(double value, double min, double max);
 // Thread-safe.
 std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate& tree);
 
-// A #define slider's label: its help comment up to the first comma, colon or parenthesis ("# [10,
-// 60] fork angle, degrees" -> "fork angle"), the constant's name when it has none. The whole
-// help and the name stay in the tooltip.
+// A #define slider's label: its help comment up to the first comma or parenthesis ("# [10,
+// 60] fork angle, degrees" -> "fork angle"; "fronds: angle from the trunk" stays whole, as
+// two constants may share the words before a colon), the constant's name when it has none.
+// The whole help and the name stay in the tooltip.
 std::string constant_label(const GrammarConstant& constant);
 
 // True when the search field's `query` finds the text: every word of it (split at spaces) is
