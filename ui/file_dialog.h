@@ -1,7 +1,7 @@
-// The studio's own file dialog for Open and Save as (and the export's Browse): an ImGui
-// modal that lists a folder's subfolders and the files of its kind (templates: .toml, .lsys,
-// .txt), with a name field and the recent files. No native dialog library: Debian offers none that
-// fits a GLFW + ImGui window without pulling in a toolkit.
+// The studio's own file dialog for Open and Save as: an ImGui modal that lists a folder's
+// subfolders and template files (.toml, .lsys, .txt), with a name field and the recent
+// files. No native dialog library: Debian offers none that fits a GLFW + ImGui window
+// without pulling in a toolkit.
 #pragma once
 
 #include <filesystem>
@@ -24,13 +24,13 @@ std::vector<FolderEntry> list_folder(const std::filesystem::path& folder,
 struct FileDialogState {
     bool open_requested = false;  // set to open the dialog on the next frame
     bool saving = false;          // Save as (a new name may be typed) or Open
-    // What is opened or saved, for the title ("Save template as"); also the popup's ID, so
-    // each kind of dialog is its own.
+    std::string folder;           // the folder shown
+    std::string name;             // the file name field
+    // What it lists and names: template files by default; the first extension is the one a
+    // new name gets. `what` names them in the title ("template", "layout example") and is
+    // the popup's ID, so each kind of dialog is its own.
+    std::vector<std::string> extensions{".toml", ".lsys", ".txt"};
     std::string what = "template";
-    // The files listed; a saved name without an extension gets the first.
-    std::vector<std::string> extensions = {".toml", ".lsys", ".txt"};
-    std::string folder;  // the folder shown
-    std::string name;    // the file name field
 };
 
 // Draws the dialog while it is open; returns the chosen path once, when the user confirms.

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "ui/impostor_view.h"
 #include "ui/panels.h"
 
 namespace sylva::studio {
@@ -28,7 +29,7 @@ void handle_shortcuts(StudioState& state, const std::vector<KeyPress>& presses) 
         if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
         if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
         if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
-        for (int level = 0; level < kLodLevels; ++level)
+        for (int level = 0; level <= kImpostorSlot; ++level)
             if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
                 state.view.low_poly = true;
                 state.view.lod_level = level;

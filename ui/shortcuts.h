@@ -22,9 +22,9 @@ bool keyboard_taken();
 
 // Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, Ctrl+S save, Ctrl+O open, F frame,
 // P screenshot, T turntable, F1 the shortcut list, Esc cancel, 0-3 show that LOD level of the
-// game mesh (switching the low-poly view on). While keyboard_taken(), only Ctrl+E acts:
-// Ctrl+Z / Ctrl+Y are then the field's own undo of the typing, and F, ')' and the digits are
-// text. Call inside a frame, after the panels.
+// game mesh and 4 its impostor (switching the low-poly view on). While keyboard_taken(), only
+// Ctrl+E acts: Ctrl+Z / Ctrl+Y are then the field's own undo of the typing, and F, ')' and the
+// digits are text. Call inside a frame, after the panels.
 void handle_shortcuts(StudioState& state, const std::vector<KeyPress>& presses);
 
 }  // namespace sylva::studio
