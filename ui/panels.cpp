@@ -901,7 +901,7 @@ void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelL
     ImGui::Begin("Rules and export", nullptr, kDocked);
     ImGui::PushItemWidth(-80.0f);
     // The editor takes what the other sections leave.
-    const float below = 18.0f * ImGui::GetFrameHeightWithSpacing();
+    const float below = 24.0f * ImGui::GetFrameHeightWithSpacing();
     rules_section(state, editor, std::max(ImGui::GetContentRegionAvail().y - below, 120.0f));
     view_section(state);
     export_section(state);
