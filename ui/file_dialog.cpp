@@ -33,24 +33,23 @@ std::vector<FolderEntry> list_folder(const fs::path& folder,
 
 std::optional<std::string> file_dialog(FileDialogState& dialog,
                                        const std::vector<std::string>& recent_files) {
-    // One popup id per kind of file, so two dialogs never share one.
-    const std::string title = (dialog.saving ? "Save " + dialog.what + " as###file "
-                                             : "Open " + dialog.what + "###file ") +
-                              dialog.what;
+    const std::string title_text =
+        (dialog.saving ? "Save " + dialog.what + " as###" : "Open " + dialog.what + "###") +
+        dialog.what;
+    const char* title = title_text.c_str();
     if (dialog.open_requested) {
         dialog.open_requested = false;
         std::error_code ec;
         if (dialog.folder.empty() || !fs::is_directory(dialog.folder, ec))
             dialog.folder = fs::current_path(ec).string();
-        ImGui::OpenPopup(title.c_str());
+        ImGui::OpenPopup(title);
     }
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(560.0f, 440.0f), ImGuiCond_Appearing);
     std::optional<std::string> chosen;
-    if (!ImGui::BeginPopupModal(title.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings))
-        return chosen;
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return chosen;
 
     const fs::path folder(dialog.folder);
     if (ImGui::Button("up")) dialog.folder = folder.parent_path().string();
