@@ -11,6 +11,7 @@
 #include "core/file_set.h"
 #include "core/input_file.h"
 #include "core/output_folder.h"
+#include "core/seed.h"
 #include "layout/graph_grammar.h"
 #include "layout/positions.h"
 
@@ -111,7 +112,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
         } else if (a == "--seed") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");
-            if (!whole(a, *v, 0, 9223372036854775807LL, &seed)) return 2;
+            if (!whole(a, *v, 0, static_cast<long long>(kMaxSeed), &seed)) return 2;
         } else if (a == "--steps") {
             const std::string* v = value();
             if (!v) return usage(a + " needs a value");

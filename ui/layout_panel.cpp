@@ -146,7 +146,10 @@ void draw_layout_panel(LayoutPanelState& state, float width, float height) {
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::InputInt("seed", &state.seed)) state.dirty = true;
+    if (ImGui::InputInt("seed", &state.seed)) {
+        state.seed = std::max(state.seed, 0);  // a seed of core/seed.h's range, as the CLI's
+        state.dirty = true;
+    }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     if (ImGui::SliderInt("count", &state.count, 1, 48)) state.dirty = true;
