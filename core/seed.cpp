@@ -11,8 +11,7 @@ std::string seed_range_text() {
 std::optional<std::uint64_t> parse_seed(std::string_view text) {
     std::uint64_t value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-        !is_seed(value))
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !is_seed(value))
         return std::nullopt;
     return value;
 }

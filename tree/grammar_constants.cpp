@@ -104,7 +104,8 @@ std::vector<GrammarDefine> grammar_defines(std::string_view grammar) {
         if (!parse_define_line(line, define)) continue;
         GrammarDefine d;
         d.name = define.name;
-        d.value = plain_number(line.substr(define.value_begin, define.value_end - define.value_begin));
+        d.value =
+            plain_number(line.substr(define.value_begin, define.value_end - define.value_begin));
         parse_range_comment(define.comment, d);
         d.integer = d.value && d.min && whole(*d.value) && whole(*d.min) && whole(*d.max);
         d.line = number;

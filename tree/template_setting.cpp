@@ -31,8 +31,8 @@ bool set_define(TreeTemplate& tree, std::string_view key, double value, std::str
                          number_text(*define->max) + " (the range of its comment), not " +
                          std::string(text));
     if (define->integer && std::floor(value) != value)
-        throw InputError(name + " takes whole numbers from " + number_text(*define->min) +
-                         " to " + number_text(*define->max) + ", not " + std::string(text));
+        throw InputError(name + " takes whole numbers from " + number_text(*define->min) + " to " +
+                         number_text(*define->max) + ", not " + std::string(text));
     set_grammar_define(tree.grammar, key, value);
     return true;
 }

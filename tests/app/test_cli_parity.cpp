@@ -84,8 +84,7 @@ TEST_F(CliParity, EverySeedFlagTakesTheOneRange) {
 // `batch --jitter a=0.5` varies oak's #define a within [20, 75] and lists it in the manifest;
 // a key that cannot be jittered is refused before any folder is made.
 TEST_F(CliParity, BatchJittersGrammarConstants) {
-    const Result r =
-        run("batch -t oak --count 3 --jitter a=0.5 --budget 100 -o " + path("oaks"));
+    const Result r = run("batch -t oak --count 3 --jitter a=0.5 --budget 100 -o " + path("oaks"));
     ASSERT_EQ(r.code, 0) << r.output;
     const std::string manifest = read(dir_ / "oaks" / "manifest.json");
     EXPECT_NE(manifest.find("\"a\""), std::string::npos) << manifest;

@@ -1,12 +1,11 @@
 // The folder an export or a job writes into (core/output_folder.h): what is missing is named
 // before it is made, made with its parents, kept on success and removed on failure.
-#include "core/output_folder.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "core/errors.h"
+#include "core/output_folder.h"
 #include "tests/helpers.h"
 
 namespace {

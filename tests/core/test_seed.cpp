@@ -1,8 +1,8 @@
 // The one seed range (core/seed.h): what parses, what is refused, and that a 64-bit random
 // number made a seed lands inside it.
-#include "core/seed.h"
-
 #include <gtest/gtest.h>
+
+#include "core/seed.h"
 
 namespace {
 

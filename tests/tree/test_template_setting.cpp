@@ -1,8 +1,6 @@
 // A template's #define constants as the command line and species files set them
 // (tree/template_setting.h, tree/grammar_constants.h): held to the comment's range, whole
 // numbers where the range is, the text around the value kept.
-#include "tree/template_setting.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
+#include "tree/template_setting.h"
 
 namespace {
 
@@ -47,7 +46,8 @@ TEST(GrammarConstants, ReadsNameValueRangeAndHelp) {
     EXPECT_FALSE(d[3].min);    // no range comment
     std::string edited = grammar;
     ASSERT_TRUE(set_grammar_define(edited, "a", 60.5));
-    EXPECT_EQ(edited.substr(0, edited.find('\n')), "#define a  60.5      # [20, 75] main limbs, degrees");
+    EXPECT_EQ(edited.substr(0, edited.find('\n')),
+              "#define a  60.5      # [20, 75] main limbs, degrees");
     EXPECT_EQ(edited.substr(edited.find('\n')), grammar.substr(grammar.find('\n')));
     EXPECT_FALSE(set_grammar_define(edited, "zz", 1));
 }
