@@ -177,7 +177,7 @@ ColonizationSettings colonization_settings(const TreeParams& shared) {
     s.influence_radius = static_cast<float>(p.influence_radius);
     s.kill_distance = static_cast<float>(p.kill_distance);
     s.step_size = static_cast<float>(p.step_size);
-    s.tropism = glm::vec3(p.tropism_vector);
+    s.tropism = glm::vec3(shared.tropism_vector);
     if (shared.tropism_variation > 0.0) {
         const std::uint64_t seed = derive_seed(shared.seed, noise_stream::tropism);
         s.tropism_field = [noise =

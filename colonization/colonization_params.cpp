@@ -82,14 +82,6 @@ const ParamTable& colonization_param_table() {
                   "attraction points uniform (random) or halton (low discrepancy)"),
             param("trunk_height", &P::trunk_height, 0, 100, G,
                   "the trunk grows at least this high first, meters"),
-            param("tropism_vector_x", &P::tropism_vector, 0, -2, 2, G,
-                  "tropism T along x, added to each growth direction")
-                .symbol("T"),
-            param("tropism_vector_y", &P::tropism_vector, 1, -2, 2, G,
-                  "tropism T along y (negative: gravity, positive: light)")
-                .symbol("T"),
-            param("tropism_vector_z", &P::tropism_vector, 2, -2, 2, G, "tropism T along z")
-                .symbol("T"),
             param("max_degree", &P::max_degree, 0, 100, G, "successors per node (0 = no limit)")
                 .symbol("max_grad"),
             param("max_depth", &P::max_depth, 0, 1000, G,

@@ -40,14 +40,13 @@ struct ColonizationParams {
     int roots = 1;                    // trees grown from a circle of roots, sharing the points
     double root_spread = 0.5;         // radius of that circle, meters (ignored for one root)
     PointDistribution point_distribution = PointDistribution::Uniform;
-    double trunk_height = 2.0;       // the trunk grows at least this high first
-    glm::dvec3 tropism_vector{0.0};  // T, added to each growth direction (eq. 3.2)
-    int max_degree = 0;              // max_grad: successors per node (0 = no limit)
-    int max_depth = 0;               // max_Z: branch depth (0 = no limit)
-    int max_no_grow = 0;             // max_NG: idle iterations before a node stops
-    bool weighted_growth = false;    // step 2D on the trunk down to D at max_depth
-    double curve_reduction = 1.0;    // eq. 3.6 dot-product threshold (1 = keep all)
-    double angle_smoothing = 0.0;    // successors drawn together (0 = not, 1 = fully)
+    double trunk_height = 2.0;     // the trunk grows at least this high first
+    int max_degree = 0;            // max_grad: successors per node (0 = no limit)
+    int max_depth = 0;             // max_Z: branch depth (0 = no limit)
+    int max_no_grow = 0;           // max_NG: idle iterations before a node stops
+    bool weighted_growth = false;  // step 2D on the trunk down to D at max_depth
+    double curve_reduction = 1.0;  // eq. 3.6 dot-product threshold (1 = keep all)
+    double angle_smoothing = 0.0;  // successors drawn together (0 = not, 1 = fully)
 };
 
 const ParamTable& colonization_param_table();

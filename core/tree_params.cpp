@@ -7,8 +7,9 @@ namespace {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
+constexpr std::string_view kPolygonParts[] = {"leaves", "organs"};
 constexpr std::string_view kBranchStyles[] = {"auto", "prisms", "surface"};
-constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none"};
+constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none", "textured"};
 
 }  // namespace
 
@@ -55,6 +56,9 @@ const ParamTable& shared_param_table() {
               "leaves per cubic meter of crown (0 = none)"),
         param("leaf_size", &P::leaf_size, 0.01, 2, Leaves, "leaf length, meters"),
         param("leaf_shape", &P::leaf_shape, kLeafShapes, Leaves, "the outline of every leaf"),
+        param("polygon_part", &P::polygon_part, kPolygonParts, Leaves,
+              "where the turtle's { } polygons go: leaves (fanned into the leaf part, thinned "
+              "with it) or organs (their own part, coloured by index, with flowers and fruit)"),
         param("triangle_budget", &P::triangle_budget, 0, 10000000, GameMesh,
               "export: trunk + crown reduced to this many triangles (0 = keep every "
               "marching-cubes triangle)"),
@@ -70,10 +74,21 @@ const ParamTable& shared_param_table() {
               "joint_blend blends the joints, else prisms)"),
         param("leaf_style", &P::leaf_style, kLeafStyles, Leaves,
               "leaves: cards (a game mesh over its leaf budget draws a card per patch of "
-              "foliage), leaves (it keeps some of the tree's own leaves, grown) or none (no "
-              "leaves, the crown alone)"),
+              "foliage), leaves (it keeps some of the tree's own leaves, grown), none (no "
+              "leaves, the crown alone) or textured (cards with a texture of leaves, for "
+              "alpha-tested engines)"),
         param("age", &P::age, 0, 1, Shape,
               "tree age: 0 a seedling, 1 the mature tree; grows continuously along the branches"),
+        param("tropism_vector_x", &P::tropism_vector, 0, -2, 2, Shape,
+              "tropism T along x: colonization adds T to each growth direction; the L-system "
+              "turtle bends towards T by `tropism` after each F (T = 0: straight down)")
+            .symbol("T"),
+        param("tropism_vector_y", &P::tropism_vector, 1, -2, 2, Shape,
+              "tropism T along y (negative: gravity, positive: light; see tropism_vector_x)")
+            .symbol("T"),
+        param("tropism_vector_z", &P::tropism_vector, 2, -2, 2, Shape,
+              "tropism T along z (see tropism_vector_x)")
+            .symbol("T"),
         param("bend_frequency", &P::bend_frequency, 0.01, 20, Variation,
               "noise cycles per meter along a branch for bend, width_variation and "
               "tropism_variation (colonization: per meter of space)"),

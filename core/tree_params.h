@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 
 #include "core/crown_shape.h"
 #include "core/param_blocks.h"
@@ -17,6 +18,9 @@ namespace sylva {
 enum class CrownBlend { Root = 0, Pasko = 1 };
 // Choices of the `leaf_shape` parameter.
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
+// Choices of the `polygon_part` parameter: the turtle's { } polygons fanned into the leaves
+// (thinned with them), or into the organs part with their colours (tree/organs.h).
+enum class PolygonPart { Leaves = 0, Organs = 1 };
 // Choices of the `branch_style` parameter: how a game mesh draws the trunk and branches.
 enum class BranchStyle {
     Automatic = 0,  // prisms, unless the template blends its joints (joint_blend > 0)
@@ -25,9 +29,10 @@ enum class BranchStyle {
 };
 // Choices of the `leaf_style` parameter: how leaves are drawn.
 enum class LeafStyle {
-    Cards = 0,   // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
-    Leaves = 1,  // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
-    None = 2,    // no leaves at all: the crown alone, flat coloured
+    Cards = 0,     // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
+    Leaves = 1,    // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
+    None = 2,      // no leaves at all: the crown alone, flat coloured
+    Textured = 3,  // cards, always, with a texture of leaves (export/leaf_atlas.h)
 };
 
 struct TreeParams {
@@ -46,11 +51,15 @@ struct TreeParams {
     double leaf_density = 60.0;  // leaves per cubic meter of crown
     double leaf_size = 0.25;     // leaf length, meters
     LeafShape leaf_shape = LeafShape::Round;
+    PolygonPart polygon_part = PolygonPart::Leaves;  // where the turtle's { } polygons go
     int triangle_budget = 800;  // export: trunk + crown reduced to this (0 = no reduction)
     CrownShape crown_shape = CrownShape::Automatic;  // how the game mesh draws the crown
     int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
     BranchStyle branch_style = BranchStyle::Automatic;  // how the game mesh draws the branches
     LeafStyle leaf_style = LeafStyle::Cards;            // how the game mesh draws the leaves
+    // T: space colonization adds it to each growth direction (Liebemann 2017, eq. 3.2); the
+    // L-system turtle bends towards it (ABOP), towards -Y while it is 0.
+    glm::dvec3 tropism_vector{0.0};
     // Variation and age (core/noise.h, core/tree_age.h). The defaults change nothing.
     double age = 1.0;                // 0: a seedling, 1: the mature tree the template describes
     double bend_frequency = 0.5;     // noise cycles per meter along a branch

@@ -51,6 +51,14 @@ std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& p
     return names;
 }
 
+std::filesystem::path texture_file_name(const std::filesystem::path& path, std::string_view texture,
+                                        std::string_view map) {
+    std::filesystem::path file = path;
+    file.replace_filename(path.stem().string() + "_" + std::string(texture) + "_" +
+                          std::string(map) + ".png");
+    return file;
+}
+
 std::span<const ExportFormat* const> export_formats() {
     return kFormats;
 }
@@ -93,7 +101,13 @@ std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& 
     const ExportFormat& chosen = resolve(path, format);
     // Siblings (an .mtl, the other levels) go beside the file a symlink at `path` points to.
     FileSet files;
-    chosen.write(files, output_target(path), levels, options);
+    const std::filesystem::path target = output_target(path);
+    chosen.write(files, target, levels, options);
+    for (const ExportOptions::Sidecar& sidecar : options.sidecars) {
+        std::filesystem::path file = target;
+        file.replace_filename(target.stem().string() + sidecar.suffix);
+        files.add(file, [&sidecar](std::ostream& out) { out << sidecar.text; });
+    }
     if (extra) extra(files);
     return files.commit();
 }

@@ -7,7 +7,10 @@
 // tint) and the wind in the profile's channel, number type and v direction
 // (export/engine_profile.h); materials are named as material_name() says; collision parts
 // are bare POSITION + indices without material, once under the root; a palette
-// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture.
+// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture. A part with
+// its own textures (NamedMesh::textures: the impostor levels) gets them embedded as its
+// material's baseColorTexture and normalTexture (trilinear, clamped), alphaMode MASK,
+// TANGENTs from its UVs, and their extras JSON on its node.
 #pragma once
 
 #include <filesystem>

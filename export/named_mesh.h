@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -30,6 +31,17 @@ struct PartAttributes {
     std::vector<glm::vec4> wind;
 };
 
+// Images a part's colour comes from (an impostor's atlas, a billboard's views): the part's
+// UVs point into them. Writers embed them (glb) or write them beside the model
+// (texture_file_name() in export/export_options.h) and alpha-test the colour's alpha.
+struct PartTextures {
+    std::string name;                      // "impostor": glTF images impostor_albedo, ...
+    std::vector<std::uint8_t> albedo_png;  // sRGB colour, straight alpha
+    std::vector<std::uint8_t> normal_png;  // tangent-space normals for the UVs (linear); or empty
+    float alpha_cutoff = 0.5f;
+    std::string extras_json;  // a JSON object for the part's glTF node `extras`, or empty
+};
+
 struct NamedMesh {
     std::string name;  // the OBJ group and material, the glTF node, mesh and material
     const Mesh* mesh = nullptr;
@@ -44,6 +56,7 @@ struct NamedMesh {
     // The material's name when it is not the part's: `oak_s1_trunk` for the trunk of one
     // tree, so two trees imported into one engine project keep two materials.
     std::string material{};
+    const PartTextures* textures = nullptr;  // none when null: the colour is `color`
 };
 
 // The name of the part's material: NamedMesh::material, else the part's name.

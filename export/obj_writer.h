@@ -36,9 +36,11 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
 
 // One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
 // baseColorFactor), no specular. With a `texture` (the palette, export/palette.h): Kd 1 1 1
-// and `map_Kd texture`.
+// and `map_Kd texture`. A part with its own textures (PartTextures) gets Kd 1 1 1, map_Kd
+// and map_d on its albedo and `norm` on its normal map, named as texture_file_name() says
+// for a model at `model_path`.
 void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
-               std::string_view texture = {});
+               std::string_view texture = {}, const std::filesystem::path& model_path = {});
 
 // Writes `path` and its material library (`path` with the extension .mtl) as one
 // transaction (core/file_set.h): both or neither. Returns both paths. Throws IoError naming

@@ -58,7 +58,8 @@ std::size_t leaf_budget(const TreeBudget& budget);
 
 // The tree's leaves within `budget` triangles (leaf_budget()): the tree's own where they
 // fit, else as its leaf style draws them: cards (tree/leaf_cards.h), some of its own
-// (tree/leaf_thinning.h) or none. What reduce_tree() and make_lod_chain() give each level.
+// (tree/leaf_thinning.h) or none; textured cards always (their texture is of many leaves).
+// What reduce_tree() and make_lod_chain() give each level.
 Mesh game_leaves(const Tree& tree, std::size_t budget);
 
 struct ReducedTree {

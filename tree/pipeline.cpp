@@ -507,7 +507,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
             out = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
                                  fields.crown_box, leaves);
     }
-    add_polygon_leaves(out, skeleton.polygons);
+    if (p.polygon_part == PolygonPart::Leaves) add_polygon_leaves(out, skeleton.polygons);
     return out;
 }
 
@@ -531,13 +531,15 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     out.crown_shape = tree.params.crown_shape;
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
     out.leaf_style = tree.params.leaf_style;
+    out.leaf_shape = tree.params.leaf_shape;
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     p.trunk_resolution = trunk_resolution_for_budget(p, options.budget);
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
 
     check_extent(out.skeleton);
-    throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
+    out.organs = tree_organs(out.skeleton, p);  // small; an unknown organ fails before meshing
+    throw_if_cancelled(options.cancel);         // each stage below starts only when still wanted
     Stopwatch clock;
     const bool crown_wanted = p.crown_mesh;
     // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in

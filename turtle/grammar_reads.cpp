@@ -26,10 +26,21 @@ std::vector<std::string_view> drawn_texts(std::string_view grammar) {
         if (line.empty() || line.front() == '#') continue;  // comments, #define, #axiom, #rules
         if (const auto hash = line.find('#'); hash != std::string_view::npos)
             line = line.substr(0, hash);
-        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos)
+        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos) {
             line = line.substr(arrow + 2);
-        else if (line.starts_with("axiom:"))
+            // A stochastic rule's weight (": w") is not drawn: cut at the first ':' outside
+            // parentheses.
+            int depth = 0;
+            for (std::size_t i = 0; i < line.size(); ++i) {
+                depth += line[i] == '(' ? 1 : line[i] == ')' ? -1 : 0;
+                if (depth == 0 && line[i] == ':') {
+                    line = line.substr(0, i);
+                    break;
+                }
+            }
+        } else if (line.starts_with("axiom:")) {
             line = line.substr(6);
+        }
         texts.push_back(line);
     }
     return texts;

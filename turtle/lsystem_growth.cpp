@@ -63,8 +63,20 @@ std::vector<UnreadParam> unread(const TreeTemplate& tree, const GrowthContext&) 
         mark("yaw_angle", "every +, -, \\ and / in the rules gives its own angle");
     const bool tropism_unread = tree.mode == TurtleMode::Lptg && !grammar_names(grammar, "tropism");
     if (tropism_unread) mark("tropism", "the lptg turtle (Heuer's) does not bend towards gravity");
-    if ((tropism_unread || p.tropism == 0.0) && !grammar_names(grammar, "tropism"))
+    if ((tropism_unread || p.tropism == 0.0) && !grammar_names(grammar, "tropism")) {
         mark("tropism_variation", "no tropism to vary: set tropism first");
+        // The L-system's tropism vector is where `tropism` bends towards.
+        for (std::string_view key : {"tropism_vector_x", "tropism_vector_y", "tropism_vector_z"})
+            if (!grammar_names(grammar, key)) mark(key, "no tropism to point: set tropism first");
+    }
+    // The noise kind matters where something reads the noise: the rules (noise, fbm,
+    // noise_loop, and the ", noise F" choice all name it) or the turtle's variation.
+    if (!grammar_names(grammar, "noise") && !grammar_names(grammar, "fbm") &&
+        !grammar_names(grammar, "noise_loop") && p.bend == 0.0 && p.width_variation == 0.0 &&
+        (tree.params.tropism_variation == 0.0 || p.tropism == 0.0))
+        mark("noise_kind",
+             "nothing reads the noise: the rules call no noise(), fbm() or noise_loop() and "
+             "bend, width_variation and tropism_variation are 0");
     for (std::string_view key :
          {"trunk_taper", "branch_taper", "tip_width", "pipe_exponent", "branch_width"}) {
         if (grammar_names(grammar, key)) continue;
@@ -127,6 +139,10 @@ TurtleSettings turtle_settings(const TreeTemplate& tree) {
     s.trunk_taper = p.trunk_taper;
     s.branch_taper = p.branch_taper;
     s.elasticity = p.tropism;
+    // ABOP's T: the template's tropism vector, or straight down while it is 0 (the vector
+    // is colonization's too, where 0 means no pull).
+    if (shared.tropism_vector != glm::dvec3(0.0)) s.tropism = shared.tropism_vector;
+    s.noise_kind = p.noise_kind;
     s.pipe_tip_width = shared.tip_width;
     s.pipe_exponent = shared.pipe_exponent;
     s.seed = shared.seed;
@@ -147,6 +163,12 @@ Word derive_word(const TreeTemplate& tree, CancelFlag cancel,
         settings.seed = tree.params.seed;
         settings.cancel = cancel;
         settings.progress = progress;
+        settings.noise_kind = lsystem_params(tree.params).noise_kind;
+        // Rules that choose by noise over position see the turtle the tree is drawn with.
+        const TurtleSettings turtle = turtle_settings(tree);
+        settings.positions = [&turtle](const Word& word, std::vector<glm::vec3>& positions) {
+            turtle_positions(word, turtle, positions);
+        };
         return derive(system, settings);
     });
 }

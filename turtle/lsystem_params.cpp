@@ -1,6 +1,12 @@
 #include "turtle/lsystem_params.h"
 
 namespace sylva {
+namespace {
+
+constexpr std::string_view kNoiseKinds[] = {"gradient", "value_linear", "value_cosine",
+                                            "value_cubic"};
+
+}  // namespace
 
 const ParamTable& lsystem_param_table() {
     using P = LSystemParams;
@@ -19,8 +25,8 @@ const ParamTable& lsystem_param_table() {
             param("yaw_angle", &P::yaw_angle, 0, 360, Shape, "default angle of + - \\ /, degrees")
                 .symbol("P_beta"),
             param("tropism", &P::tropism, -1, 1, Shape,
-                  "elasticity of the bend towards gravity after each F (0 = none, negative "
-                  "bends up)"),
+                  "elasticity of the bend towards gravity (or tropism_vector) after each F (0 = "
+                  "none, negative bends away)"),
             param("branch_width", &P::branch_width, 0.0, 10, Branches,
                   "starting trunk width (diameter), meters")
                 .symbol("P_Bw"),
@@ -37,6 +43,10 @@ const ParamTable& lsystem_param_table() {
                   "branch from the seed"),
             param("width_variation", &P::width_variation, 0, 0.9, Variation,
                   "widths swell and thin by up to this share along each branch (noise)"),
+            param("noise_kind", &P::noise_kind, kNoiseKinds, Variation,
+                  "the noise of noise(), fbm() and noise_loop() in rules and of bend, width and "
+                  "tropism variation: gradient (Perlin) or value noise with linear, cosine or "
+                  "cubic interpolation (Limbach 2004)"),
         });
     return table;
 }

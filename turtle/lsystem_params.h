@@ -4,6 +4,7 @@
 // never reads them.
 #pragma once
 
+#include "core/noise.h"
 #include "core/param_table.h"
 #include "core/tree_params.h"
 
@@ -21,6 +22,7 @@ struct LSystemParams {
     double bend = 0.0;             // degrees per meter of curvature noise along branches
     double jitter = 0.0;           // per-branch angles and lengths times 1 +- jitter
     double width_variation = 0.0;  // widths times 1 + this * noise along the branch
+    NoiseKind noise_kind = NoiseKind::gradient;  // the noise of expressions and variation
 };
 
 const ParamTable& lsystem_param_table();

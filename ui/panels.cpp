@@ -20,6 +20,8 @@
 #include "tree/template_library.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
+#include "ui/impostor_view.h"
+#include "ui/rules_warnings.h"
 #include "ui/state/colonization_view.h"
 #include "ui/state/template_controls.h"
 
@@ -443,6 +445,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     }
     const TextMark mark{state.error_line, state.error_column};
     rules_editor("rules", state.tree_template.grammar, mark, editor, height);
+    rules_warnings(state.tree_template, editor);
     if (state.error_line > 0) {
         ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
         ImGui::SameLine();
@@ -513,11 +516,17 @@ void view_section(StudioState& state) {
     ImGui::SameLine();
     ImGui::BeginDisabled(!v.low_poly);
     ImGui::SetNextItemWidth(90.0f);
-    ImGui::SliderInt("##lod", &v.lod_level, 0, kLodLevels - 1, "LOD %d");
+    ImGui::SliderInt("##lod", &v.lod_level, 0, kImpostorSlot,
+                     v.lod_level == kImpostorSlot ? "impostor" : "LOD %d");
     tooltip(
         "the level of the LOD chain an export with \"LOD chain\" writes: budget, 1/2, 1/4, "
-        "1/8 (keys 0-3)");
+        "1/8 (keys 0-3), then the octahedral impostor of export --impostor (key 4)");
     ImGui::EndDisabled();
+    if (impostor_slot_shown(v)) {  // ui/impostor_view.h
+        ImGui::SameLine();
+        ImGui::Checkbox("tree", &v.impostor_tree);
+        tooltip("show the tree the impostor stands for (LOD 0) in its place, to compare");
+    }
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
     ImGui::Checkbox("scale figure", &v.scale_figure);
@@ -530,6 +539,10 @@ void view_section(StudioState& state) {
     tooltip("saves the 3D view as a PNG in the working folder");
     message_line(state.screenshot_message, false);
     forest_preview_row(state);  // ui/forest_preview.h
+#ifdef SYLVA_HAS_LAYOUT
+    if (ImGui::Button("2D layouts...")) state.layout_requested = true;  // ui/layout_panel.h
+    tooltip("ground plans grown from one drawn example, to plant as a forest");
+#endif
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
@@ -698,7 +711,10 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
         const Tree& t = shown.tree;
         ImGui::Text("%s  ", state.shown_template.name.c_str());
         ImGui::SameLine(0.0f, 0.0f);
-        if (shown.reduced()) {
+        if (shown.reduced() && impostor_slot_shown(state.view)) {
+            ImGui::Text("impostor of LOD0: 2 triangles, 8 x 8 views of 128 px%s",
+                        state.view.impostor_tree ? " (showing LOD0)" : "");
+        } else if (shown.reduced()) {
             const GameMeshTotals totals = game_mesh_totals(shown, state.view.lod_level);
             const std::string label = "game mesh LOD" + std::to_string(totals.level) + ": ";
             totals_line(label, totals, false);

@@ -191,7 +191,8 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
         "crown_fusion",     "joint_blend",      "crown_blend",     "crown_mesh",
         "crown_merge",      "drop_hidden",      "leaf_density",    "leaf_size",
         "leaf_shape",       "triangle_budget",  "crown_shape",     "crown_lump_triangles",
-        "obstacle",         "color_variation",  "branch_style",    "leaf_style"};
+        "obstacle",         "color_variation",  "branch_style",    "leaf_style",
+        "polygon_part"};
     for (const TreeTemplate* t : builtin_templates()) {
         const auto inert = inert_params(*t);
         const Skeleton base = grow(*t);

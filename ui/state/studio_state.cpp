@@ -319,6 +319,7 @@ std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const
     FinishedTree finished = previous.finished;
     for (std::size_t i = 0; i < finished.levels.size(); ++i)
         finished.levels[i].leaves = game_leaves(tree, finished.leaf_budgets[i]);
+    finished.organs = finished_organs(tree, finished.leaf_budgets);  // this tree's, not the last
     return finished;
 }
 
