@@ -4,10 +4,12 @@
 // exports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/seed.h"
 #include "forest/variation.h"
@@ -32,16 +34,29 @@ std::string read(const fs::path& file) {
     return text.str();
 }
 
+// Every command `sylva --help` lists (a line "  sylva NAME ...") answers `NAME --help`.
 TEST_F(CliParity, VersionAndEveryCommandsHelpExitZero) {
     const Result version = run("--version");
     EXPECT_EQ(version.code, 0) << version.output;
     EXPECT_EQ(version.output.rfind("sylva ", 0), 0u) << version.output;
     EXPECT_NE(version.output.find_first_of("0123456789"), std::string::npos) << version.output;
-    for (const std::string command :
-         {"export", "derive", "skeleton", "batch", "forest", "templates", "layout"}) {
-        const Result help = run(command + " --help");
-        EXPECT_EQ(help.code, 0) << command << ": " << help.output;
-        EXPECT_NE(help.output.find("sylva " + command), std::string::npos) << help.output;
+    const Result help = run("--help");
+    ASSERT_EQ(help.code, 0) << help.output;
+    std::vector<std::string> commands;
+    std::istringstream lines(help.output);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("  sylva ", 0) == 0 && line.size() > 8 && line[8] != '-') {
+            const std::string name = line.substr(8, line.find(' ', 8) - 8);
+            if (std::find(commands.begin(), commands.end(), name) == commands.end())
+                commands.push_back(name);
+        }
+    for (const char* known :
+         {"export", "derive", "lint", "skeleton", "batch", "forest", "templates", "layout"})
+        EXPECT_NE(std::find(commands.begin(), commands.end(), known), commands.end()) << known;
+    for (const std::string& command : commands) {
+        const Result usage = run(command + " --help");
+        EXPECT_EQ(usage.code, 0) << command << ": " << usage.output;
+        EXPECT_NE(usage.output.find("sylva " + command), std::string::npos) << usage.output;
     }
 }
 
