@@ -104,8 +104,8 @@ std::vector<std::string> template_names() {
 INSTANTIATE_TEST_SUITE_P(Templates, GameMeshSoundness, ::testing::ValuesIn(template_names()),
                          [](const auto& param_info) { return param_info.param; });
 
-// Issue 11's case: honda at 100 triangles gave a four-triangle trunk turned inside out and
-// a crown of 38 separate tetrahedra.
+// The honda at 100 triangles: a trunk of real rings (not four triangles turned inside out)
+// and a crown of a few pieces (not dozens of separate tetrahedra).
 TEST(GameMesh, HondaAtALowBudgetHasARealTrunkAndAFewCrownPieces) {
     FinishSettings finish;
     finish.budget.total = 100;
