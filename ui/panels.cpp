@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/name_list.h"
+#include "core/seed.h"
 #include "export/export.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
@@ -334,8 +335,12 @@ void parameter_section(StudioState& state) {
         }
         if (seed_found) {
             const std::uint64_t step = 1;
-            ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step);
-            tooltip("the random choices of stochastic rules and rand(); same seed, same tree");
+            // Held to the one seed range (core/seed.h), so a saved template always reopens.
+            if (ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step))
+                params.seed = std::min(params.seed, kMaxSeed);
+            tooltip(
+                "the random choices of stochastic rules and rand(); same seed, same tree "
+                "(0 to 2^53 - 1)");
             ImGui::SameLine();
             if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
             tooltip("a new random seed");
