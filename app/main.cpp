@@ -16,6 +16,7 @@
 
 #include "app/forest_cli.h"
 #include "app/impostor_cli.h"
+#include "app/infer_cli.h"
 #include "app/lint_cli.h"
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
@@ -362,6 +363,7 @@ void print_help(std::FILE* to) {
     std::fputs(kHelp, to);
     print_options(to);
     print_forest_help(to);
+    print_infer_help(to);
 }
 
 // `sylva COMMAND --help`: the command's usage lines from kHelp (a line "  sylva COMMAND"
@@ -566,7 +568,8 @@ int run(int argc, char** argv) {
         return kOk;
     }
     // `sylva export --help`: that command's usage (layout prints its own).
-    if (argc >= 3 && asks_for_help(argc, argv) && std::string(argv[1]) != "layout") {
+    if (argc >= 3 && asks_for_help(argc, argv) && std::string(argv[1]) != "layout" &&
+        std::string(argv[1]) != "infer") {
         if (!print_command_help(argv[1], stdout))
             throw UsageError("unknown command '" + std::string(argv[1]) + "'");
         return kOk;
@@ -574,6 +577,7 @@ int run(int argc, char** argv) {
     // The many-tree commands parse their own flags (app/forest_cli.h).
     if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
     if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);
+    if (argc >= 2 && std::string(argv[1]) == "infer") return run_infer_command(argc, argv);
 #ifdef SYLVA_HAS_LAYOUT
     // `sylva layout ...` (app/layout_cli.h) parses its own arguments.
     if (argc >= 2 && std::string(argv[1]) == "layout")

@@ -92,7 +92,11 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
     }
     ImGui::SetNextItemWidth(-1.0f);
     const std::string first = dialog.extensions.empty() ? "" : dialog.extensions.front();
-    const std::string hint = "file name (" + first + ")";
+    std::string hint = "file name (" + first;
+    if (!dialog.saving)
+        for (std::size_t i = 1; i < dialog.extensions.size(); ++i)
+            hint += ", " + dialog.extensions[i];
+    hint += ")";
     const bool entered = ImGui::InputTextWithHint("##name", hint.c_str(), &dialog.name,
                                                   ImGuiInputTextFlags_EnterReturnsTrue);
     const bool can_confirm = !dialog.name.empty();

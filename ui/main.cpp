@@ -18,6 +18,7 @@
 #endif
 #include "ui/forest_preview.h"
 #include "ui/impostor_view.h"
+#include "ui/infer_panel.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/organ_view.h"
@@ -225,9 +226,12 @@ void update_colonization(Viewport& viewport, const StudioState& state, bool new_
     }
 }
 
-// Fits the camera to the tree and lays the ground grid under it.
-void frame_tree(Viewport& viewport, StudioState& state, float aspect) {
+// Fits the camera to the tree (and `also`: the example beside it) and lays the ground grid
+// under it.
+void frame_tree(Viewport& viewport, StudioState& state, float aspect,
+                const std::vector<glm::vec3>& also) {
     std::vector<glm::vec3> points = visible_points(state);
+    points.insert(points.end(), also.begin(), also.end());
     if (points.empty()) return;
     frame_points(state.camera, points, aspect);
     glm::vec3 low = points.front(), high = points.front();
@@ -317,7 +321,7 @@ ViewRect view_rect(const PanelLayout& layout) {
 }
 
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
-                     const ViewRect& rect, const ForestPreview& forest) {
+                     const ViewRect& rect, const ForestPreview& forest, const InferPanel& infer) {
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -358,6 +362,7 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         if (show.envelope) viewport.envelope.draw(view, projection, kEnvelopeColor);
         if (show.points) viewport.points.draw_points(view, projection, kPointColor, kPointSize);
     }
+    if (!planted) draw_infer_overlay(infer, view, projection);
 }
 
 // The window's loop; returns main's exit code. In screenshot mode it stops after the
@@ -416,6 +421,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     start_generation(state);
     ForestPreview forest;  // ui/forest_preview.h
     VariantsStrip strip;   // ui/variants_strip.h
+    InferPanel infer;      // ui/infer_panel.h
+    if (options.infer_source) {
+        infer.open = true;
+        if (*options.infer_source == "tree")
+            infer.from_tree_pending = true;
+        else
+            start_infer_from_file(infer, *options.infer_source);
+    }
     if (options.variants > 0) {
         strip.open = true;
         strip.count = options.variants;
@@ -436,7 +449,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // the progress bar at most a tenth of the time: a software renderer (Xvfb's llvmpipe
         // spends both cores on every frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
-                             state.export_job.valid() || forest_preview_running(forest);
+                             state.export_job.valid() || forest_preview_running(forest) ||
+                             infer_running(infer);
         const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
                                state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
                                (bench && bench->phase == ReleaseBench::Drag);
@@ -479,6 +493,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 #endif
             if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
                 open_template_file(state, file);
+            } else if (is_skeleton_file(file)) {
+                infer.open = true;
+                start_infer_from_file(infer, file);
             } else {
                 state.file_message = "not a template: " + file + " (drop a .toml, .lsys or .txt)";
                 state.file_failed = true;
@@ -510,17 +527,22 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         update_colonization(viewport, state, false);
         update_variants_strip(strip);
+        update_infer_panel(infer, state);
         if (update_forest_preview(forest, state) ||
             (state.frame_requested && forest_preview_shown(forest, state))) {
             frame_forest(viewport, state, forest_preview_frame_points(forest), aspect);
             state.frame_requested = false;
         } else if (state.frame_requested && state.tree) {
-            frame_tree(viewport, state, aspect);
+            frame_tree(viewport, state, aspect, infer_overlay_points(infer));
             state.frame_requested = false;
         }
-        if (options.screenshot_path && (!state.error.empty() || !forest.error.empty())) {
+        if (options.screenshot_path &&
+            (!state.error.empty() || !forest.error.empty() || !infer.error.empty())) {
             std::fprintf(stderr, "sylva-studio: %s\n",
-                         (state.error.empty() ? forest.error : state.error).c_str());
+                         (!state.error.empty()    ? state.error
+                          : !forest.error.empty() ? forest.error
+                                                  : infer.error)
+                             .c_str());
             ImGui::EndFrame();
             return 1;
         }
@@ -537,11 +559,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());
         draw_variants_strip(strip, state, layout);
+        draw_infer_panel(infer, state, layout);
 #ifdef SYLVA_HAS_LAYOUT
         if (state.layout_requested) layout_panel.open = true, state.layout_requested = false;
         draw_layout_panel(layout_panel, state, layout);
 #endif
         draw_dialogs(state);  // last: see panels.h
+        draw_infer_dialog(infer);
         const bool asking = cost_dialog_open() && !generation_running(state);
         handle_camera_input(state, static_cast<float>(rect.height));
         handle_shortcuts(state, g_key_presses);
@@ -557,7 +581,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
-        render_viewport(viewport, state, width, height, rect, forest);
+        render_viewport(viewport, state, width, height, rect, forest, infer);
         if (state.screenshot_requested) {
             // The 3D view alone, before the panels are drawn over the frame.
             state.screenshot_requested = false;
@@ -597,7 +621,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             break;
         }
         if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
-            !variants_running(strip) &&
+            !variants_running(strip) && !infer_running(infer) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&
             !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
@@ -609,6 +633,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
     release_variants_strip(strip);
+    release_infer_panel(infer);
     release_forest_preview(forest);
 #ifdef SYLVA_HAS_LAYOUT
     release_layout_panel(layout_panel);

@@ -66,6 +66,10 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
             const std::string_view name = value();
             if (name.empty()) throw UsageError("--layout needs an example name");
             options.layout_example = std::string(name);
+        } else if (arg == "--infer") {
+            const std::string_view source = value();
+            if (source.empty()) throw UsageError("--infer needs 'tree' or a skeleton file");
+            options.infer_source = std::string(source);
         } else if (arg == "--wind") {
             std::string_view text = value();
             float seconds = -1.0f;
@@ -114,7 +118,8 @@ std::string studio_usage() {
            "                    [--no-envelope] [--points]\n"
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
-           "                    [--forest-preview] [--screenshot PATH [--frames N]]\n"
+           "                    [--forest-preview] [--infer tree|SKELETON]\n"
+           "                    [--screenshot PATH [--frames N]]\n"
            "                    [--bench-release KEY=VALUE [--bench-hold MS]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
@@ -134,6 +139,10 @@ std::string studio_usage() {
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
            "                     examples lists them) or a .mesh / .json file; with\n"
            "                     --forest-preview its first variation is planted\n"
+           "  --infer tree|SKELETON\n"
+           "                     derive rules from the tree on screen or a skeleton file\n"
+           "                     (skeleton.json, cylinder CSV, OBJ lines) and load them, with\n"
+           "                     the example beside the regrown tree (docs/infer.md)\n"
            "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"

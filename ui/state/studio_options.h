@@ -23,6 +23,8 @@ struct StudioOptions {
     int variants = 0;
     bool forest_preview = false;  // start with the forest view on (ui/forest_preview.h)
     std::optional<std::string> layout_example;  // open the layout panel on this example
+    // Derive rules (ui/infer_panel.h) from "tree", the tree on screen, or a skeleton file.
+    std::optional<std::string> infer_source;
     // Start with the wind on, frozen at this many seconds (for screenshots); unset: off.
     std::optional<float> wind_seconds;
     // A scripted slider drag (ui/state/release_bench.h): "KEY=VALUE", with the low-poly view on;

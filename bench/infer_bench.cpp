@@ -1,0 +1,206 @@
+// sylva-bench-infer: rules from an example tree (infer/, docs/infer.md) against the targets
+// of the inference: for every built-in template and 5 random parameter sets (the #define
+// sliders drawn in their ranges, a random seed), skeleton -> infer -> regrow; prints each
+// figure's error and whether it meets its target, then the time to infer a tree of about
+// 10,000 segments. Prints figures from one run; asserts nothing.
+//
+//   build/bench/sylva-bench-infer [--dump DIR] [SETS] [TEMPLATE...]
+//
+// --dump writes each run's inferred template to DIR/TEMPLATE-SET-KIND.toml, to read why a
+// run misses.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "core/random.h"
+#include "infer/fit_report.h"
+#include "infer/rule_inference.h"
+#include "tree/growth.h"
+#include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
+
+namespace {
+
+using namespace sylva;
+
+// Draws every "#define NAME VALUE # [lo, hi]" of the grammar within its range.
+std::string randomized_grammar(const std::string& grammar, Random& random) {
+    static const std::regex line(
+        R"((#define\s+\w+\s+)([-+0-9.eE]+)(\s*#\s*\[\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\].*))");
+    std::string out;
+    std::size_t at = 0;
+    while (at < grammar.size()) {
+        std::size_t end = grammar.find('\n', at);
+        if (end == std::string::npos) end = grammar.size();
+        std::string text = grammar.substr(at, end - at);
+        std::smatch m;
+        if (std::regex_match(text, m, line)) {
+            const double lo = std::stod(m[4]), hi = std::stod(m[5]);
+            const bool whole = m[2].str().find('.') == std::string::npos && lo == std::floor(lo) &&
+                               hi == std::floor(hi) && hi - lo < 30;
+            double v = lo + (hi - lo) * random.uniform();
+            if (whole) v = std::round(v);
+            char number[32];
+            std::snprintf(number, sizeof number, "%.4g", v);
+            text = m[1].str() + number + m[3].str();
+        }
+        out += text;
+        if (end < grammar.size()) out += '\n';
+        at = end + 1;
+    }
+    return out;
+}
+
+bool deterministic(const TreeTemplate& t) {
+    return t.growth == "lsystem" && t.grammar.find("rand(") == std::string::npos &&
+           t.grammar.find(" : 0.") == std::string::npos && lsystem_params(t.params).jitter == 0.0 &&
+           lsystem_params(t.params).bend == 0.0 &&
+           lsystem_params(t.params).width_variation == 0.0 && t.params.tropism_variation == 0.0;
+}
+
+ExampleTree as_example(const Skeleton& skeleton, const TreeParams& params) {
+    ExampleTree e;
+    e.skeleton = skeleton;
+    e.params = params;
+    e.format = "skeleton.json";
+    finish_example_tree(e, "bench");
+    return e;
+}
+
+// Every node moved by up to 3 % of its segment's length, in a random direction.
+Skeleton jittered(Skeleton s, std::uint64_t seed) {
+    Random random(seed);
+    std::vector<glm::vec3> offset(s.segments.size());
+    for (std::size_t i = 0; i < s.segments.size(); ++i) {
+        const float length = glm::length(s.segments[i].b - s.segments[i].a);
+        glm::vec3 d(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
+        offset[i] = d * (0.06f * length);
+    }
+    for (std::size_t i = 0; i < s.segments.size(); ++i) s.segments[i].b += offset[i];
+    for (Segment& seg : s.segments)
+        if (seg.parent >= 0) seg.a = s.segments[static_cast<std::size_t>(seg.parent)].b;
+    return s;
+}
+
+struct Tally {
+    int runs = 0, count = 0, length = 0, height = 0, width = 0, depth = 0, hausdorff = 0, rules = 0,
+        exact = 0, exact_runs = 0;
+};
+
+void row(const char* name, int set, const char* kind, const FitReport& r, double natural,
+         bool exact_case, Tally& t) {
+    const double dc = relative_difference(double(r.example.segments), double(r.regrown.segments));
+    const double dl = relative_difference(r.example.total_length, r.regrown.total_length);
+    const double dh = relative_difference(r.example.height, r.regrown.height);
+    const double dw = relative_difference(r.example.crown_width, r.regrown.crown_width);
+    double dd = 0.0;
+    const std::size_t depths = std::max(r.example.per_depth.size(), r.regrown.per_depth.size());
+    for (std::size_t d = 0; d < depths; ++d) {
+        const double a = d < r.example.per_depth.size() ? double(r.example.per_depth[d]) : 0.0;
+        const double b = d < r.regrown.per_depth.size() ? double(r.regrown.per_depth[d]) : 0.0;
+        dd = std::max(dd, relative_difference(a, b));
+    }
+    const bool ok_h = exact_case ? r.hausdorff <= 0.01 * r.example.height : r.hausdorff <= natural;
+    ++t.runs;
+    t.count += dc <= 0.1;
+    t.length += dl <= 0.1;
+    t.height += dh <= 0.05;
+    t.width += dw <= 0.05;
+    t.depth += dd <= 0.1;
+    t.hausdorff += ok_h;
+    t.rules += r.rules <= 12;
+    if (exact_case) {
+        ++t.exact_runs;
+        t.exact +=
+            r.hausdorff <= 0.01 * r.example.height && r.example.segments == r.regrown.segments;
+    }
+    std::printf("%-11s %d %-6s %6zu %6.1f%% %6.1f%% %6.1f%% %6.1f%% %6.1f%% %7.3f %7.3f%s %3d\n",
+                name, set, kind, r.example.segments, 100 * dc, 100 * dl, 100 * dh, 100 * dw,
+                100 * dd, r.hausdorff, exact_case ? 0.01 * r.example.height : natural,
+                ok_h ? " " : "!", r.rules);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string dump;
+    if (argc > 2 && std::string(argv[1]) == "--dump") {
+        dump = argv[2];
+        argv += 2;
+        argc -= 2;
+    }
+    const int sets = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
+    auto save = [&](const std::string& name, int set, const char* kind,
+                    const InferredTemplate& inferred) {
+        if (dump.empty()) return;
+        const std::string path =
+            dump + "/" + name + "-" + std::to_string(set) + "-" + kind + ".toml";
+        if (std::FILE* f = std::fopen(path.c_str(), "w")) {
+            std::fputs(inferred.text.c_str(), f);
+            std::fclose(f);
+        }
+    };
+    std::printf(
+        "template  set kind   segs  count  length height  width  depth  hausd.  limit  rules\n");
+    Tally t;
+    for (const TreeTemplate* base : builtin_templates()) {
+        if (!only.empty() && std::find(only.begin(), only.end(), base->name) == only.end())
+            continue;
+        for (int set = 0; set < sets; ++set) {
+            Random random(0x5eed0000u + static_cast<std::uint64_t>(set) * 7919u +
+                          std::hash<std::string>{}(base->name));
+            TreeTemplate tree = *base;
+            if (set > 0) {
+                tree.grammar = randomized_grammar(tree.grammar, random);
+                tree.params.seed = 1 + (random.next() % 100000);
+            }
+            const Skeleton skeleton = grow(tree);
+            if (skeleton.segments.empty()) continue;
+            TreeTemplate other = tree;
+            other.params.seed = tree.params.seed + 1;
+            const bool exact_case = deterministic(tree);
+            const double natural = skeleton_hausdorff(skeleton, grow(other));
+            const ExampleTree example = as_example(skeleton, tree.params);
+            const InferredTemplate inferred = infer_template(example);
+            save(base->name, set, "plain", inferred);
+            row(base->name.c_str(), set, "plain", fit_report(example, inferred), natural,
+                exact_case, t);
+            const ExampleTree noisy = as_example(jittered(skeleton, 77 + set), tree.params);
+            const InferredTemplate inferred_noisy = infer_template(noisy);
+            save(base->name, set, "jitter", inferred_noisy);
+            row(base->name.c_str(), set, "jitter", fit_report(noisy, inferred_noisy), natural,
+                exact_case, t);
+        }
+    }
+    std::printf(
+        "\nruns %d: count within 10%% %d, length within 10%% %d, height within 5%% %d, "
+        "crown width within 5%% %d, per depth within 10%% %d, hausdorff within limit %d, "
+        "at most 12 rules %d; deterministic exact %d of %d\n",
+        t.runs, t.count, t.length, t.height, t.width, t.depth, t.hausdorff, t.rules, t.exact,
+        t.exact_runs);
+
+    // Speed: honda at 14 generations has 16,383 segments.
+    TreeTemplate big = *builtin_templates().front();
+    for (const TreeTemplate* b : builtin_templates())
+        if (b->name == "honda") big = *b;
+    big.params.blocks.edit<LSystemParams>().generations = 14;
+    const Skeleton skeleton = grow(big);
+    const ExampleTree example = as_example(skeleton, big.params);
+    double best = 1e9;
+    for (int k = 0; k < 5; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        const InferredTemplate inferred = infer_template(example);
+        best = std::min(best, std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - start)
+                                  .count());
+    }
+    std::printf("infer %zu segments (honda, 14 generations): %.1f ms (best of 5; target 1000 ms)\n",
+                skeleton.segments.size(), best);
+    return 0;
+}

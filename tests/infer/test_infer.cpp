@@ -1,0 +1,197 @@
+// Rules from an example tree (infer/): the readers refuse bad input with the place named,
+// deterministic templates regrow exactly, a stochastic one within the targets, and the
+// written template reads back. The sweep over every template is sylva-bench-infer's job.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "export/skeleton_json.h"
+#include "infer/example_tree.h"
+#include "infer/fit_report.h"
+#include "infer/rule_inference.h"
+#include "infer/skeleton_figures.h"
+#include "tree/growth.h"
+#include "tree/template_file.h"
+#include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
+
+namespace sylva {
+namespace {
+
+ExampleTree example_of(const std::string& name) {
+    const TreeTemplate tree = load_template(name);
+    return parse_example_tree(skeleton_json(grow(tree), tree.params), name + ".json");
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_example_tree(text, "tree.csv");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(InferReaders, SkeletonJsonReadsBackWhatSylvaWrites) {
+    const TreeTemplate tree = load_template("honda");
+    const Skeleton skeleton = grow(tree);
+    const ExampleTree example = parse_example_tree(skeleton_json(skeleton, tree.params), "h.json");
+    ASSERT_EQ(example.skeleton.segments.size(), skeleton.segments.size());
+    ASSERT_TRUE(example.params);
+    EXPECT_EQ(lsystem_params(*example.params).generations, lsystem_params(tree.params).generations);
+    for (std::size_t i = 0; i < skeleton.segments.size(); ++i)
+        EXPECT_LT(example.skeleton.segments[i].parent, static_cast<int>(i));
+}
+
+TEST(InferReaders, TreeQsmTableAndNamedColumnsGiveTheSameTree) {
+    // A trunk of two cylinders and a branch, Z up, TreeQSM's order (parent 0: none).
+    const std::string qsm =
+        "0.1\t1\t0\t0\t0\t0\t0\t1\t0\t2\n"
+        "0.08\t1\t0\t0\t1\t0\t0\t1\t1\t0\n"
+        "0.05\t0.5\t0\t0\t1\t0.7071\t0\t0.7071\t1\t0\n";
+    const std::string named =
+        "ID,Parent,Radius (m),Length (m),start_x,start_y,start_z,axis_x,axis_y,axis_z\n"
+        "1,0,0.1,1,0,0,0,0,0,1\n2,1,0.08,1,0,0,1,0,0,1\n3,1,0.05,0.5,0,0,1,0.7071,0,0.7071\n";
+    const ExampleTree a = parse_example_tree(qsm, "tree.txt");
+    const ExampleTree b = parse_example_tree(named, "tree.csv");
+    ASSERT_EQ(a.skeleton.segments.size(), 3u);
+    ASSERT_EQ(b.skeleton.segments.size(), 3u);
+    EXPECT_NEAR(a.skeleton.segments[1].b.y, 2.0f, 1e-5f);  // Z up became Y up
+    EXPECT_NEAR(b.skeleton.segments[1].b.y, 2.0f, 1e-5f);
+    EXPECT_EQ(a.continuation[0], 1);  // TreeQSM's extension column
+}
+
+TEST(InferReaders, ObjOfLineSegments) {
+    const std::string obj = "v 0 0 0\nv 0 1 0\nv 0 2 0\nv 0.5 1.5 0\nl 1 2 3\nl 2 4\n";
+    const ExampleTree tree = parse_example_tree(obj, "tree.obj");
+    ASSERT_EQ(tree.skeleton.segments.size(), 3u);
+    EXPECT_EQ(tree.skeleton.segments[0].parent, -1);
+}
+
+TEST(InferReaders, BadInputNamesTheRowOrKey) {
+    // A cycle: rows 1 and 2 are each other's parent.
+    EXPECT_NE(error_of("id,parent,start_x,start_y,start_z,end_x,end_y,end_z\n"
+                       "1,2,0,0,0,0,0,1\n2,1,0,0,1,0,0,2\n")
+                  .find("cycle"),
+              std::string::npos);
+    // Two trees apart.
+    const std::string apart = error_of(
+        "id,parent,start_x,start_y,start_z,end_x,end_y,end_z\n1,0,0,0,0,0,0,1\n2,0,5,5,0,5,5,1\n");
+    EXPECT_NE(apart.find("disconnected"), std::string::npos) << apart;
+    EXPECT_NE(apart.find("row 2"), std::string::npos) << apart;
+    // NaN.
+    const std::string nan =
+        error_of("0.1\t1\t0\t0\t0\t0\t0\t1\t0\t0\n0.1\tnan\t0\t0\t1\t0\t0\t1\t1\t0\n");
+    EXPECT_NE(nan.find("tree.csv:2"), std::string::npos) << nan;
+    // Zero length.
+    const std::string zero = error_of(
+        "id,parent,start_x,start_y,start_z,end_x,end_y,end_z\n1,0,0,0,0,0,0,1\n2,1,0,0,1,0,0,1\n");
+    EXPECT_NE(zero.find("no length"), std::string::npos) << zero;
+    // Too many segments: refused at the row past the limit, before anything is built.
+    std::string huge = "0.1\t1\t0\t0\t0\t0\t0\t1\t0\t0\n";
+    huge.reserve(huge.size() * (kMaxExampleSegments + 2));
+    for (std::size_t i = 0; i < kMaxExampleSegments + 1; ++i)
+        huge += "0.1\t1\t0\t0\t0\t0\t0\t1\t1\t0\n";
+    const std::string many = error_of(huge);
+    EXPECT_NE(many.find("at most"), std::string::npos) << many.substr(0, 200);
+    // skeleton.json: a wrong kind names the key.
+    try {
+        parse_example_tree(
+            R"({"format": "sylva-skeleton", "segments": [{"a": [0,0,0], "b": "x"}]})", "s.json");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("segments[0].b"), std::string::npos) << e.what();
+    }
+    // An OBJ whose segments close a loop.
+    try {
+        parse_example_tree("v 0 0 0\nv 0 1 0\nv 1 1 0\nl 1 2\nl 2 3\nl 3 1\n", "t.obj");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("cycle"), std::string::npos) << e.what();
+        EXPECT_GE(e.line(), 4);  // one of the three lines of the loop
+    }
+}
+
+// The Hausdorff distance against a brute-force one, with points near and far from the
+// other set (a far point is found through every cell, not the shells around it).
+TEST(InferFigures, HausdorffMatchesBruteForce) {
+    std::vector<glm::vec3> a, b;
+    for (int i = 0; i < 200; ++i) {
+        const float t = static_cast<float>(i);
+        a.emplace_back(std::sin(t) * 2.0f, t * 0.05f, std::cos(t * 0.7f));
+        b.emplace_back(std::sin(t + 0.3f) * 2.0f, t * 0.05f + 0.1f, std::cos(t * 0.7f));
+    }
+    b.emplace_back(40.0f, 30.0f, -25.0f);  // far from every point of a
+    auto directed = [](const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to) {
+        double worst = 0.0;
+        for (const glm::vec3& p : from) {
+            double best = 1e30;
+            for (const glm::vec3& q : to)
+                best = std::min(best, static_cast<double>(glm::length(p - q)));
+            worst = std::max(worst, best);
+        }
+        return worst;
+    };
+    const double expected = std::max(directed(a, b), directed(b, a));
+    EXPECT_NEAR(hausdorff_distance(a, b), expected, 1e-5 * expected);
+    EXPECT_NEAR(hausdorff_distance(b, a), expected, 1e-5 * expected);
+    EXPECT_EQ(hausdorff_distance(a, a), 0.0);
+}
+
+// Deterministic templates regrow exactly: the same segment count and a Hausdorff distance
+// within 1 % of the height.
+TEST(InferRules, DeterministicTemplatesRegrowExactly) {
+    for (const char* name : {"honda", "fir", "cypress", "bush"}) {
+        const ExampleTree example = example_of(name);
+        const InferredTemplate inferred = infer_template(example);
+        const FitReport r = fit_report(example, inferred);
+        EXPECT_EQ(r.regrown.segments, r.example.segments) << name;
+        EXPECT_LE(r.hausdorff, 0.01 * r.example.height) << name;
+        EXPECT_LE(inferred.rules, 12) << name;
+    }
+}
+
+// Stochastic trees: the oak (branches at every node) and the baobab (a bare trunk 24
+// segments long ending in a whorl) regrow within the targets of the figures.
+TEST(InferRules, StochasticTreesWithinTheTargets) {
+    for (const char* name : {"oak", "baobab"}) {
+        const ExampleTree example = example_of(name);
+        const FitReport r = fit_report(example, infer_template(example));
+        EXPECT_LE(relative_difference(double(r.example.segments), double(r.regrown.segments)), 0.1)
+            << name;
+        EXPECT_LE(relative_difference(r.example.total_length, r.regrown.total_length), 0.1) << name;
+        EXPECT_LE(relative_difference(r.example.height, r.regrown.height), 0.05) << name;
+        EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.05) << name;
+        ASSERT_EQ(r.example.per_depth.size(), r.regrown.per_depth.size()) << name;
+        for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
+            EXPECT_LE(
+                relative_difference(double(r.example.per_depth[d]), double(r.regrown.per_depth[d])),
+                0.1)
+                << name << " depth " << d;
+    }
+}
+
+TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
+    const ExampleTree example = example_of("cypress");
+    const InferredTemplate inferred = infer_template(example);
+    const TreeTemplate read = parse_template_file(inferred.text, "inferred.toml");
+    EXPECT_EQ(read.grammar, inferred.tree.grammar);
+    EXPECT_NE(read.grammar.find("# ["), std::string::npos);  // sliders
+    EXPECT_EQ(grow(read).segments.size(), example.skeleton.segments.size());
+}
+
+TEST(InferRules, RuleLimitIsKeptOrSaid) {
+    const ExampleTree example = example_of("honda");
+    InferSettings settings;
+    settings.max_rules = 3;
+    const InferredTemplate inferred = infer_template(example, settings);
+    EXPECT_TRUE(inferred.rules <= 3 || !inferred.within_rule_limit);
+}
+
+}  // namespace
+}  // namespace sylva
