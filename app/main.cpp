@@ -384,6 +384,7 @@ int run_export(const Options& o) {
     finish.lod = o.lod;
     MeshOptions mesh = o.mesh;
     mesh.budget = game_budget(finish);
+    mesh.growth_limits = growth_limits(o.limits, kRaiseLimits);
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
     // The reduction's cost depends on the meshes (their handles): known only now.
@@ -467,7 +468,9 @@ int run_skeleton(const Options& o) {
     if (o.output.empty()) throw UsageError("skeleton needs -o skeleton.json");
     TreeTemplate tree = configured_template(o);
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
-    Skeleton skeleton = grow(tree);
+    GrowthContext context;
+    context.limits = growth_limits(o.limits, kRaiseLimits);
+    Skeleton skeleton = grow(tree, context);
     write_skeleton_json(o.output, skeleton, tree.params);
     std::printf("wrote %s: %zu segments, %zu tips\n", o.output.c_str(), skeleton.segments.size(),
                 tips(skeleton).size());

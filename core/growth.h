@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,24 @@ struct StageTime {
     bool beside_others = false;
 };
 
+// What growing a template costs, in tree/cost.h's units: estimated from the parameters before
+// any growth, or counted as a growth goes.
+struct GrowthCost {
+    double segments = 0;  // the skeleton's segments (roughly, before growth)
+    double seconds = 0;   // wall time of the growth alone on two cores
+    double bytes = 0;     // its peak memory
+    std::string work;     // what the figures come from ("1000000 points x about 10400 nodes")
+};
+
+// The most a growth may cost. A method that counts its work as it goes (colonization) throws
+// InputError once the count passes a limit, naming it and `how_to_raise`: the limit holds
+// whatever the estimate said, and on every machine alike (work, not a clock).
+struct GrowthLimits {
+    double max_seconds = std::numeric_limits<double>::infinity();
+    double max_bytes = std::numeric_limits<double>::infinity();
+    std::string how_to_raise = "raise the limits";
+};
+
 struct GrowthContext {
     CancelFlag cancel = nullptr;              // polled between steps; throws Cancelled
     std::vector<StageTime>* times = nullptr;  // when set, each method appends its stages
@@ -38,6 +57,7 @@ struct GrowthContext {
     // thread, often enough to draw a progress bar: the L-system per derivation step and every
     // few thousand modules, then through the turtle; colonization per iteration.
     std::function<void(float)> progress = nullptr;
+    GrowthLimits limits = {};  // none by default
 };
 
 struct GrowthMethod {
@@ -46,6 +66,10 @@ struct GrowthMethod {
     // Throws InputError (GrammarError for a grammar) on bad input, naming the template's
     // file and line where it has one; Cancelled when the context's flag is set.
     Skeleton (*grow)(const TreeTemplate& tree, const GrowthContext& context);
+    // The growth's cost from the template's parameters alone, cheaply (no growth): a rough
+    // guide for tree/cost.h's estimate_cost. nullptr: the method has none (tree/cost.h
+    // knows the L-system's).
+    GrowthCost (*estimate)(const TreeTemplate& tree) = nullptr;
 };
 
 }  // namespace sylva

@@ -515,6 +515,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Skeleton mature;
     GrowthContext growth{options.cancel, &out.times};
     growth.progress = options.growth_progress;
+    growth.limits = options.growth_limits;
     out.skeleton = grow(tree, growth, &mature);
     out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);

@@ -62,6 +62,9 @@ struct MeshOptions {
     // trunk's (trunk_resolution_for_budget), and a low budget merges a
     // many-blob crown into a few pieces (crown_merge.h).
     std::size_t budget = 0;
+    // What the growth may cost: a method that counts its work (colonization) stops with
+    // InputError past these. None by default; the CLI sets its --max-* limits.
+    GrowthLimits growth_limits;
 };
 
 // The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown
