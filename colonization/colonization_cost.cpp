@@ -39,8 +39,8 @@ double grid_cells(const glm::dvec3& extent, double cell) {
 // Bytes of a run with `nodes` nodes: what the points, the nodes and both grids hold.
 double run_bytes(double points, double nodes, const glm::dvec3& extent, double radius) {
     const glm::dvec3 grid = extent + glm::dvec3(2.0 * radius);  // padded by d_i
-    const double cells = grid_cells(grid, std::max(0.5 * radius, 1e-6)) +
-                         grid_cells(grid, std::max(radius, 1e-6));
+    const double cells =
+        grid_cells(grid, std::max(0.5 * radius, 1e-6)) + grid_cells(grid, std::max(radius, 1e-6));
     return kBytesPerPoint * points + kBytesPerNode * nodes + kBytesPerCell * cells;
 }
 
@@ -66,9 +66,8 @@ ColonizationCost estimate_colonization_cost(const Box& bounds, std::size_t count
     const double radius = std::max(static_cast<double>(s.influence_radius), kill);
     const double max_passes = std::max(1.0, static_cast<double>(s.max_iterations));
     const double longest = std::max({extent.x, extent.y, extent.z});
-    cost.iterations =
-        std::min(max_passes, kPassesPerExtentStep * longest / step +
-                                 (s.max_no_grow > 0 ? 2.0 * s.max_no_grow : 0.0));
+    cost.iterations = std::min(max_passes, kPassesPerExtentStep * longest / step +
+                                               (s.max_no_grow > 0 ? 2.0 * s.max_no_grow : 0.0));
     // Where nodes can be: the box and a step around it, as far as the passes reach.
     const double farthest = cost.iterations * step * (s.weighted_growth ? 2.0 : 1.0);
     const glm::dvec3 reach = glm::min(extent, glm::dvec3(2.0 * farthest)) + glm::dvec3(2.0 * step);
@@ -77,17 +76,15 @@ ColonizationCost estimate_colonization_cost(const Box& bounds, std::size_t count
     const double tubes = kNodesPerKillTube * volume / (3.14159265358979 * kill * kill * step);
     // Each pass grows at most one node per point.
     const double grown = std::min({packed, tubes, max_passes * points});
-    const double trunk = std::max(1, roots) *
-                         (std::max(static_cast<double>(s.trunk_height),
-                                   static_cast<double>(bounds.min.y)) /
-                              step +
-                          1.0);
+    const double trunk =
+        std::max(1, roots) *
+        (std::max(static_cast<double>(s.trunk_height), static_cast<double>(bounds.min.y)) / step +
+         1.0);
     cost.nodes = grown + trunk;
     // A query looks at the cells (d_i / 2 wide) of a cube 2 d_i across: that share of the
     // points along each axis.
     const glm::dvec3 grid = extent + glm::dvec3(2.0 * radius);
-    const double cell =
-        std::max(0.5 * radius, std::cbrt(grid.x * grid.y * grid.z / kMaxGridCells));
+    const double cell = std::max(0.5 * radius, std::cbrt(grid.x * grid.y * grid.z / kMaxGridCells));
     const double query = 2.0 * radius + cell;
     const double share = std::min(1.0, query / extent.x) * std::min(1.0, query / extent.y) *
                          std::min(1.0, query / extent.z);

@@ -100,7 +100,8 @@ TEST(ColonizationCost, TheEstimateFollowsPointsTimesNodes) {
         }
         EXPECT_GT(estimate.seconds, 0.5 * counted.seconds) << "kill " << kill;
     }
-    const ColonizationCost million = estimate_colonization_cost(box, 1'000'000, 1, settings(0.001f));
+    const ColonizationCost million =
+        estimate_colonization_cost(box, 1'000'000, 1, settings(0.001f));
     EXPECT_GT(million.seconds, 10.0);
     EXPECT_LT(estimate_colonization_cost(box, 1400, 1, settings(0.7f)).seconds, 0.1);
 }
