@@ -411,6 +411,7 @@ int run_export(const Options& o) {
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
     std::printf("  marching cubes:\n");
     print_parts(raw, raw_states, "    ");
+    for (const std::string& note : tree.notes) std::printf("    note: %s\n", note.c_str());
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
         const std::size_t leaves = finished.leaf_budgets[i];

@@ -37,6 +37,10 @@ struct Tree {
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
     // the last three are made beside each other, each with its own time (stages_wall_ms)
     std::vector<StageTime> times;
+    // What the tree lacks of what its template asks for, each a sentence for the user that
+    // says why and what to change (a crown whose spheres are smaller than its grid's cells);
+    // empty as a rule. Callers show them: a result unlike the request is never silent.
+    std::vector<std::string> notes;
 };
 
 // The wall time of `times`: the stages made beside each other (StageTime::beside_others:

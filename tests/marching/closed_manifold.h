@@ -1,5 +1,5 @@
-// Test helper: the mesh is a closed, consistently oriented 2-manifold without degenerate
-// triangles, with every failing count reported.
+// Test helper: the mesh is a closed, consistently oriented 2-manifold without degenerate or
+// zero-area triangles, with every failing count reported.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@ namespace sylva {
 inline void expect_closed_manifold(const Mesh& mesh) {
     const MeshTopology t = check_topology(mesh);
     EXPECT_TRUE(t.is_closed_manifold()) << to_string(t);
+    EXPECT_EQ(t.zero_area_triangles, 0u) << to_string(t);
 }
 
 }  // namespace sylva
