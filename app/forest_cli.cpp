@@ -118,7 +118,8 @@ struct TreeFlags {
         } else if (arg == "--format") {
             const std::string name = value();
             format = format_from_name(name);
-            if (!format) throw UsageError("--format expects obj, glb or ply, not '" + name + "'");
+            if (!format)
+                throw UsageError("--format expects " + format_names() + ", not '" + name + "'");
         } else if (arg == "--shading") {
             const std::string name = value();
             if (name != "flat" && name != "smooth")

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "app/forest_cli.h"
+#include "app/impostor_cli.h"
+#include "app/lint_cli.h"
 #include "core/atomic_file.h"
 #include "core/color_variation.h"
 #include "core/errors.h"
@@ -25,7 +27,7 @@
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
 #ifdef SYLVA_HAS_LAYOUT
-#include "layout/layout_cli.h"
+#include "app/layout_cli.h"
 #endif
 #include "marching/mesh_checks.h"
 #include "marching/mesher.h"
@@ -50,15 +52,17 @@ constexpr const char* kHelp = R"(sylva: low-poly trees from L-systems
 Usage:
   sylva export   [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] [--budget N]
                  [--budget-leaves N] [--crown-shape S] [--lod] [--mesher KIND]
-                 -o OUT.{obj,glb,ply}
-  sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [-o WORD.txt]
+                 -o OUT.{obj,glb,ply,fbx}
+  sylva derive   [-t NAME|FILE] [--steps N] [--seed N] [--lint] [-o WORD.txt]
+  sylva lint     [-t NAME|FILE] [--set KEY=VALUE]...
+                 (grammar warnings as FILE:LINE:COLUMN; docs/grammar.md "Warnings")
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
   sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
   sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
   sylva templates
   sylva layout   examples | derive EXAMPLE -o grammar.json |
-                 generate EXAMPLE|GRAMMAR [--count N] [--seed S] [--steps K] -o DIR/
-                 (2D layouts from one example, seed 002; see docs/layout.md)
+                 generate EXAMPLE|GRAMMAR [--count N] [--size N] [--seed S] -o DIR/
+                 (2D plans grown from one example; see sylva layout --help, docs/layout.md)
   sylva --help, sylva COMMAND --help
 )";
 
@@ -88,10 +92,23 @@ constexpr const char* kOptions = R"(
                    crown_shape (auto in every built-in template)
   --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
-  --format F       obj, glb or ply (default: from the extension of OUT)
+  --impostor       append far levels baked from LOD0 (docs/impostors.md): an octahedral
+                   impostor (one quad, albedo + normal/depth atlas of 8 x 8 views, a
+                   shader per engine in engine_kits/) as the last level of a --lod chain,
+                   or after the tree as LOD1; .glb embeds the atlas, .obj writes
+                   OUT_impostor_albedo.png ... beside it; OUT_impostor.json has the layout
+  --impostor-kind K
+                   octahedral (default), billboard (crossed quads any importer shows) or
+                   both (billboard, then octahedral); implies --impostor
+  --impostor-size PX, --impostor-views N, --impostor-quads Q
+                   atlas side (default 1024), N x N views (default 8, 2 to 32),
+                   billboard quads (default 3, or 2)
+  --format F       obj, glb, ply or fbx (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
   --profile P      generic (default), unity, unreal or godot: collision names, the wind
                    channel, OBJ/PLY units (README "Engine profiles")
+  --engine-kit DIR also write the profile's engine import kit (Godot, Unity, Unreal
+                   scripts and shaders; all of them for generic) into DIR (docs/engines.md)
   --collision on|off
                    convex collision hulls (trunk, crown pieces); default: on for unity,
                    unreal and godot, off for generic
@@ -142,6 +159,7 @@ struct Options {
     std::optional<CrownShape> crown_shape;  // unset: the template's
     bool lod = false;
     bool fidelity = false;
+    bool lint = false;  // derive: the grammar's warnings on stderr first
     const ExportFormat* format = nullptr;
     ExportOptions export_options;
     CostLimits limits;
@@ -224,12 +242,22 @@ Options parse_options(int argc, char** argv) {
                 throw UsageError("--crown-shape expects auto, blobs or hulls, not '" + name + "'");
         } else if (arg == "--lod") {
             o.lod = true;
+        } else if (arg.rfind("--impostor", 0) == 0) {
+            try {  // app/impostor_cli.h
+                if (!parse_impostor_flag(arg, value, o.export_options.impostor))
+                    throw UsageError("unknown option '" + arg + "'");
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(e.what());
+            }
         } else if (arg == "--fidelity") {
             o.fidelity = true;
+        } else if (arg == "--lint") {
+            o.lint = true;
         } else if (arg == "--format") {
             std::string name = value();
             o.format = format_from_name(name);
-            if (!o.format) throw UsageError("--format expects obj, glb or ply, not '" + name + "'");
+            if (!o.format)
+                throw UsageError("--format expects " + format_names() + ", not '" + name + "'");
         } else if (arg == "--shading") {
             std::string name = value();
             if (name != "flat" && name != "smooth")
@@ -246,6 +274,8 @@ Options parse_options(int argc, char** argv) {
             if (state != "on" && state != "off")
                 throw UsageError("--collision expects on or off, not '" + state + "'");
             o.export_options.engine.collision = state == "on";
+        } else if (arg == "--engine-kit") {
+            o.export_options.engine_kit = value();
         } else if (arg == "--palette") {
             o.export_options.engine.palette = true;
         } else if (arg == "--no-uvs") {
@@ -344,8 +374,9 @@ std::vector<std::string> part_states(const std::vector<NamedMesh>& parts) {
     tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t k) {
         const Mesh& mesh = *parts[k].mesh;
         // Leaves are open by design (and counted); the solid parts must be closed.
-        states[k] = !parts[k].closed
-                        ? std::to_string(count_leaves(mesh)) + " leaves, open by design"
+        states[k] = !parts[k].closed ? std::to_string(count_leaves(mesh)) +
+                                           (parts[k].name == "organs" ? " pieces" : " leaves") +
+                                           ", open by design"
                     : check_topology(mesh).is_closed_manifold() ? "closed"
                                                                 : "NOT closed";
     });
@@ -366,12 +397,14 @@ int run_export(const Options& o) {
     const ExportFormat* format = o.format ? o.format : by_extension;
     if (!format)
         throw UsageError("cannot tell the format of '" + o.output +
-                         "': use .obj, .glb or .ply, or --format");
+                         "': use .obj, .glb, .ply or .fbx, or --format");
     // PLY bytes in a .glb open in no engine: an extension of another format is a mistake.
     if (by_extension && by_extension != format)
         throw UsageError("--format " + std::string(format->name) + " does not match '" + o.output +
                          "' (a " + std::string(by_extension->name) +
                          " file name): use the extension " + std::string(format->extension));
+    if (o.export_options.impostor.kind != ImpostorKind::None && format->name == "ply")
+        throw UsageError("--impostor needs textures, which PLY does not carry: use .glb or .obj");
     output_target(o.output);  // a directory or device at -o is refused before the work
     TreeTemplate tmpl = configured_template(o);
     FinishSettings finish;
@@ -388,12 +421,13 @@ int run_export(const Options& o) {
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
     // The reduction's cost depends on the meshes (their handles): known only now.
-    check_cost(estimate_reduction_cost(tree.trunk, tree.crown, mesh.budget), o.limits,
-               kRaiseLimits);
+    check_cost(estimate_reduction_cost(tree, mesh.budget), o.limits, kRaiseLimits);
 
     // The raw meshes' summary is checked while the reduction runs: it needs nothing of it,
     // and a core is often free (the reduction of a big trunk waits for nothing either).
-    const std::vector<NamedMesh> raw = tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors);
+    std::vector<NamedMesh> raw = tree_parts(tree.trunk, tree.crown, tree.leaves, tmpl.colors);
+    if (!tree.organs.empty())
+        raw.push_back({"organs", &tree.organs.mesh, tmpl.colors.leaves, false});
     std::vector<std::string> raw_states;
     Stopwatch clock;
     FinishedTree finished;
@@ -403,6 +437,7 @@ int run_export(const Options& o) {
             finished = finish_tree(tree, finish);
             ExportOptions export_options = o.export_options;
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
+            export_options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
         [&] { raw_states = part_states(raw); });
@@ -422,11 +457,15 @@ int run_export(const Options& o) {
                         leaf_budget.c_str());
         else
             std::printf("  reduced (budget %zu + %s):\n", finished.budgets[i], leaf_budget.c_str());
-        const std::vector<NamedMesh> parts =
+        std::vector<NamedMesh> parts =
             tree_parts(level.trunk, level.crown, level.leaves, tmpl.colors);
+        if (i < finished.organs.size() && !finished.organs[i].empty())
+            parts.push_back({"organs", &finished.organs[i].mesh, tmpl.colors.leaves, false});
         print_parts(parts, part_states(parts), "    ");
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
+    print_far_levels(o.export_options.impostor,
+                     finished.levels.empty() ? 1 : finished.levels.size());
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),
                 tips(tree.skeleton).size());
     for (size_t i = 0; i < tree.times.size(); ++i)
@@ -453,6 +492,7 @@ int run_derive(const Options& o) {
     if (tree.growth != lsystem_growth.name)
         throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
                          tree.growth);
+    if (o.lint) print_lint(tree, stderr);
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     std::string text = derive_word(tree).to_string();
     text.push_back('\n');
@@ -489,10 +529,9 @@ int run(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "batch") return run_batch_command(argc, argv);
     if (argc >= 2 && std::string(argv[1]) == "forest") return run_forest_command(argc, argv);
 #ifdef SYLVA_HAS_LAYOUT
-    // `sylva layout ...` (layout/layout_cli.h) parses its own arguments.
+    // `sylva layout ...` (app/layout_cli.h) parses its own arguments.
     if (argc >= 2 && std::string(argv[1]) == "layout")
-        return layout::run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout,
-                                      stderr);
+        return run_layout_cli(std::vector<std::string>(argv + 1, argv + argc), stdout, stderr);
 #endif
     Options o = parse_options(argc, argv);
     if (o.command == "--help" || o.command == "-h" || o.command == "help") {
@@ -506,6 +545,7 @@ int run(int argc, char** argv) {
     }
     if (o.command == "export") return run_export(o);
     if (o.command == "derive") return run_derive(o);
+    if (o.command == "lint") return run_lint(configured_template(o));
     if (o.command == "skeleton") return run_skeleton(o);
     throw UsageError("unknown command '" + o.command + "'");
 }

@@ -23,7 +23,7 @@ PartColors varied_colors(const PartColors& base, double amount, std::uint64_t se
     Random trunk(derive_seed(seed, noise_stream::color));
     Random crown(derive_seed(derive_seed(seed, noise_stream::color), 1));
     Random leaves = crown;  // the same draws: crown and leaves shift together
-    PartColors out;
+    PartColors out = base;  // the palette of colour indices stays as the grammar chose it
     out.trunk = shifted(base.trunk, amount, trunk);
     out.crown = shifted(base.crown, amount, crown);
     out.leaves = shifted(base.leaves, amount, leaves);

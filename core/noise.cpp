@@ -397,4 +397,80 @@ double fbm(const ValueNoise& noise, double x, double y, double z, const FbmSetti
     return noise_fbm(noise, x, y, z, s);
 }
 
+// ---- one field of a chosen kind ----
+
+namespace {
+
+Interpolation interpolation_of(NoiseKind kind) {
+    switch (kind) {
+        case NoiseKind::value_linear:
+            return Interpolation::linear;
+        case NoiseKind::value_cosine:
+            return Interpolation::cosine;
+        default:
+            return Interpolation::cubic;
+    }
+}
+
+}  // namespace
+
+NoiseField::NoiseField(std::uint64_t seed, NoiseKind kind)
+    : kind_(kind), gradient_(seed), value_(seed, interpolation_of(kind)) {}
+
+double NoiseField::operator()(double x) const {
+    return kind_ == NoiseKind::gradient ? gradient_(x) : value_(x);
+}
+double NoiseField::operator()(double x, double y) const {
+    return kind_ == NoiseKind::gradient ? gradient_(x, y) : value_(x, y);
+}
+double NoiseField::operator()(double x, double y, double z) const {
+    return kind_ == NoiseKind::gradient ? gradient_(x, y, z) : value_(x, y, z);
+}
+
+double fbm(const NoiseField& noise, double x, const FbmSettings& s) {
+    return noise_fbm(noise, x, s);
+}
+double fbm(const NoiseField& noise, double x, double y, const FbmSettings& s) {
+    return noise_fbm(noise, x, y, s);
+}
+double fbm(const NoiseField& noise, double x, double y, double z, const FbmSettings& s) {
+    return noise_fbm(noise, x, y, z, s);
+}
+
+// ---- looping in time ----
+
+namespace {
+
+// The circle's point for time t: radius period / (2 pi), so one unit of t is one unit of
+// arc; the centre is off the lattice's origin, where gradient noise is zero.
+struct TimeCircle {
+    double c, s;
+};
+TimeCircle time_circle(double t, double period) {
+    const double p = std::max(std::isfinite(period) ? period : 1.0, 1.0);
+    if (!std::isfinite(t)) t = 0.0;
+    const double turn = std::fmod(t, p) / p;
+    const double r = p / (2.0 * std::numbers::pi);
+    const double a = 2.0 * std::numbers::pi * turn;
+    return {r * std::cos(a) + 0.5 * kOctaveShift[1], r * std::sin(a) + 0.5 * kOctaveShift[2]};
+}
+
+}  // namespace
+
+double looping_noise(const NoiseField& noise, double x, double t, double period) {
+    const TimeCircle c = time_circle(t, period);
+    return noise(x, c.c, c.s);
+}
+
+double looping_fbm(const NoiseField& noise, double x, double t, double period,
+                   const FbmSettings& s) {
+    const TimeCircle c = time_circle(t, period);
+    // Octave k samples the circle scaled by its frequency: a circle of circumference
+    // period * f, walked once per period.
+    return fractal_sum(s, [&](double f, double k) {
+        return noise(x * f + k * kOctaveShift[0], c.c * f + k * kOctaveShift[1],
+                     c.s * f + k * kOctaveShift[2]);
+    });
+}
+
 }  // namespace sylva

@@ -89,6 +89,48 @@ double fbm(const ValueNoise& noise, double x, const FbmSettings& s);
 double fbm(const ValueNoise& noise, double x, double y, const FbmSettings& s);
 double fbm(const ValueNoise& noise, double x, double y, double z, const FbmSettings& s);
 
+// Which noise a field samples: Perlin's gradient noise, or Limbach's (2004) value noise with
+// one of its three interpolations (the `noise_kind` parameter, docs/noise.md).
+enum class NoiseKind { gradient = 0, value_linear = 1, value_cosine = 2, value_cubic = 3 };
+
+// One seeded noise field of a chosen kind, so callers (expressions, the turtle's variation)
+// pick the kind without a template per kind. With NoiseKind::gradient it gives exactly the
+// values of GradientNoise(seed). Immutable after construction; any number of threads may
+// read it at once.
+class NoiseField {
+  public:
+    explicit NoiseField(std::uint64_t seed, NoiseKind kind = NoiseKind::gradient);
+
+    // Each is in [-1, 1].
+    double operator()(double x) const;
+    double operator()(double x, double y) const;
+    double operator()(double x, double y, double z) const;
+
+    NoiseKind kind() const { return kind_; }
+    std::uint64_t seed() const { return gradient_.seed(); }
+
+  private:
+    NoiseKind kind_;
+    GradientNoise gradient_;
+    ValueNoise value_;
+};
+
+double fbm(const NoiseField& noise, double x, const FbmSettings& s);
+double fbm(const NoiseField& noise, double x, double y, const FbmSettings& s);
+double fbm(const NoiseField& noise, double x, double y, double z, const FbmSettings& s);
+
+// Noise that loops in time (Limbach 2004: for animation the time coordinate wraps, so the
+// end of a loop runs into its start, as wind must): the value at (x, t) equals the value at
+// (x, t + period) for every t, and is as smooth and as fine (one lattice cell per unit of
+// t) as noise(x, t). Time walks around a circle of circumference `period` in a plane of its
+// own (the 3D field at (x, r cos a, r sin a), a = 2 pi t / period) rather than wrapping the
+// lattice, so every kind of noise loops alike. A period below 1 is taken as 1. In [-1, 1].
+double looping_noise(const NoiseField& noise, double x, double t, double period);
+// Its fractal sum: octave k walks a circle k-fold larger, so each octave loops with the
+// same period.
+double looping_fbm(const NoiseField& noise, double x, double t, double period,
+                   const FbmSettings& s);
+
 // A seed derived from a base seed and a stream number (splitmix64 of both), for the many
 // independent noise fields one tree needs (bend, jitter, colour, ...).
 std::uint64_t derive_seed(std::uint64_t base, std::uint64_t stream);

@@ -64,25 +64,40 @@ Skeleton skeleton_at_age(const Skeleton& mature, double age) {
 
     // Leaf polygons: there once the front passes the nearest segment end, scaled in about
     // their centre over the length of the segment they hang from.
-    for (const auto& polygon : mature.polygons) {
+    // Where the front reaches the segment end nearest `p`: 0 before, rising to 1 over that
+    // segment's length.
+    auto grown_at = [&](const glm::vec3& p) {
+        size_t nearest = 0;
+        float best = std::numeric_limits<float>::max();
+        for (size_t i = 0; i < n; ++i) {
+            const float dist = glm::distance(in[i].b, p);
+            if (dist < best) best = dist, nearest = i;
+        }
+        const double length = std::max(d1[nearest] - d0[nearest], 1e-6);
+        return std::clamp((front - d1[nearest]) / length, 0.0, 1.0);
+    };
+    for (size_t k = 0; k < mature.polygons.size(); ++k) {
+        const auto& polygon = mature.polygons[k];
         if (polygon.empty()) continue;
         glm::vec3 centre(0.0f);
         for (const glm::vec3& v : polygon) centre += v;
         centre /= static_cast<float>(polygon.size());
-        size_t nearest = 0;
-        float best = std::numeric_limits<float>::max();
-        for (size_t i = 0; i < n; ++i) {
-            const float dist = glm::distance(in[i].b, polygon.front());
-            if (dist < best) best = dist, nearest = i;
-        }
-        const double length = std::max(d1[nearest] - d0[nearest], 1e-6);
-        const double grown = std::clamp((front - d1[nearest]) / length, 0.0, 1.0);
+        const double grown = grown_at(polygon.front());
         if (grown <= 0.0) continue;
         std::vector<glm::vec3> scaled;
         scaled.reserve(polygon.size());
         for (const glm::vec3& v : polygon)
             scaled.push_back(centre + static_cast<float>(grown) * (v - centre));
         out.polygons.push_back(std::move(scaled));
+        if (!mature.polygon_colors.empty()) out.polygon_colors.push_back(polygon_color(mature, k));
+    }
+    // Organs alike: there once the front passes them, growing to their size.
+    for (const Organ& organ : mature.organs) {
+        const double grown = grown_at(organ.position);
+        if (grown <= 0.0) continue;
+        Organ young = organ;
+        young.scale *= static_cast<float>(grown);
+        out.organs.push_back(std::move(young));
     }
     return out;
 }

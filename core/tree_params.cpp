@@ -19,7 +19,12 @@ struct Field {
 
 constexpr std::string_view kCrownBlends[] = {"root", "pasko"};
 constexpr std::string_view kLeafShapes[] = {"round", "oak", "needle", "frond"};
+constexpr std::string_view kPolygonParts[] = {"leaves", "organs"};
+constexpr std::string_view kNoiseKinds[] = {"gradient", "value_linear", "value_cosine",
+                                            "value_cubic"};
 constexpr std::string_view kCrownShapes[] = {"auto", "blobs", "hulls"};
+constexpr std::string_view kBranchStyles[] = {"auto", "prisms", "surface"};
+constexpr std::string_view kLeafStyles[] = {"cards", "leaves", "none", "textured"};
 constexpr std::string_view kEnvelopes[] = {"sphere",   "ellipsoid",  "cone",
                                            "cylinder", "hemisphere", "template"};
 constexpr std::string_view kEnvelopeTemplates[] = {
@@ -82,8 +87,9 @@ const std::vector<Field>& fields() {
          &TreeParams::yaw_angle,
          nullptr},
         {{"tropism",
-          "elasticity of the bend towards gravity after each F (0 = none, negative bends up)", -1,
-          1, false},
+          "elasticity of the bend towards gravity (or tropism_vector) after each F (0 = none, "
+          "negative bends away)",
+          -1, 1, false},
          &TreeParams::tropism,
          nullptr},
         {{"tip_width", "pipe width model: diameter at the branch tips, meters", 0, 10, false},
@@ -124,6 +130,12 @@ const std::vector<Field>& fields() {
         {{"leaf_shape", "round, oak, needle or frond", 0, 3, true, kLeafShapes},
          nullptr,
          &TreeParams::leaf_shape},
+        {{"polygon_part",
+          "where the turtle's { } polygons go: leaves (fanned into the leaf part, thinned with "
+          "it) or organs (their own part, coloured by index, with flowers and fruit)",
+          0, 1, true, kPolygonParts},
+         nullptr,
+         &TreeParams::polygon_part},
         {{"triangle_budget",
           "export: trunk + crown reduced to this many triangles (0 = keep every marching-cubes "
           "triangle)",
@@ -140,6 +152,20 @@ const std::vector<Field>& fields() {
               "game mesh crown as hulls: triangles of the budget per lump (more: fewer, larger "
               "lumps)",
               10, 1000, &TreeParams::crown_lump_triangles),
+        {{"branch_style",
+          "game mesh branches: prisms (a few-sided prism per branch, pointed at the tips), "
+          "surface (the trunk's smooth surface reduced with the crown) or auto (surface when "
+          "joint_blend blends the joints, else prisms)",
+          0, 2, true, kBranchStyles},
+         nullptr,
+         &TreeParams::branch_style},
+        {{"leaf_style",
+          "leaves: cards (a game mesh over its leaf budget draws a card per patch of foliage), "
+          "leaves (it keeps some of the tree's own leaves, grown), none (no leaves, the crown "
+          "alone) or textured (cards with a texture of leaves, for alpha-tested engines)",
+          0, 3, true, kLeafStyles},
+         nullptr,
+         &TreeParams::leaf_style},
         // Space colonization (Liebemann 2017, chapter 3).
         whole("attraction_points", "colonization: number of attraction points N", 1, 1000000,
               &TreeParams::attraction_points),
@@ -209,12 +235,14 @@ const std::vector<Field>& fields() {
          &TreeParams::point_distribution},
         real("trunk_height", "colonization: the trunk grows at least this high first, meters", 0,
              100, &TreeParams::trunk_height),
-        real("tropism_vector_x", "colonization: tropism T along x, added to each growth direction",
+        real("tropism_vector_x",
+             "tropism T along x: colonization adds T to each growth direction; the L-system "
+             "turtle bends towards T by `tropism` after each F (T = 0: straight down)",
              -2, 2, &TreeParams::tropism_vector_x),
         real("tropism_vector_y",
-             "colonization: tropism T along y (negative: gravity, positive: light)", -2, 2,
+             "tropism T along y (negative: gravity, positive: light; see tropism_vector_x)", -2, 2,
              &TreeParams::tropism_vector_y),
-        real("tropism_vector_z", "colonization: tropism T along z", -2, 2,
+        real("tropism_vector_z", "tropism T along z (see tropism_vector_x)", -2, 2,
              &TreeParams::tropism_vector_z),
         whole("max_degree", "colonization: max_grad, successors per node (0 = no limit)", 0, 100,
               &TreeParams::max_degree),
@@ -246,6 +274,13 @@ const std::vector<Field>& fields() {
              "noise cycles per meter along a branch for bend, width_variation and "
              "tropism_variation (colonization: per meter of space)",
              0.01, 20, &TreeParams::bend_frequency),
+        {{"noise_kind",
+          "the noise of noise(), fbm() and noise_loop() in rules and of bend, width and tropism "
+          "variation: gradient (Perlin) or value noise with linear, cosine or cubic "
+          "interpolation (Limbach 2004)",
+          0, 3, true, kNoiseKinds},
+         nullptr,
+         &TreeParams::noise_kind},
         real("jitter",
              "L-system: each branch's angles and lengths times a factor in 1 +- jitter, drawn "
              "per branch from the seed",
@@ -282,6 +317,12 @@ std::string range_text(const ParamInfo& info) {
 }
 
 }  // namespace
+
+BranchStyle branch_style(const TreeParams& params) {
+    const auto style = static_cast<BranchStyle>(params.branch_style);
+    if (style != BranchStyle::Automatic) return style;
+    return params.joint_blend > 0.0 ? BranchStyle::Surface : BranchStyle::Prisms;
+}
 
 std::span<const std::string_view> envelope_template_names() {
     return kEnvelopeTemplates;

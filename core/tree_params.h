@@ -35,9 +35,12 @@ struct TreeParams {
     double leaf_density = 60.0;     // leaves per cubic meter of crown
     double leaf_size = 0.25;        // leaf length, meters
     int leaf_shape = 0;             // LeafShape
+    int polygon_part = 0;           // PolygonPart: where the turtle's { } polygons go
     int triangle_budget = 800;      // export: trunk + crown reduced to this (0 = no reduction)
     int crown_shape = 0;            // CrownShape: how the game mesh draws the crown
     int crown_lump_triangles = 70;  // hulls: game-mesh triangles per lump (fewer, larger)
+    int branch_style = 0;           // BranchStyle: how the game mesh draws the branches
+    int leaf_style = 0;             // LeafStyle: how the game mesh draws the leaves
     // Space colonization (growth = "colonization", Liebemann 2017, chapter 3); the L-system
     // ignores these.
     int attraction_points = 2000;    // N
@@ -62,11 +65,13 @@ struct TreeParams {
     double obstacle_size_x = 1.0;  // its full extents, meters
     double obstacle_size_y = 1.0;
     double obstacle_size_z = 1.0;
-    int roots = 1;                  // trees grown from a circle of roots, sharing the points
-    double root_spread = 0.5;       // radius of that circle, meters (ignored for one root)
-    int point_distribution = 0;     // PointDistribution: uniform or halton
-    double trunk_height = 2.0;      // the trunk grows at least this high first
-    double tropism_vector_x = 0.0;  // T, added to each growth direction (eq. 3.2)
+    int roots = 1;               // trees grown from a circle of roots, sharing the points
+    double root_spread = 0.5;    // radius of that circle, meters (ignored for one root)
+    int point_distribution = 0;  // PointDistribution: uniform or halton
+    double trunk_height = 2.0;   // the trunk grows at least this high first
+    // T: colonization adds it to each growth direction (eq. 3.2); the L-system turtle bends
+    // towards it (ABOP), towards -Y while it is 0.
+    double tropism_vector_x = 0.0;
     double tropism_vector_y = 0.0;
     double tropism_vector_z = 0.0;
     int max_degree = 0;            // max_grad: successors per node (0 = no limit)
@@ -79,6 +84,7 @@ struct TreeParams {
     double age = 1.0;                // 0: a seedling, 1: the mature tree the template describes
     double bend = 0.0;               // degrees per meter of curvature noise along branches
     double bend_frequency = 0.5;     // noise cycles per meter along a branch
+    int noise_kind = 0;              // NoiseKind (core/noise.h): expressions' and variation's noise
     double jitter = 0.0;             // per-branch angles and lengths times 1 +- jitter
     double width_variation = 0.0;    // widths times 1 + this * noise along the branch
     double tropism_variation = 0.0;  // tropism vector plus this * a noise vector
@@ -90,6 +96,9 @@ struct TreeParams {
 enum class CrownBlend { Root = 0, Pasko = 1 };
 // Choices of the `leaf_shape` parameter.
 enum class LeafShape { Round = 0, Oak = 1, Needle = 2, Frond = 3 };
+// Choices of the `polygon_part` parameter: the turtle's { } polygons fanned into the leaves
+// (thinned with them), or into the organs part with their colours (tree/organs.h).
+enum class PolygonPart { Leaves = 0, Organs = 1 };
 // Choices of the `crown_shape` parameter: how a reduced crown is drawn (tree/crown_hulls.h).
 enum class CrownShape {
     Automatic = 0,  // hulls in a game mesh when the crown has handles (blobs touching in
@@ -97,6 +106,23 @@ enum class CrownShape {
     Blobs = 1,      // the crown's own surface, reduced
     Hulls = 2,      // the convex hulls of a few clusters of the crown, reduced
 };
+
+// Choices of the `branch_style` parameter: how a game mesh draws the trunk and branches.
+enum class BranchStyle {
+    Automatic = 0,  // prisms, unless the template blends its joints (joint_blend > 0)
+    Prisms = 1,     // a few-sided prism per branch from the skeleton (tree/branch_prisms.h)
+    Surface = 2,    // the trunk field's surface, meshed and reduced with the crown
+};
+// Choices of the `leaf_style` parameter: how leaves are drawn.
+enum class LeafStyle {
+    Cards = 0,     // a game mesh over its leaf budget draws cards (tree/leaf_cards.h)
+    Leaves = 1,    // a game mesh keeps some of the tree's own leaves, grown (leaf_thinning.h)
+    None = 2,      // no leaves at all: the crown alone, flat coloured
+    Textured = 3,  // cards, always, with a texture of leaves (export/leaf_atlas.h)
+};
+
+// The branch style `params` resolve to (never Automatic).
+BranchStyle branch_style(const TreeParams& params);
 
 // Choices of the `envelope_template` parameter: the built-in templates (by name) whose
 // crown a colonization envelope can be. Core cannot ask the template library, so the names

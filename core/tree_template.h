@@ -2,8 +2,10 @@
 // compiled in (tree/template_library.h), others read from TOML files (tree/template_file.h).
 #pragma once
 
+#include <cstddef>
 #include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 #include "core/tree_params.h"
 
@@ -14,7 +16,15 @@ struct PartColors {
     glm::vec3 trunk{0.36f, 0.24f, 0.15f};
     glm::vec3 crown{0.22f, 0.45f, 0.18f};
     glm::vec3 leaves{0.30f, 0.55f, 0.20f};
+    // The colour of each colour index the grammar sets with ' and ; (ABOP's colour map),
+    // index i taking palette[i % size]. Empty: no colour by index (every part its colour).
+    // With a palette, trunk, leaves and organs are coloured by index in the exports' vertex
+    // colours (export/index_colors.h).
+    std::vector<glm::vec3> palette;
 };
+
+// Colour indices past this are refused in template files: more than any colour map needs.
+inline constexpr std::size_t kMaxPaletteColors = 256;
 
 // The turtle's frame (docs/grammar.md): ABOP's H, L, U, or Heuer's (2022) elevation and
 // azimuth.

@@ -1,5 +1,6 @@
-// Collision shapes for game engines: a convex hull around the bottom of the trunk (up to
-// the first branch, at least a quarter of the tree's height) and one around each of the
+// Collision shapes for game engines: a convex hull around the bottom of the trunk (from
+// the ground up to the first branch, at least a quarter of the tree's height, as wide as
+// the trunk's segments there) and one around each of the
 // largest crown pieces. Hulls, not the render mesh: engines collide fastest with few
 // convex pieces, and Unreal's UCX_ / Godot's -convcolonly want convex ones.
 #pragma once

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "export/fbx_writer.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
@@ -18,6 +19,7 @@ const ExportFormat* const kFormats[] = {
     &obj_format,
     &glb_format,
     &ply_format,
+    &fbx_format,
 };
 
 std::string lower(std::string_view text) {
@@ -51,6 +53,14 @@ std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& p
     return names;
 }
 
+std::filesystem::path texture_file_name(const std::filesystem::path& path, std::string_view texture,
+                                        std::string_view map) {
+    std::filesystem::path file = path;
+    file.replace_filename(path.stem().string() + "_" + std::string(texture) + "_" +
+                          std::string(map) + ".png");
+    return file;
+}
+
 std::span<const ExportFormat* const> export_formats() {
     return kFormats;
 }
@@ -79,12 +89,28 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options,
-                                                   const ExportFormat* format) {
+                                                   const ExportFormat* format,
+                                                   const std::function<void(FileSet&)>& extra) {
     const ExportFormat& chosen = resolve(path, format);
     // Siblings (an .mtl, the other levels) go beside the file a symlink at `path` points to.
     FileSet files;
-    chosen.write(files, output_target(path), levels, options);
+    const std::filesystem::path target = output_target(path);
+    chosen.write(files, target, levels, options);
+    for (const ExportOptions::Sidecar& sidecar : options.sidecars) {
+        std::filesystem::path file = target;
+        file.replace_filename(target.stem().string() + sidecar.suffix);
+        files.add(file, [&sidecar](std::ostream& out) { out << sidecar.text; });
+    }
+    if (extra) extra(files);
     return files.commit();
+}
+
+std::string format_names() {
+    std::string names;
+    const std::size_t n = std::size(kFormats);
+    for (std::size_t i = 0; i < n; ++i)
+        names += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + std::string(kFormats[i]->name);
+    return names;
 }
 
 }  // namespace sylva

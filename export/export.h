@@ -4,7 +4,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -12,7 +14,7 @@
 
 namespace sylva {
 
-// Every format: obj, glb, ply.
+// Every format: obj, glb, ply, fbx.
 std::span<const ExportFormat* const> export_formats();
 
 // By extension, any letter case (".OBJ" is obj); nullptr for none of them.
@@ -33,13 +35,20 @@ std::vector<std::filesystem::path> write_model(const std::filesystem::path& path
                                                const ExportOptions& options = {},
                                                const ExportFormat* format = nullptr);
 
-// levels[0] is the finest. .glb: one file with a node per level (write_glb_lods); .obj and
+// levels[0] is the finest. .glb and .fbx: one file with a node per level (write_glb_lods,
+// an FBX LOD group); .obj and
 // .ply: one file per level as lod_file_names() says (OBJ: plus one shared `<stem>.mtl`),
 // each level's parts named as given. Returns the files written. Errors and all-or-nothing
 // as write_model(): a level that fails leaves no file of any level.
+// `extra`, when given, adds more files to the same set before it is committed (write_tree()'s
+// engine kit), so they land together with the model or not at all.
 std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& path,
                                                    const std::vector<ModelParts>& levels,
                                                    const ExportOptions& options = {},
-                                                   const ExportFormat* format = nullptr);
+                                                   const ExportFormat* format = nullptr,
+                                                   const std::function<void(FileSet&)>& extra = {});
+
+// "obj, glb, ply or fbx": every format's name, for messages.
+std::string format_names();
 
 }  // namespace sylva

@@ -38,6 +38,18 @@ struct EngineSettings {
     bool palette = false;
 };
 
+// The far levels write_tree() appends after the tree's own (impostor/, docs/impostors.md):
+// an octahedral impostor (one quad, an atlas of views, a shader in the engine kits), a
+// billboard of crossed quads any importer shows, or both (billboard first).
+enum class ImpostorKind { None, Octahedral, Billboard, Both };
+struct ImpostorOptions {
+    ImpostorKind kind = ImpostorKind::None;
+    int size = 1024;          // atlas side in pixels
+    int views = 8;            // N x N views
+    bool depth = true;        // depth in the normal atlas's alpha (the shaders' parallax)
+    int billboard_quads = 3;  // 2 or 3
+};
+
 struct ExportOptions {
     Shading shading = Shading::Flat;
     // Smooth shading only: faces meeting at more than this many degrees stay sharp.
@@ -46,12 +58,27 @@ struct ExportOptions {
     bool ply_binary = true;
     // The model's name: glTF root node, and with _LOD0.. the level nodes of a LOD chain.
     std::string model_name = "tree";
+    // Material names become `<prefix>_<part>` (write_tree() puts it on the parts; empty:
+    // the part names). material_prefix() (export/export_tree.h) makes one per tree, so
+    // trees imported into one engine project do not share materials by name.
+    std::string material_prefix{};
     // The engine whose conventions the export follows (export/engine_profile.h).
     EngineProfile profile = EngineProfile::Generic;
     EngineSettings engine{};  // read by write_tree(), not by the writers
+    // write_tree() also writes the profile's engine import kit here (export/engine_kit.h),
+    // as one transaction with the model; empty: no kit.
+    std::filesystem::path engine_kit{};
     // The palette texture's PNG when the parts' UVs point into it (write_tree() sets it
     // with engine.palette): embedded in a glb, `<stem>_palette.png` beside an OBJ.
     std::vector<std::uint8_t> palette_png{};
+    ImpostorOptions impostor{};  // read by write_tree(), not by the writers
+    // Files beside the model, `<stem><suffix>` (the impostor's layout JSON), written and
+    // committed with it by write_lod_chain(); write_tree() fills it.
+    struct Sidecar {
+        std::string suffix;
+        std::string text;
+    };
+    std::vector<Sidecar> sidecars{};
 };
 
 // One level of detail: the parts of a model.
@@ -74,5 +101,10 @@ struct ExportFormat {
 // file per level.
 std::vector<std::filesystem::path> lod_file_names(const std::filesystem::path& path,
                                                   std::size_t levels);
+
+// `<stem>_<texture>_<map>.png` beside `path` (map: albedo, normal): where a writer that
+// does not embed a part's textures (PartTextures) puts them.
+std::filesystem::path texture_file_name(const std::filesystem::path& path, std::string_view texture,
+                                        std::string_view map);
 
 }  // namespace sylva

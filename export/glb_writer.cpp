@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
 
@@ -60,6 +62,9 @@ class GltfBuilder {
         if (added) add_mesh(part, mat, name);
         const int node = add_group(parent, name);
         model_.nodes[static_cast<std::size_t>(node)].mesh = shared->second;
+        if (part.textures && !part.textures->extras_json.empty())
+            model_.nodes[static_cast<std::size_t>(node)].extras =
+                gltf_value(nlohmann::json::parse(part.textures->extras_json));
     }
 
     void write(std::ostream& out) {
@@ -125,6 +130,34 @@ class GltfBuilder {
         return out;
     }
 
+    // Per vertex, the direction of increasing u and in w the sign that makes
+    // cross(normal, tangent) run up the image (v up, as PartAttributes' v runs; glTF's
+    // normal maps are +Y up): a normal map then reads the same in every engine, as the
+    // validator asks, instead of a tangent space each runtime generates its own way.
+    static std::vector<glm::vec4> tangents(const Vertices& v) {
+        std::vector<glm::vec4> out(v.positions.size(), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+        for (std::size_t k = 0; k + 2 < v.indices.size(); k += 3) {
+            const std::uint32_t a = v.indices[k], b = v.indices[k + 1], c = v.indices[k + 2];
+            const glm::vec3 e1 = v.positions[b] - v.positions[a],
+                            e2 = v.positions[c] - v.positions[a];
+            const glm::vec2 d1 = v.uv[b] - v.uv[a], d2 = v.uv[c] - v.uv[a];
+            const float det = d1.x * d2.y - d2.x * d1.y;
+            if (det == 0.0f) continue;  // no UV area: keep the default
+            const glm::vec3 t = (e1 * d2.y - e2 * d1.y) / det;
+            const glm::vec3 bitangent = (e2 * d1.x - e1 * d2.x) / det;
+            for (std::uint32_t i : {a, b, c}) {
+                const glm::vec3& n = v.normals[i];
+                const glm::vec3 orthogonal = t - n * glm::dot(n, t);  // Gram-Schmidt
+                const float length = glm::length(orthogonal);
+                if (!(length > 0.0f)) continue;
+                const float w =
+                    glm::dot(glm::cross(n, orthogonal), bitangent) < 0.0f ? -1.0f : 1.0f;
+                out[i] = glm::vec4(orthogonal / length, w);
+            }
+        }
+        return out;
+    }
+
     void add_mesh(const NamedMesh& part, int mat, const std::string& name) {
         const Vertices v = vertices(part);
         tinygltf::Primitive primitive;
@@ -132,6 +165,8 @@ class GltfBuilder {
         primitive.attributes["POSITION"] = add_vec3(v.positions, true);
         if (!part.collision) {
             primitive.attributes["NORMAL"] = add_vec3(v.normals, false);
+            if (part.textures && !part.textures->normal_png.empty() && !v.uv.empty())
+                primitive.attributes["TANGENT"] = add_floats(tangents(v));
             add_engine_attributes(primitive, part, v);
             primitive.material = mat;
         }
@@ -173,13 +208,22 @@ class GltfBuilder {
             for (std::uint32_t s : v.source) w.push_back(a.wind[s]);
             primitive.attributes["COLOR_1"] = add_normalized<std::uint8_t>(w);
         } else {
+            const ProfileInfo& profile = profile_info(options_.profile);
+            // Unity's importers flip v on every set: written flipped, it arrives as in the
+            // other profiles.
+            auto v_of = [&](float y) { return profile.wind_v_flipped ? 1.0f - y : y; };
             std::vector<glm::vec2> w1, w2;
             for (std::uint32_t s : v.source) {
-                w1.push_back({a.wind[s].x, a.wind[s].y});
-                w2.push_back({a.wind[s].z, a.wind[s].w});
+                w1.push_back({a.wind[s].x, v_of(a.wind[s].y)});
+                w2.push_back({a.wind[s].z, v_of(a.wind[s].w)});
             }
-            primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
-            primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
+            if (profile.wind_as_floats) {
+                primitive.attributes["TEXCOORD_1"] = add_floats(w1);
+                primitive.attributes["TEXCOORD_2"] = add_floats(w2);
+            } else {
+                primitive.attributes["TEXCOORD_1"] = add_normalized<std::uint16_t>(w1);
+                primitive.attributes["TEXCOORD_2"] = add_normalized<std::uint16_t>(w2);
+            }
         }
     }
 
@@ -278,14 +322,24 @@ class GltfBuilder {
         return static_cast<int>(model_.accessors.size()) - 1;
     }
 
-    // One material per part name, shared by every LOD level.
+    // One material per material name, shared by every LOD level.
     int material(const NamedMesh& part) {
-        auto found = materials_.find(part.name);
+        const std::string& name = material_name(part);
+        auto found = materials_.find(name);
         if (found != materials_.end()) return found->second;
         tinygltf::Material m;
-        m.name = part.name;
+        m.name = name;
         m.pbrMetallicRoughness.baseColorFactor = {part.color.r, part.color.g, part.color.b, 1.0};
-        if (!options_.palette_png.empty()) {  // the swatches carry the colour
+        if (part.textures) {  // the images carry colour and normals, alpha-tested
+            const PartTextures& t = *part.textures;
+            m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+            m.pbrMetallicRoughness.baseColorTexture.index =
+                image_texture(t.name + "_albedo", t.albedo_png);
+            if (!t.normal_png.empty())
+                m.normalTexture.index = image_texture(t.name + "_normal", t.normal_png);
+            m.alphaMode = "MASK";
+            m.alphaCutoff = t.alpha_cutoff;
+        } else if (!options_.palette_png.empty()) {  // the swatches carry the colour
             m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
             m.pbrMetallicRoughness.baseColorTexture.index = palette_texture();
         }
@@ -294,13 +348,57 @@ class GltfBuilder {
         m.doubleSided = !part.closed;
         model_.materials.push_back(m);
         const int index = static_cast<int>(model_.materials.size()) - 1;
-        materials_[part.name] = index;
+        materials_[name] = index;
         return index;
     }
 
-    // The palette PNG as the one image, texture and (nearest, clamped) sampler; made once.
+    // A PNG as an image and a texture with a trilinear, clamped sampler (made once, shared):
+    // the impostors' textures, minified far away. Returns the texture's index.
+    int image_texture(const std::string& name, const std::vector<std::uint8_t>& png) {
+        if (mipmapped_sampler_ < 0) {
+            tinygltf::Sampler sampler;
+            sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+            sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+            sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            model_.samplers.push_back(sampler);
+            mipmapped_sampler_ = static_cast<int>(model_.samplers.size()) - 1;
+        }
+        tinygltf::Image image;
+        image.name = name;
+        image.mimeType = "image/png";
+        image.bufferView = add_view(png.data(), png.size(), 0);
+        model_.images.push_back(image);
+        tinygltf::Texture texture;
+        texture.name = name;
+        texture.source = static_cast<int>(model_.images.size()) - 1;
+        texture.sampler = mipmapped_sampler_;
+        model_.textures.push_back(texture);
+        return static_cast<int>(model_.textures.size()) - 1;
+    }
+
+    // JSON (extras) as tinygltf's value tree.
+    static tinygltf::Value gltf_value(const nlohmann::json& j) {
+        if (j.is_object()) {
+            tinygltf::Value::Object object;
+            for (const auto& [key, value] : j.items()) object[key] = gltf_value(value);
+            return tinygltf::Value(std::move(object));
+        }
+        if (j.is_array()) {
+            tinygltf::Value::Array array;
+            for (const auto& value : j) array.push_back(gltf_value(value));
+            return tinygltf::Value(std::move(array));
+        }
+        if (j.is_string()) return tinygltf::Value(j.get<std::string>());
+        if (j.is_boolean()) return tinygltf::Value(j.get<bool>());
+        if (j.is_number_integer()) return tinygltf::Value(j.get<int>());
+        if (j.is_number()) return tinygltf::Value(j.get<double>());
+        return {};
+    }
+
+    // The palette PNG as an image, texture and (nearest, clamped) sampler; made once.
     int palette_texture() {
-        if (!model_.textures.empty()) return 0;
+        if (palette_texture_ >= 0) return palette_texture_;
         tinygltf::Image image;
         image.name = "palette";
         image.mimeType = "image/png";
@@ -313,16 +411,19 @@ class GltfBuilder {
         sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
         model_.samplers.push_back(sampler);
         tinygltf::Texture texture;
-        texture.source = 0;
-        texture.sampler = 0;
+        texture.source = static_cast<int>(model_.images.size()) - 1;
+        texture.sampler = static_cast<int>(model_.samplers.size()) - 1;
         model_.textures.push_back(texture);
-        return 0;
+        palette_texture_ = static_cast<int>(model_.textures.size()) - 1;
+        return palette_texture_;
     }
 
     const ExportOptions& options_;
     tinygltf::Model model_;
     std::vector<unsigned char> bytes_;
     std::map<std::string, int> materials_;
+    int palette_texture_ = -1;
+    int mipmapped_sampler_ = -1;
     std::map<std::tuple<const Mesh*, const PartAttributes*, int>, int> meshes_;
 };
 

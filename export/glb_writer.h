@@ -4,9 +4,13 @@
 // double-sided. Flat shading splits vertices per triangle so every face carries its own
 // normal; smooth shares them except at creases and UV seams. A part's attributes
 // (export/named_mesh.h) become TEXCOORD_0 (v flipped to glTF's v down), COLOR_0 (the
-// tint) and the wind in the profile's channel (export/engine_profile.h); collision parts
+// tint) and the wind in the profile's channel, number type and v direction
+// (export/engine_profile.h); materials are named as material_name() says; collision parts
 // are bare POSITION + indices without material, once under the root; a palette
-// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture.
+// (ExportOptions::palette_png) is embedded as the materials' baseColorTexture. A part with
+// its own textures (NamedMesh::textures: the impostor levels) gets them embedded as its
+// material's baseColorTexture and normalTexture (trilinear, clamped), alphaMode MASK,
+// TANGENTs from its UVs, and their extras JSON on its node.
 #pragma once
 
 #include <filesystem>
@@ -29,7 +33,7 @@ void write_glb(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 
 // A LOD chain in one file: the root node has a child `<model_name>_LOD<i>` per level, whose
 // children are the level's parts named `<part>_LOD<i>` (the suffixes Unity, Unreal and
-// Godot group into LODs). Materials are shared across levels (one per part name).
+// Godot group into LODs). Materials are shared across levels (one per material name).
 void write_glb_lods(std::ostream& out, const std::vector<std::vector<NamedMesh>>& levels,
                     const ExportOptions& options);
 void write_glb_lods(const std::filesystem::path& path,

@@ -1,9 +1,10 @@
-// A part of a model as the exporters see it: a name, a mesh, a colour, whether it is a
-// closed solid, and optionally what engines want on top (UVs, tints, wind; a collision
-// shape). The writers (OBJ, glTF, PLY) take lists of these.
+// A part of a model as the exporters see it: a name, a mesh, a colour, a material name,
+// whether it is a closed solid, and optionally what engines want on top (UVs, tints, wind; a
+// collision shape). The writers (OBJ, glTF, PLY) take lists of these.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -30,6 +31,17 @@ struct PartAttributes {
     std::vector<glm::vec4> wind;
 };
 
+// Images a part's colour comes from (an impostor's atlas, a billboard's views): the part's
+// UVs point into them. Writers embed them (glb) or write them beside the model
+// (texture_file_name() in export/export_options.h) and alpha-test the colour's alpha.
+struct PartTextures {
+    std::string name;                      // "impostor": glTF images impostor_albedo, ...
+    std::vector<std::uint8_t> albedo_png;  // sRGB colour, straight alpha
+    std::vector<std::uint8_t> normal_png;  // tangent-space normals for the UVs (linear); or empty
+    float alpha_cutoff = 0.5f;
+    std::string extras_json;  // a JSON object for the part's glTF node `extras`, or empty
+};
+
 struct NamedMesh {
     std::string name;  // the OBJ group and material, the glTF node, mesh and material
     const Mesh* mesh = nullptr;
@@ -41,6 +53,15 @@ struct NamedMesh {
     // A collision shape (a convex hull): written without material, colour or attributes,
     // once per model (not per LOD level), and left out of PLY.
     bool collision = false;
+    // The material's name when it is not the part's: `oak_s1_trunk` for the trunk of one
+    // tree, so two trees imported into one engine project keep two materials.
+    std::string material{};
+    const PartTextures* textures = nullptr;  // none when null: the colour is `color`
 };
+
+// The name of the part's material: NamedMesh::material, else the part's name.
+inline const std::string& material_name(const NamedMesh& part) {
+    return part.material.empty() ? part.name : part.material;
+}
 
 }  // namespace sylva

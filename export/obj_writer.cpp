@@ -95,7 +95,7 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
         // distinct corner UV, so seams split no vertex.
         const ShadedMesh shaded = flat ? ShadedMesh{} : smooth_shaded(mesh, options.crease_degrees);
         const std::string group = part.name + std::string(group_suffix);
-        out << "o " << group << "\ng " << group << "\nusemtl " << part.name << "\n"
+        out << "o " << group << "\ng " << group << "\nusemtl " << material_name(part) << "\n"
             << (flat ? "s off\n" : "s 1\n");
         const bool tinted = attributes && !attributes->tint.empty();
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -153,12 +153,24 @@ void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
     }
 }
 
-void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts, std::string_view texture) {
+void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts, std::string_view texture,
+               const std::filesystem::path& model_path) {
     out << "# Sylva materials: Kd is the part's base colour, linear RGB\n";
     std::string line;
     for (const NamedMesh& part : parts) {
         if (!has_triangles(part) || part.collision) continue;
-        out << "\nnewmtl " << part.name << "\n";
+        out << "\nnewmtl " << material_name(part) << "\n";
+        if (part.textures) {  // alpha-tested images: the map's alpha is the cut-out
+            const PartTextures& t = *part.textures;
+            const std::string albedo =
+                texture_file_name(model_path, t.name, "albedo").filename().string();
+            out << "Ka 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 10\nd 1\nillum 1\nmap_Kd " << albedo
+                << "\nmap_d " << albedo << "\n";
+            if (!t.normal_png.empty())
+                out << "norm "
+                    << texture_file_name(model_path, t.name, "normal").filename().string() << "\n";
+            continue;
+        }
         out << "Ka 0 0 0\n";
         append_vector(line, "Kd", texture.empty() ? part.color : glm::vec3(1.0f));
         out << line;
@@ -184,6 +196,29 @@ std::string add_palette(FileSet& files, const std::filesystem::path& path,
     return png.filename().string();
 }
 
+// The PNGs of every part with textures (once each), beside `path` as texture_file_name()
+// names them.
+void add_part_textures(FileSet& files, const std::filesystem::path& path,
+                       const std::vector<ModelParts>& levels) {
+    std::vector<const PartTextures*> done;
+    auto add = [&](const std::string& name, std::string_view map,
+                   const std::vector<std::uint8_t>& bytes) {
+        files.add(texture_file_name(path, name, map), [&bytes](std::ostream& out) {
+            out.write(reinterpret_cast<const char*>(bytes.data()),
+                      static_cast<std::streamsize>(bytes.size()));
+        });
+    };
+    for (const ModelParts& level : levels)
+        for (const NamedMesh& part : level) {
+            const PartTextures* t = part.textures;
+            if (!t || !has_triangles(part) || std::find(done.begin(), done.end(), t) != done.end())
+                continue;
+            done.push_back(t);
+            add(t->name, "albedo", t->albedo_png);
+            if (!t->normal_png.empty()) add(t->name, "normal", t->normal_png);
+        }
+}
+
 }  // namespace
 
 namespace {
@@ -196,8 +231,9 @@ void add_obj_with_mtl(FileSet& files, const std::filesystem::path& path,
         write_obj_with_mtl(out, parts, options, mtl.filename().string());
     });
     files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
-        write_mtl(out, parts, texture);
+        write_mtl(out, parts, texture, path);
     });
+    add_part_textures(files, path, {parts});
 }
 
 }  // namespace
@@ -222,12 +258,14 @@ void add_obj_files(FileSet& files, const std::filesystem::path& path,
     for (const auto& level : levels)
         for (const NamedMesh& part : level)
             if (part.mesh && !part.mesh->triangles.empty() && !part.collision &&
-                std::none_of(all_parts.begin(), all_parts.end(),
-                             [&](const NamedMesh& p) { return p.name == part.name; }))
+                std::none_of(all_parts.begin(), all_parts.end(), [&](const NamedMesh& p) {
+                    return material_name(p) == material_name(part);
+                }))
                 all_parts.push_back(part);
     files.add(mtl, [&, texture = add_palette(files, path, options)](std::ostream& out) {
-        write_mtl(out, all_parts, texture);
+        write_mtl(out, all_parts, texture, path);
     });
+    add_part_textures(files, path, levels);
     const std::vector<std::filesystem::path> names = lod_file_names(path, levels.size());
     for (std::size_t i = 0; i < levels.size(); ++i)
         files.add(names[i], [&](std::ostream& out) {

@@ -29,15 +29,18 @@ void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& 
 // per part `o` and `g` with the part's name + `group_suffix` (`_LOD<i>` in a chain, so
 // engines group the levels), `usemtl` with the part's name (materials are shared by the
 // levels), `v`, `vn` and `f v//vn` lines. Empty parts are left out.
+// Materials are named as material_name() (export/named_mesh.h) says.
 void write_obj_with_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
                         const ExportOptions& options, std::string_view mtl_file_name,
                         std::string_view group_suffix = {});
 
 // One `newmtl` per non-empty part: Kd = its colour (linear RGB, as glTF's
 // baseColorFactor), no specular. With a `texture` (the palette, export/palette.h): Kd 1 1 1
-// and `map_Kd texture`.
+// and `map_Kd texture`. A part with its own textures (PartTextures) gets Kd 1 1 1, map_Kd
+// and map_d on its albedo and `norm` on its normal map, named as texture_file_name() says
+// for a model at `model_path`.
 void write_mtl(std::ostream& out, const std::vector<NamedMesh>& parts,
-               std::string_view texture = {});
+               std::string_view texture = {}, const std::filesystem::path& model_path = {});
 
 // Writes `path` and its material library (`path` with the extension .mtl) as one
 // transaction (core/file_set.h): both or neither. Returns both paths. Throws IoError naming

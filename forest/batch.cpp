@@ -151,7 +151,8 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
         TreeTemplate variant = settings.tree;
         variant.params = item.params;
         const std::vector<ModelParts> levels =
-            finished_parts(generated[k]->tree, generated[k]->finished, tree_colors(variant));
+            finished_parts(generated[k]->tree, generated[k]->finished, tree_colors(variant),
+                           material_prefix(settings.tree.name, item.seed));
         item.triangles = triangles_of(levels);
         format->write(files, dir / item.file, levels, settings.export_options);
         nlohmann::ordered_json parameters = nlohmann::ordered_json::object();

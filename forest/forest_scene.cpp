@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cmath>
+#include <glm/vec3.hpp>
 #include <map>
 #include <sstream>
 
@@ -124,9 +125,19 @@ class SceneBuilder {
         return static_cast<int>(model_.accessors.size()) - 1;
     }
 
-    void require(const std::string& extension) {
-        model_.extensionsUsed.push_back(extension);
-        model_.extensionsRequired.push_back(extension);
+    void use(const std::string& extension) { model_.extensionsUsed.push_back(extension); }
+
+    // A root node in a scene of its own (after the default one); returns the node.
+    int add_scene(const std::string& name) {
+        tinygltf::Node root;
+        root.name = name;
+        model_.nodes.push_back(root);
+        const int index = static_cast<int>(model_.nodes.size()) - 1;
+        tinygltf::Scene scene;
+        scene.name = name;
+        scene.nodes.push_back(index);
+        model_.scenes.push_back(scene);
+        return index;
     }
 
     void write(std::ostream& out) {
@@ -186,38 +197,56 @@ void write_forest_glb(std::ostream& out, std::span<const SceneVariant> variants,
     for (const SceneVariant& v : variants)
         builder.add_variant(variant_model(v, options), v.material_prefix);
 
-    if (instancing == Instancing::Nodes) {
-        for (std::size_t i = 0; i < instances.size(); ++i) {
-            const SceneInstance& inst = instances[i];
-            tinygltf::Node node;
-            node.name = inst.name;
-            node.translation = {inst.position.x, inst.position.y, inst.position.z};
-            node.rotation = yaw_quaternion(inst.yaw_degrees);
-            node.scale = {inst.scale, inst.scale, inst.scale};
-            tinygltf::Value::Object extras;
-            extras["sylva_variant"] = tinygltf::Value(variants[inst.variant].name);
-            extras["sylva_row"] = tinygltf::Value(static_cast<int>(i));
-            node.extras = tinygltf::Value(extras);
-            const int index = builder.add_node(0, std::move(node));
-            builder.clone_children(inst.variant, index, inst.name + "_", true,
-                                   [](tinygltf::Node&) {});
-        }
-    } else {
-        builder.require("EXT_mesh_gpu_instancing");
+    // Every reader loads the default scene: a node per tree. Nodes share the variants' meshes.
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const SceneInstance& inst = instances[i];
+        tinygltf::Node node;
+        node.name = inst.name;
+        node.translation = {inst.position.x, inst.position.y, inst.position.z};
+        node.rotation = yaw_quaternion(inst.yaw_degrees);
+        node.scale = {inst.scale, inst.scale, inst.scale};
+        tinygltf::Value::Object extras;
+        extras["sylva_variant"] = tinygltf::Value(variants[inst.variant].name);
+        extras["sylva_row"] = tinygltf::Value(static_cast<int>(i));
+        node.extras = tinygltf::Value(extras);
+        const int index = builder.add_node(0, std::move(node));
+        builder.clone_children(inst.variant, index, inst.name + "_", true, [](tinygltf::Node&) {});
+    }
+    if (instancing == Instancing::Gpu) {
+        // The same forest GPU-instanced, in a second scene for readers that pick it; the
+        // extension is used, never required, so readers without it still load the first.
+        builder.use("EXT_mesh_gpu_instancing");
+        // Each variant's group stands where its first tree stands and the instances are
+        // relative to it: a reader that loads every scene's nodes without the extension
+        // (Blender 3.4) draws that one extra copy exactly over the first tree.
+        const int root = builder.add_scene("forest_gpu_instanced");
         for (std::size_t v = 0; v < variants.size(); ++v) {
             std::vector<float> translation, rotation, scale;
+            const SceneInstance* first = nullptr;
             for (const SceneInstance& inst : instances) {
                 if (inst.variant != v) continue;
-                translation.insert(translation.end(),
-                                   {inst.position.x, inst.position.y, inst.position.z});
-                for (double q : yaw_quaternion(inst.yaw_degrees))
+                if (!first) first = &inst;
+                // first^-1 * inst, for a turn about Y and a uniform scale.
+                const double turn = -static_cast<double>(first->yaw_degrees) * M_PI / 180.0;
+                const glm::dvec3 d =
+                    glm::dvec3(inst.position - first->position) / static_cast<double>(first->scale);
+                translation.insert(
+                    translation.end(),
+                    {static_cast<float>(d.x * std::cos(turn) + d.z * std::sin(turn)),
+                     static_cast<float>(d.y),
+                     static_cast<float>(-d.x * std::sin(turn) + d.z * std::cos(turn))});
+                for (double q : yaw_quaternion(inst.yaw_degrees - first->yaw_degrees))
                     rotation.push_back(static_cast<float>(q));
-                scale.insert(scale.end(), {inst.scale, inst.scale, inst.scale});
+                const float relative = inst.scale / first->scale;
+                scale.insert(scale.end(), {relative, relative, relative});
             }
-            if (translation.empty()) continue;
+            if (!first) continue;
             tinygltf::Node group;
             group.name = variants[v].name;
-            const int index = builder.add_node(0, std::move(group));
+            group.translation = {first->position.x, first->position.y, first->position.z};
+            group.rotation = yaw_quaternion(first->yaw_degrees);
+            group.scale = {first->scale, first->scale, first->scale};
+            const int index = builder.add_node(root, std::move(group));
             tinygltf::Value::Object attributes;
             attributes["TRANSLATION"] =
                 tinygltf::Value(builder.add_floats(translation, 3, TINYGLTF_TYPE_VEC3));

@@ -9,10 +9,11 @@
 //   tree (`tree_00012_trunk_LOD0`: the `_LOD<i>` engines look for stays last). Every glTF 2.0
 //   reader takes it (Blender 3.4 imports linked duplicates); extras on the tree node name
 //   the species, the variant and the placement row.
-// - Gpu: EXT_mesh_gpu_instancing (listed as required): one node per variant part whose
-//   instances are TRANSLATION/ROTATION/SCALE accessors. Far smaller for big forests and what
-//   engines draw in one call, but readers without the extension (Blender before 3.6) refuse
-//   the file.
+// - Gpu: the same default scene (every reader, with or without the extension, places every
+//   tree), plus a second scene `forest_gpu_instanced` using EXT_mesh_gpu_instancing (used,
+//   never required): one node per variant part whose instances are
+//   TRANSLATION/ROTATION/SCALE accessors, what engines draw in one call. Readers that
+//   support the extension load that scene by index (glTFast, three.js, Babylon.js).
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,6 @@
 // Fuzzes the expression compiler: compile with two variables (x, y) and a constant (c),
-// then evaluate with ordinary and extreme variable values.
+// then evaluate with ordinary and extreme variable values, without a noise field and with
+// the gradient and a value noise.
 #include <limits>
 #include <vector>
 
@@ -22,10 +23,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::vector<std::vector<double>> inputs = {{0.0, 1.0}, {-1.5, 1e-300}, {big, -big}};
         for (const std::vector<double>& variables : inputs) {
             // Each evaluation may fail alone (1/x at x = 0), so each is guarded.
-            expect_only_input_errors([&] {
-                Random random(7);
-                (void)e.evaluate(variables, random);
-            });
+            static const NoiseField gradient(7), value(7, NoiseKind::value_cubic);
+            for (const NoiseField* noise :
+                 {static_cast<const NoiseField*>(nullptr), &gradient, &value})
+                expect_only_input_errors([&] {
+                    Random random(7);
+                    (void)e.evaluate(variables, random, noise);
+                });
         }
     });
     return 0;

@@ -25,6 +25,12 @@ double ccw_gap(const Directions& dirs, int from, int to) {
 
 }  // namespace
 
+double Directions::length_of(const Label& l) const {
+    const auto it = label_length.find(l);
+    if (it != label_length.end() && it->second > 0) return it->second;
+    return l.dir >= 0 && l.dir < static_cast<int>(mean_length.size()) ? mean_length[l.dir] : 1.0;
+}
+
 int AngleGraph::half_edges() const {
     int n = 0;
     for (const auto& v : vertices)
@@ -75,6 +81,12 @@ int boundary_match(const Boundary& a, const Boundary& b) {
         if (same) return static_cast<int>(r);
     }
     return -1;
+}
+
+int Analysis::polygons() const {
+    int n = 0;
+    for (const Walk& w : walks) n += w.items.empty() && w.turning < 0 && w.color > 0;
+    return n;
 }
 
 Analysis analyze(const AngleGraph& g, const Directions& dirs) {
@@ -174,48 +186,42 @@ Analysis analyze(const AngleGraph& g, const Directions& dirs) {
             out.walks.push_back(std::move(walk));
         }
     const int nw = static_cast<int>(out.walks.size());
-    int outer = -1;
     for (int w = 0; w < nw; ++w) {
         const Walk& walk = out.walks[w];
-        if (!walk.items.empty()) {
-            if (out.open_walk >= 0) {
-                out.why = "half-edges on more than one boundary";
+        const bool open = !walk.items.empty();
+        if (open) out.open_walks.push_back(w);
+        if (near(walk.turning, 360.0)) {
+            if (out.outer >= 0) {
+                out.why = "two walks turn by +360 degrees";
                 return out;
             }
-            out.open_walk = w;
-            if (!near(walk.turning, 360.0)) {
-                out.why = "the boundary does not turn by 360 degrees";
+            if (!open && walk.color != 0) {
+                out.why = "the outside face has a colour";
                 return out;
             }
-            continue;
-        }
-        if (walk.color < 0) {
-            out.why = "a face with two colours";
-            return out;
-        }
-        if (near(walk.turning, 360.0) && walk.color == 0 && outer < 0) {
-            outer = w;
+            out.outer = w;
             continue;
         }
         if (!near(walk.turning, -360.0)) {
-            out.why = "a face does not turn by -360 degrees";
+            out.why = open ? "a boundary does not turn by 360 degrees"
+                           : "a face does not turn by -360 degrees";
+            return out;
+        }
+        if (!open && walk.color < 0) {
+            out.why = "a face with two colours";
             return out;
         }
     }
-    if (out.open_walk < 0 && outer < 0) {
+    if (out.outer < 0) {
         out.why = "no outside face";
-        return out;
-    }
-    if (out.open_walk >= 0 && outer >= 0) {
-        out.why = "an outside face and half-edges";
         return out;
     }
     if (nv - g.edges() + nw != 2) {
         out.why = "Euler's formula fails (the embedding is not planar)";
         return out;
     }
-    out.complete = out.open_walk < 0;
-    if (!out.complete) out.boundary = out.walks[out.open_walk].items;
+    out.complete = out.open_walks.empty();
+    if (out.single_boundary()) out.boundary = out.walks[out.outer].items;
     out.planar = true;
     return out;
 }
@@ -242,13 +248,20 @@ Example make_example(const PolygonMesh& mesh) {
     for (double a : all)
         if (ex.dirs.degrees.empty() || a - ex.dirs.degrees.back() > 1e-4)
             ex.dirs.degrees.push_back(a);
+    if (ex.dirs.degrees.size() > static_cast<std::size_t>(kMaxDirections))
+        throw InputError("more than " + std::to_string(kMaxDirections) + " edge directions");
+    // The nearest direction, by binary search (an example may have as many directions as
+    // edges).
     auto dir_of = [&](double deg) {
         if (deg >= 360.0 - 1e-4) deg -= 360.0;
-        int best = 0;
-        for (std::size_t i = 0; i < ex.dirs.degrees.size(); ++i)
-            if (std::abs(ex.dirs.degrees[i] - deg) < std::abs(ex.dirs.degrees[best] - deg))
-                best = static_cast<int>(i);
-        return best;
+        const auto& ds = ex.dirs.degrees;
+        const auto it = std::lower_bound(ds.begin(), ds.end(), deg);
+        std::size_t best =
+            it == ds.end() ? ds.size() - 1 : static_cast<std::size_t>(it - ds.begin());
+        if (best > 0 && std::abs(ds[best - 1] - deg) <= std::abs(ds[best] - deg)) --best;
+        // Near 0 the nearest may sit just below 360.
+        if (std::abs(ds.back() - 360.0 - deg) < std::abs(ds[best] - deg)) best = ds.size() - 1;
+        return static_cast<int>(best);
     };
     const int nd = static_cast<int>(ex.dirs.degrees.size());
     ex.dirs.opposite.resize(nd);
@@ -262,6 +275,8 @@ Example make_example(const PolygonMesh& mesh) {
             color_index[p.color] = ex.dirs.colors();
             ex.dirs.palette.push_back(p.color);
         }
+    if (ex.dirs.colors() > kMaxColors)
+        throw InputError("more than " + std::to_string(kMaxColors - 1) + " colours");
     // Darts: the polygon left of each directed edge.
     std::map<std::pair<int, int>, int> left_of;
     for (const Polygon& p : mesh.polygons)
@@ -282,9 +297,7 @@ Example make_example(const PolygonMesh& mesh) {
         const auto it = left_of.find({a, b});
         return it == left_of.end() ? 0 : it->second;
     };
-    const int nc = ex.dirs.colors();
-    std::vector<double> label_sum(static_cast<std::size_t>(nd) * nc * nc, 0.0);
-    std::vector<int> label_count(label_sum.size(), 0);
+    std::map<Label, std::pair<double, int>> label_sum;
     for (const auto& [e, unused] : undirected) {
         const int a = e.first, b = e.second;
         const int d = dir_of(angle_of(a, b));
@@ -294,16 +307,14 @@ Example make_example(const PolygonMesh& mesh) {
         const double len = glm::length(mesh.vertices[b] - mesh.vertices[a]);
         length_sum[d] += len, ++length_count[d];
         length_sum[ex.dirs.opposite[d]] += len, ++length_count[ex.dirs.opposite[d]];
-        const std::size_t forward =
-            (static_cast<std::size_t>(d) * nc + left(a, b)) * nc + left(b, a);
-        const std::size_t backward =
-            (static_cast<std::size_t>(ex.dirs.opposite[d]) * nc + left(b, a)) * nc + left(a, b);
-        label_sum[forward] += len, ++label_count[forward];
-        label_sum[backward] += len, ++label_count[backward];
+        for (const Label& l : {Label{d, left(a, b), left(b, a)},
+                               Label{ex.dirs.opposite[d], left(b, a), left(a, b)}}) {
+            auto& [sum, count] = label_sum[l];
+            sum += len;
+            ++count;
+        }
     }
-    ex.dirs.label_length.resize(label_sum.size());
-    for (std::size_t k = 0; k < label_sum.size(); ++k)
-        ex.dirs.label_length[k] = label_count[k] ? label_sum[k] / label_count[k] : 0.0;
+    for (const auto& [l, s] : label_sum) ex.dirs.label_length[l] = s.first / s.second;
     for (auto& ds : ex.graph.vertices) {
         std::sort(ds.begin(), ds.end(), [](const Dart& x, const Dart& y) { return x.dir < y.dir; });
         for (std::size_t i = 1; i < ds.size(); ++i)
@@ -317,47 +328,97 @@ Example make_example(const PolygonMesh& mesh) {
     return ex;
 }
 
-std::vector<int> canonical_code(const AngleGraph& g) {
-    std::vector<int> best;
-    const int nv = static_cast<int>(g.vertices.size());
-    std::vector<int> order(nv), index(nv);
-    for (int s = 0; s < nv; ++s) {
-        std::fill(index.begin(), index.end(), -1);
-        std::vector<int> code;
-        code.reserve(8 * nv);
-        int head = 0, count = 0;
-        order[count] = s;
-        index[s] = count++;
-        while (head < count) {
-            const int v = order[head++];
-            code.push_back(static_cast<int>(g.vertices[v].size()));
-            for (const Dart& d : g.vertices[v]) {
-                int target = -1;
-                if (d.to >= 0) {
-                    if (index[d.to] < 0) order[count] = d.to, index[d.to] = count++;
-                    target = index[d.to];
-                }
-                code.push_back(d.dir);
-                code.push_back(d.left);
-                code.push_back(target);
+namespace {
+
+// The code of g read breadth first from start vertex s (darts in counter-clockwise order fix
+// the order in which neighbours are numbered).
+void code_from(const AngleGraph& g, int s, std::vector<int>& order, std::vector<int>& index,
+               std::vector<int>& code) {
+    std::fill(index.begin(), index.end(), -1);
+    code.clear();
+    int head = 0, count = 0;
+    order[count] = s;
+    index[s] = count++;
+    while (head < count) {
+        const int v = order[head++];
+        code.push_back(static_cast<int>(g.vertices[v].size()));
+        for (const Dart& d : g.vertices[v]) {
+            int target = -1;
+            if (d.to >= 0) {
+                if (index[d.to] < 0) order[count] = d.to, index[d.to] = count++;
+                target = index[d.to];
             }
+            code.push_back(d.dir);
+            code.push_back(d.left);
+            code.push_back(target);
         }
-        if (best.empty() || code < best) best = std::move(code);
+    }
+}
+
+// What code_from() writes first for start v, without the walk: its star and which darts
+// are half-edges. Only starts with the smallest prefix can give the smallest code.
+std::vector<int> start_prefix(const AngleGraph& g, int v) {
+    std::vector<int> p{static_cast<int>(g.vertices[v].size())};
+    for (const Dart& d : g.vertices[v]) {
+        p.push_back(d.dir);
+        p.push_back(d.left);
+        p.push_back(d.to < 0 ? -1 : (d.to == v ? 0 : 1));
+    }
+    return p;
+}
+
+}  // namespace
+
+std::vector<int> canonical_code(const AngleGraph& g) {
+    const int nv = static_cast<int>(g.vertices.size());
+    std::vector<int> best_prefix;
+    std::vector<int> starts;
+    for (int v = 0; v < nv; ++v) {
+        std::vector<int> p = start_prefix(g, v);
+        if (starts.empty() || p < best_prefix) {
+            best_prefix = std::move(p);
+            starts.assign(1, v);
+        } else if (p == best_prefix) {
+            starts.push_back(v);
+        }
+    }
+    std::vector<int> best, code, order(nv), index(nv);
+    for (int s : starts) {
+        code_from(g, s, order, index, code);
+        if (best.empty() || code < best) best = code;
     }
     return best;
 }
 
+std::uint64_t code_hash(const std::vector<int>& code) {
+    std::uint64_t h = 0xcbf29ce484222325ULL ^ code.size();
+    for (int x : code) {
+        h ^= static_cast<std::uint32_t>(x);
+        h *= 0x100000001b3ULL;
+        h ^= h >> 29;
+    }
+    return h;
+}
+
+std::uint64_t label_number(const Label& l, const Directions& dirs) {
+    const auto c = static_cast<std::uint64_t>(dirs.colors());
+    return (static_cast<std::uint64_t>(l.dir) * c + static_cast<std::uint64_t>(l.left)) * c +
+           static_cast<std::uint64_t>(l.right);
+}
+
 std::string boundary_string(const Boundary& b, const Directions& dirs) {
     if (b.empty()) return "^";
-    const int c = dirs.colors();
     std::string out;
     for (const BoundaryItem& item : b) {
         const bool positive = dirs.degrees[item.label.dir] < 180.0;
         const Label l = positive ? item.label : reversed(item.label, dirs);
-        out += "e" + std::to_string((l.dir * c + l.left) * c + l.right) + (positive ? "" : "'");
+        out += "e" + std::to_string(label_number(l, dirs)) + (positive ? "" : "'");
         double psi = dirs.degrees[item.label.dir] + 90.0;
         if (psi >= 180.0) psi -= 360.0;
-        const int n = static_cast<int>(std::floor((psi + item.turn + 180.0) / 360.0 + 1e-9));
+        const double turns = std::floor((psi + item.turn + 180.0) / 360.0 + 1e-9);
+        // A boundary turns by at most 180 degrees per half-edge in either sense, so |turns| is
+        // small; the clamp only guards the conversion.
+        const int n = static_cast<int>(std::clamp(turns, -1e6, 1e6));
         for (int k = 0; k < std::abs(n); ++k) out += n > 0 ? "^" : "v";
         out += " ";
     }

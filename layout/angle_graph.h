@@ -1,4 +1,4 @@
-// The angle graph of Schröder 2024 (section 3.2.3) after Merrell 2023: vertices without
+// The angle graph of Schröder (2024, section 3.2.3) after Merrell (2023): vertices without
 // positions, edges that know only their tangent angle and the colours on their left and
 // right. A partial graph also has half-edges: edges cut open by the split operation (3.2.5),
 // kept at the vertex they leave. Each vertex holds its darts (edges and half-edges leaving
@@ -9,30 +9,48 @@
 // list of half-edges met going counter-clockwise around the graph, with the turning between
 // consecutive ones. The turning is kept as a real angle (the tangent difference plus 360
 // per positive turn ^, minus 360 per negative turn v), which is the reduced GBS in numbers.
-// The planarity test: the boundary turns by exactly +360 (one more ^ than v), every closed
-// face by -360, and Euler's formula holds.
+// The planarity test: exactly one walk (the outside) turns by +360 (one more ^ than v),
+// every other walk by -360, every closed face has one colour, and Euler's formula holds. A
+// partial graph may have half-edges on several walks (a ring whose hole is not finished
+// yet): each such walk is an open boundary.
+//
+// Plain data and free functions; nothing here is shared between threads.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "layout/limits.h"
 #include "layout/polygon_mesh.h"
 
 namespace sylva::layout {
 
+// An edge label (k~ = (l, r, theta)) oriented along a dart: its direction index and the
+// colours on its left and right (colour 0 is the outside).
+struct Label {
+    int dir = 0, left = 0, right = 0;
+    bool operator==(const Label&) const = default;
+    auto operator<=>(const Label&) const = default;
+};
+
 // The distinct edge directions of an example, counter-clockwise from +x, each with its
-// opposite (every edge brings both), and the example's mean edge length per direction.
+// opposite (every edge brings both), the example's mean edge length per direction and per
+// label, and its colours.
 struct Directions {
     std::vector<double> degrees;  // in [0, 360), ascending
     std::vector<int> opposite;
     std::vector<double> mean_length;
-    // The example's mean length per edge label, index (dir * colors + left) * colors + right;
-    // 0 where the example has no such edge.
-    std::vector<double> label_length;
+    // The example's mean length of the edges with a label (both orientations are listed);
+    // only the labels the example has, so the table grows with its edges, never with
+    // directions x colours x colours.
+    std::map<Label, double> label_length;
     // Colour 0 is the outside; palette[c] is colour c's 0xrrggbb (palette[0] unused).
     std::vector<std::uint32_t> palette;
     int colors() const { return static_cast<int>(palette.size()); }
+    // The example's mean length of edges labelled `l`, else of its direction.
+    double length_of(const Label& l) const;
 };
 
 struct Dart {
@@ -57,12 +75,6 @@ struct AngleGraph {
     int edges() const;  // full edges
 };
 
-// An edge label (k~ = (l, r, theta)) oriented along a dart.
-struct Label {
-    int dir = 0, left = 0, right = 0;
-    bool operator==(const Label&) const = default;
-    auto operator<=>(const Label&) const = default;
-};
 Label dart_label(const AngleGraph& g, int v, int i);
 Label reversed(const Label& l, const Directions& dirs);
 
@@ -95,12 +107,20 @@ struct Analysis {
     std::string why;  // when not planar
     bool complete = false;
     std::vector<Walk> walks;
-    int open_walk = -1;  // the walk with the half-edges (the graph boundary), or -1
+    std::vector<int> open_walks;  // the walks with half-edges (the open boundaries)
+    int outer = -1;               // the walk turning +360
+    // The graph boundary string: the outer walk's half-edges, when that walk is the only
+    // open one (the graphs rules are made of); empty otherwise.
     Boundary boundary;
+    bool single_boundary() const { return open_walks.size() == 1 && open_walks[0] == outer; }
+    // Closed faces with a colour (the polygons a complete graph draws).
+    int polygons() const;
 };
 Analysis analyze(const AngleGraph& g, const Directions& dirs);
 
-// The angle graph of a (validated) polygon mesh, and its directions and palette.
+// The angle graph of a (validated) polygon mesh, and its directions and palette. Throws
+// InputError when two edges leave one vertex in the same direction or the example has more
+// directions or colours than limits.h allows.
 struct Example {
     PolygonMesh mesh;
     Directions dirs;
@@ -108,9 +128,16 @@ struct Example {
 };
 Example make_example(const PolygonMesh& mesh);
 
-// A code equal for two graphs exactly when they are the same labelled planar graph.
+// A code equal for two graphs exactly when they are the same labelled planar graph (the
+// same structure up to isomorphism of the plane graph: directions are absolute, so a
+// vertex and one of its darts fix the whole map of a connected graph).
 std::vector<int> canonical_code(const AngleGraph& g);
+// A 64-bit hash of a code (unsigned arithmetic: wraps by definition).
+std::uint64_t code_hash(const std::vector<int>& code);
 
+// The number Schröder (2024) writes a label as: (dir x colours + left) x colours + right, in
+// unsigned 64 bits (limits.h keeps it below 2^63).
+std::uint64_t label_number(const Label& l, const Directions& dirs);
 // Schröder's (2024) notation: half-edges as e<label> (theta in [0, 180)) or e<label>' (reversed),
 // turns as ^ and v.
 std::string boundary_string(const Boundary& b, const Directions& dirs);

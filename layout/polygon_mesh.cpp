@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/input_file.h"
 #include "layout/geometry.h"
+#include "layout/limits.h"
 
 namespace sylva::layout {
 
@@ -42,6 +43,67 @@ bool parse_color(std::string_view s, std::uint32_t& out) {
     return true;
 }
 
+// A uniform grid over the example's box: each cell lists the items (edges or polygon boxes)
+// that come within eps of it, so pairwise checks only meet items near each other. About one
+// cell per item: the checks take time in proportion to the example, not its square, unless
+// the example crowds many edges into one spot (then kMaxPairTests stops it).
+class Grid {
+  public:
+    Grid(glm::dvec2 lo, glm::dvec2 hi, std::size_t items) : lo_(lo) {
+        const double side = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
+        const double per_side =
+            std::clamp(std::ceil(std::sqrt(static_cast<double>(items))), 1.0, 2048.0);
+        cell_ = side / per_side * (1.0 + 1e-9);
+        nx_ = std::max(1, static_cast<int>(std::ceil((hi.x - lo.x) / cell_)) + 1);
+        ny_ = std::max(1, static_cast<int>(std::ceil((hi.y - lo.y) / cell_)) + 1);
+        cells_.resize(static_cast<std::size_t>(nx_) * ny_);
+    }
+    int column(double x) const {
+        return std::clamp(static_cast<int>(std::floor((x - lo_.x) / cell_)), 0, nx_ - 1);
+    }
+    int row(double y) const {
+        return std::clamp(static_cast<int>(std::floor((y - lo_.y) / cell_)), 0, ny_ - 1);
+    }
+    std::vector<int>& cell(int cx, int cy) {
+        return cells_[static_cast<std::size_t>(cy) * nx_ + cx];
+    }
+    const std::vector<int>& at(glm::dvec2 p) const {
+        return cells_[static_cast<std::size_t>(row(p.y)) * nx_ + column(p.x)];
+    }
+    // The segment ab thickened by eps, column by column: only the cells it passes.
+    void add_segment(glm::dvec2 a, glm::dvec2 b, double eps, int id) {
+        if (a.x > b.x) std::swap(a, b);
+        const int c0 = column(a.x - eps), c1 = column(b.x + eps);
+        for (int cx = c0; cx <= c1; ++cx) {
+            const double x0 = std::max(a.x, lo_.x + cx * cell_),
+                         x1 = std::min(b.x, lo_.x + (cx + 1) * cell_);
+            double y0 = a.y, y1 = b.y;
+            if (b.x - a.x > 0 && x0 <= x1) {
+                const double slope = (b.y - a.y) / (b.x - a.x);
+                y0 = a.y + slope * (x0 - a.x);
+                y1 = a.y + slope * (x1 - a.x);
+            }
+            if (y0 > y1) std::swap(y0, y1);
+            for (int cy = row(y0 - eps); cy <= row(y1 + eps); ++cy) cell(cx, cy).push_back(id);
+        }
+    }
+    void add_box(glm::dvec2 lo, glm::dvec2 hi, int id) {
+        for (int cy = row(lo.y); cy <= row(hi.y); ++cy)
+            for (int cx = column(lo.x); cx <= column(hi.x); ++cx) cell(cx, cy).push_back(id);
+    }
+    const std::vector<std::vector<int>>& cells() const { return cells_; }
+
+  private:
+    glm::dvec2 lo_;
+    double cell_ = 1;
+    int nx_ = 1, ny_ = 1;
+    std::vector<std::vector<int>> cells_;
+};
+
+// Pairs of nearby items the checks may test before the example counts as too crowded to
+// check (a few seconds of work): a limit on adversarial input, far above any drawn plan.
+constexpr std::size_t kMaxPairTests = 200'000'000;
+
 void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Origin>& origins) {
     const int nv = static_cast<int>(mesh.vertices.size());
     for (int i = 0; i < nv; ++i)
@@ -50,11 +112,24 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
             throw InputError(
                 "vertex " + std::to_string(i) + " is not a finite coordinate within 1e7", {source});
     if (mesh.polygons.empty()) throw InputError("no polygons", {source});
-    if (mesh.polygons.size() > 20000) throw InputError("more than 20000 polygons", {source});
+    if (mesh.polygons.size() > static_cast<std::size_t>(kMaxExamplePolygons))
+        throw InputError("more than " + std::to_string(kMaxExamplePolygons) + " polygons",
+                         {source});
     double extent = 1e-300;
-    for (const glm::dvec2& p : mesh.vertices)
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const glm::dvec2& p : mesh.vertices) {
         extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     const double eps = extent * 1e-9;
+    std::size_t tests = 0;
+    auto count_test = [&]() {
+        if (++tests > kMaxPairTests)
+            throw InputError("too crowded to check: more than " + std::to_string(kMaxPairTests) +
+                                 " pairs of edges or polygons lie near each other",
+                             {source});
+    };
 
     std::map<std::pair<int, int>, int> directed;  // (a, b) -> polygon with a->b on its boundary
     for (std::size_t k = 0; k < mesh.polygons.size(); ++k) {
@@ -76,88 +151,157 @@ void validate(PolygonMesh& mesh, const std::string& source, const std::vector<Or
         const double area = signed_area(pts);
         if (std::abs(area) <= eps * extent) fail(source, at, "a polygon has zero area");
         if (area < 0) std::reverse(poly.vertices.begin(), poly.vertices.end());
-        for (int i = 0; i < n; ++i)
-            for (int j = i + 1; j < n; ++j) {
-                if (j == i + 1 || (i == 0 && j == n - 1)) continue;
-                if (segments_touch(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n], eps))
-                    fail(source, at,
-                         "the polygon is self-intersecting (edges " + std::to_string(i) + " and " +
-                             std::to_string(j) + " meet)");
-            }
+    }
+    // Every edge against the edges near it: two distinct undirected edges must not cross or
+    // touch except at a shared corner (two edges of one polygon that do: a self-intersecting
+    // polygon), and no vertex may lie inside an edge (a T-junction).
+    struct Edge {
+        int a, b, polygon, index;  // index: the edge's place in its polygon
+    };
+    std::vector<Edge> edges;
+    std::map<std::pair<int, int>, int> undirected;  // (min, max) -> edges[]
+    for (std::size_t k = 0; k < mesh.polygons.size(); ++k) {
+        const Polygon& poly = mesh.polygons[k];
+        const int n = static_cast<int>(poly.vertices.size());
         for (int i = 0; i < n; ++i) {
             const int a = poly.vertices[i], b = poly.vertices[(i + 1) % n];
             auto [it, fresh] = directed.emplace(std::pair{a, b}, static_cast<int>(k));
             if (!fresh)
-                fail(source, at,
+                fail(source, origins[k],
                      "overlaps polygon " + std::to_string(it->second) + " (both have edge " +
                          std::to_string(a) + "-" + std::to_string(b) + " on the same side)");
+            if (undirected
+                    .emplace(std::pair{std::min(a, b), std::max(a, b)},
+                             static_cast<int>(edges.size()))
+                    .second)
+                edges.push_back({a, b, static_cast<int>(k), i});
         }
     }
-    // Distinct undirected edges must not cross or touch except at shared endpoints, and no
-    // vertex may lie inside an edge (a T-junction).
-    std::vector<std::pair<int, int>> edges;
-    std::vector<int> edge_polygon;
-    for (const auto& [e, k] : directed)
-        if (e.first < e.second || !directed.count({e.second, e.first})) {
-            edges.push_back(e);
-            edge_polygon.push_back(k);
-        }
-    std::vector<bool> used(nv, false);
-    for (const auto& e : edges) used[e.first] = used[e.second] = true;
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-        const auto [a, b] = edges[i];
-        for (int v = 0; v < nv; ++v)
-            if (used[v] && v != a && v != b &&
-                point_segment_distance(mesh.vertices[v], mesh.vertices[a], mesh.vertices[b]) <= eps)
-                fail(source, origins[edge_polygon[i]],
-                     "vertex " + std::to_string(v) + " lies on edge " + std::to_string(a) + "-" +
-                         std::to_string(b) +
-                         " without being one of its corners (T-junction: the boundary is not "
-                         "closed)");
-        for (std::size_t j = i + 1; j < edges.size(); ++j) {
-            const auto [c, d] = edges[j];
-            if (a == c || a == d || b == c || b == d) continue;
-            if (segments_touch(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c],
-                               mesh.vertices[d], eps))
-                fail(source, origins[edge_polygon[j]],
-                     "edge " + std::to_string(c) + "-" + std::to_string(d) + " crosses edge " +
-                         std::to_string(a) + "-" + std::to_string(b) +
-                         " (the structure is not planar)");
+    // The first violation in edge order, so the message does not depend on the grid.
+    Grid grid(lo, hi, edges.size());
+    for (std::size_t e = 0; e < edges.size(); ++e)
+        grid.add_segment(mesh.vertices[edges[e].a], mesh.vertices[edges[e].b], eps,
+                         static_cast<int>(e));
+    // The first violation: by its lower edge, a T-junction before a crossing, then by the
+    // other edge.
+    std::pair<int, int> worst{-1, -1};
+    bool t_junction = false;
+    int t_vertex = -1;
+    auto note = [&](int i, int j, bool t, int v) {
+        const std::pair<int, int> key{std::min(i, j), t ? -1 : std::max(i, j)};
+        if (worst.first < 0 || key < worst) worst = key, t_junction = t, t_vertex = v;
+    };
+    std::vector<char> used(nv, 0);
+    for (const Edge& e : edges) used[e.a] = used[e.b] = 1;
+    for (int v = 0; v < nv; ++v) {
+        if (!used[v]) continue;
+        for (int e : grid.at(mesh.vertices[v])) {
+            count_test();
+            const Edge& ed = edges[e];
+            if (v != ed.a && v != ed.b &&
+                point_segment_distance(mesh.vertices[v], mesh.vertices[ed.a],
+                                       mesh.vertices[ed.b]) <= eps)
+                note(e, e, true, v);
         }
     }
-    // With no crossings, two polygons overlap only if one holds a vertex of the other strictly
-    // inside (or one holds the other entirely: then the inner one's vertices are inside).
-    for (std::size_t k = 0; k < mesh.polygons.size(); ++k) {
-        std::vector<glm::dvec2> pts;
-        for (int i : mesh.polygons[k].vertices) pts.push_back(mesh.vertices[i]);
-        for (std::size_t m = 0; m < mesh.polygons.size(); ++m) {
-            if (m == k) continue;
-            // The centroid of a triangle at a convex corner of m lies inside m; checking one
-            // interior point of m per polygon catches identical-outline and nested overlaps.
-            const Polygon& other = mesh.polygons[m];
-            for (int v : other.vertices)
-                if (std::find(mesh.polygons[k].vertices.begin(), mesh.polygons[k].vertices.end(),
-                              v) == mesh.polygons[k].vertices.end() &&
-                    point_in_polygon(mesh.vertices[v], pts, eps) > 0)
-                    fail(source, origins[m],
-                         "overlaps polygon " + std::to_string(k) + " (vertex " + std::to_string(v) +
-                             " lies inside it)");
-            // An edge of m through k's inside whose ends lie on k's outline (no vertex inside,
-            // no crossing): its midpoint is inside k (fuzz finding: an orchard plot over a path).
-            const std::size_t n = other.vertices.size();
-            for (std::size_t i = 0; i < n; ++i) {
-                const glm::dvec2 mid = 0.5 * (mesh.vertices[other.vertices[i]] +
-                                              mesh.vertices[other.vertices[(i + 1) % n]]);
-                if (point_in_polygon(mid, pts, eps) > 0)
-                    fail(source, origins[m],
-                         "overlaps polygon " + std::to_string(k) + " (edge " +
-                             std::to_string(other.vertices[i]) + "-" +
-                             std::to_string(other.vertices[(i + 1) % n]) + " runs inside it)");
+    for (const std::vector<int>& cell : grid.cells())
+        for (std::size_t x = 0; x < cell.size(); ++x)
+            for (std::size_t y = x + 1; y < cell.size(); ++y) {
+                count_test();
+                const Edge& p = edges[cell[x]];
+                const Edge& q = edges[cell[y]];
+                if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) continue;
+                if (segments_touch(mesh.vertices[p.a], mesh.vertices[p.b], mesh.vertices[q.a],
+                                   mesh.vertices[q.b], eps))
+                    note(cell[x], cell[y], false, -1);
             }
-            const glm::dvec2 inside = interior_point(mesh, other);
-            if (point_in_polygon(inside, pts, eps) > 0)
-                fail(source, origins[m], "overlaps polygon " + std::to_string(k));
+    if (worst.first >= 0) {
+        const Edge& first = edges[worst.first];
+        const Edge& second = edges[t_junction ? worst.first : worst.second];
+        if (t_junction)
+            fail(source, origins[first.polygon],
+                 "vertex " + std::to_string(t_vertex) + " lies on edge " + std::to_string(first.a) +
+                     "-" + std::to_string(first.b) +
+                     " without being one of its corners (T-junction: the boundary is not closed)");
+        // Two edges of one polygon (either side of each counts): the polygon crosses itself.
+        auto owners = [&](const Edge& e) {
+            std::vector<int> out{e.polygon};
+            const auto it = directed.find({e.b, e.a});
+            if (it != directed.end()) out.push_back(it->second);
+            return out;
+        };
+        for (int k : owners(first))
+            for (int m : owners(second))
+                if (k == m) {
+                    const Polygon& poly = mesh.polygons[k];
+                    auto place = [&](const Edge& e) {
+                        const int n = static_cast<int>(poly.vertices.size());
+                        for (int i = 0; i < n; ++i)
+                            if ((poly.vertices[i] == e.a && poly.vertices[(i + 1) % n] == e.b) ||
+                                (poly.vertices[i] == e.b && poly.vertices[(i + 1) % n] == e.a))
+                                return i;
+                        return -1;
+                    };
+                    const int i = std::min(place(first), place(second));
+                    const int j = std::max(place(first), place(second));
+                    fail(source, origins[k],
+                         "the polygon is self-intersecting (edges " + std::to_string(i) + " and " +
+                             std::to_string(j) + " meet)");
+                }
+        fail(source, origins[second.polygon],
+             "edge " + std::to_string(second.a) + "-" + std::to_string(second.b) +
+                 " crosses edge " + std::to_string(first.a) + "-" + std::to_string(first.b) +
+                 " (the structure is not planar)");
+    }
+    // With no crossings, two polygons overlap only if one holds a vertex, an edge's middle or
+    // an inner point of the other strictly inside. Only polygons whose boxes share a grid
+    // cell with the point are asked.
+    const std::size_t np = mesh.polygons.size();
+    std::vector<std::vector<glm::dvec2>> rings(np);
+    std::vector<std::pair<glm::dvec2, glm::dvec2>> boxes(np);
+    Grid boxes_grid(lo, hi, np);
+    for (std::size_t k = 0; k < np; ++k) {
+        glm::dvec2 blo(1e300), bhi(-1e300);
+        for (int i : mesh.polygons[k].vertices) {
+            rings[k].push_back(mesh.vertices[i]);
+            blo = glm::min(blo, mesh.vertices[i]);
+            bhi = glm::max(bhi, mesh.vertices[i]);
         }
+        boxes[k] = {blo, bhi};
+        boxes_grid.add_box(blo, bhi, static_cast<int>(k));
+    }
+    auto holder = [&](glm::dvec2 p, std::size_t m) -> int {
+        for (int k : boxes_grid.at(p)) {
+            count_test();
+            if (static_cast<std::size_t>(k) == m) continue;
+            const auto& [blo, bhi] = boxes[k];
+            if (p.x < blo.x || p.y < blo.y || p.x > bhi.x || p.y > bhi.y) continue;
+            if (point_in_polygon(p, rings[k], eps) > 0) return k;
+        }
+        return -1;
+    };
+    for (std::size_t m = 0; m < np; ++m) {
+        const Polygon& other = mesh.polygons[m];
+        for (int v : other.vertices)
+            if (const int k = holder(mesh.vertices[v], m); k >= 0)
+                fail(source, origins[m],
+                     "overlaps polygon " + std::to_string(k) + " (vertex " + std::to_string(v) +
+                         " lies inside it)");
+        // An edge of m through k's inside whose ends lie on k's outline (no vertex inside,
+        // no crossing): its midpoint is inside k (fuzz finding: an orchard plot over a path).
+        const std::size_t n = other.vertices.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::dvec2 mid = 0.5 * (mesh.vertices[other.vertices[i]] +
+                                          mesh.vertices[other.vertices[(i + 1) % n]]);
+            if (const int k = holder(mid, m); k >= 0)
+                fail(source, origins[m],
+                     "overlaps polygon " + std::to_string(k) + " (edge " +
+                         std::to_string(other.vertices[i]) + "-" +
+                         std::to_string(other.vertices[(i + 1) % n]) + " runs inside it)");
+        }
+        // The same outline twice, or one polygon exactly inside another's outline.
+        if (const int k = holder(interior_point(mesh, other), m); k >= 0)
+            fail(source, origins[m], "overlaps polygon " + std::to_string(k));
     }
 }
 
@@ -232,7 +376,8 @@ PolygonMesh read_mesh_text(std::string_view text, const std::string& source) {
         };
         if (kind == "v") {
             if (tokens.size() != 3) error(pos, "a vertex line is 'v X Y'");
-            if (mesh.vertices.size() >= 200000) error(pos, "more than 200000 vertices");
+            if (mesh.vertices.size() >= static_cast<std::size_t>(kMaxExampleVertices))
+                error(pos, "more than " + std::to_string(kMaxExampleVertices) + " vertices");
             mesh.vertices.emplace_back(number(1), number(2));
         } else if (kind == "p") {
             if (tokens.size() < 2) error(pos, "a polygon line is 'p #rrggbb I J K ...'");
@@ -288,7 +433,9 @@ PolygonMesh read_mesh_json(std::string_view text, const std::string& source) {
                         "expected an array of {\"vertices\": [...], \"color\": \"#rrggbb\"}");
     PolygonMesh mesh;
     const auto& vs = doc["vertices"];
-    if (vs.size() > 200000) throw key_error("vertices", "more than 200000 vertices");
+    if (vs.size() > static_cast<std::size_t>(kMaxExampleVertices))
+        throw key_error("vertices",
+                        "more than " + std::to_string(kMaxExampleVertices) + " vertices");
     for (std::size_t i = 0; i < vs.size(); ++i) {
         const auto& v = vs[i];
         if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())

@@ -7,7 +7,8 @@ SYLVA_BUILD="${SYLVA_BUILD:-$SYLVA_ROOT/build}"
 # What building Sylva needs (see third_party_notes.md for why each one).
 SYLVA_BUILD_PACKAGES=(cmake g++ make pkg-config libglm-dev libtbb-dev nlohmann-json3-dev
     libopenvdb-dev libboost-iostreams-dev libtomlplusplus-dev libtinygltf-dev
-    libgtest-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libmeshoptimizer-dev libcgal-dev)
+    libgtest-dev libglfw3-dev libimgui-dev libstb-dev libgl-dev libmeshoptimizer-dev libcgal-dev
+    libpng-dev)
 
 as_root() {
     if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi

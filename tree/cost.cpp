@@ -77,7 +77,9 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
     cost.bytes += kBytesPerSegment * cost.segments;
     cost.seconds += kSecondsPerSegment * cost.segments;
     if (mesh) {
-        const double trunk = trunk_resolution_for_budget(tree.params, budget);
+        // A game mesh whose branches are prisms meshes no trunk.
+        const bool prisms = budget > 0 && branch_style(tree.params) == BranchStyle::Prisms;
+        const double trunk = prisms ? 0.0 : trunk_resolution_for_budget(tree.params, budget);
         const double crown = crown_resolution_for_budget(tree.params.crown_resolution, budget);
         const double squared = trunk * trunk + crown * crown;
         cost.cells = trunk * trunk * trunk + crown * crown * crown;
@@ -88,7 +90,10 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
     return cost;
 }
 
-Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t budget) {
+Cost estimate_reduction_cost(const Tree& tree, std::size_t budget) {
+    const Mesh none;
+    const Mesh& trunk = tree.branch_axes.axes.empty() ? tree.trunk : none;
+    const Mesh& crown = tree.crown;
     Cost cost;
     cost.triangles = static_cast<double>(trunk.triangles.size() + crown.triangles.size());
     if (budget == 0 || cost.triangles <= static_cast<double>(budget)) return Cost{};

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/growth.h"
-#include "core/mesh.h"
 #include "core/tree_template.h"
+#include "tree/pipeline.h"
 
 namespace sylva {
 
@@ -44,11 +44,12 @@ inline constexpr CostLimits kManyTreeLimits{2.0e9, 600.0};
 // parse costs nothing here; generating it reports the error.
 Cost estimate_cost(const TreeTemplate& tree, std::size_t budget = 0, bool mesh = true);
 
-// The reduction of meshes already made (the slow stage of a game mesh, known only once the
-// meshes are): its time from their triangles and handles (where branches cross; every one
-// is cut, at a cost that grows with the count), 0 when nothing is reduced. Fitted on the
-// ternary tree at generations 6-8 and plain trees to 450,000 triangles.
-Cost estimate_reduction_cost(const Mesh& trunk, const Mesh& crown, std::size_t budget);
+// The reduction of a tree already meshed (the slow stage of a game mesh, known only once
+// the meshes are): its time from the triangles and handles of what is reduced (where
+// branches cross; every one is cut, at a cost that grows with the count), 0 when nothing is
+// reduced. A trunk whose branches are prisms is drawn, not reduced. Fitted on the ternary
+// tree at generations 6-8 and plain trees to 450,000 triangles.
+Cost estimate_reduction_cost(const Tree& tree, std::size_t budget);
 
 // `count` trees of cost `each` made in one job and kept until it writes them (a batch, a
 // forest's variants): their time and counts add up; the memory is one tree's peak plus what

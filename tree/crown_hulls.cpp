@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/convex_hull.h"
+#include "core/disjoint_sets.h"
 #include "lowpoly/merge_meshes.h"
 
 namespace sylva {
@@ -72,16 +73,64 @@ std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& all, std::size_
     return of_all;
 }
 
+// `cluster` (of each used vertex, in `points` order) with every cluster whose vertices lie on
+// surface pieces apart from each other (two curtains of a willow, two blobs of a honda)
+// split into one cluster per piece of at least kApartShare of its vertices: the hull of
+// both would bridge the gap between them. Smaller pieces stay with the cluster's largest.
+// `index` maps a mesh vertex to its place in `points` (or -1 when unused).
+std::vector<std::uint32_t> apart_clusters(const Mesh& crown, const std::vector<std::int64_t>& index,
+                                          std::vector<std::uint32_t> cluster) {
+    constexpr double kApartShare = 0.1;
+    DisjointSets pieces(cluster.size());
+    for (const auto& t : crown.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = static_cast<std::size_t>(index[t[k]]);
+            const auto b = static_cast<std::size_t>(index[t[(k + 1) % 3]]);
+            if (cluster[a] == cluster[b])
+                pieces.unite(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
+        }
+    std::vector<std::size_t> size(cluster.size(), 0), in_cluster(cluster.size(), 0);
+    for (std::size_t i = 0; i < cluster.size(); ++i) {
+        ++size[pieces.find(static_cast<std::uint32_t>(i))];
+        ++in_cluster[cluster[i]];
+    }
+    // Each cluster's largest piece keeps its number; other large pieces get new ones.
+    std::vector<std::size_t> largest(cluster.size(), SIZE_MAX);
+    for (std::size_t i = 0; i < cluster.size(); ++i) {
+        const std::size_t root = pieces.find(static_cast<std::uint32_t>(i));
+        std::size_t& best = largest[cluster[i]];
+        if (best == SIZE_MAX || size[root] > size[best] ||
+            (size[root] == size[best] && root < best))
+            best = root;
+    }
+    std::uint32_t next = *std::max_element(cluster.begin(), cluster.end()) + 1;
+    std::vector<std::int64_t> renamed(cluster.size(), -1);
+    for (std::size_t i = 0; i < cluster.size(); ++i) {
+        const std::size_t root = pieces.find(static_cast<std::uint32_t>(i));
+        if (root == largest[cluster[i]] ||
+            static_cast<double>(size[root]) <
+                kApartShare * static_cast<double>(in_cluster[cluster[i]]))
+            continue;
+        if (renamed[root] < 0) renamed[root] = next++;
+        cluster[i] = static_cast<std::uint32_t>(renamed[root]);
+    }
+    return cluster;
+}
+
 }  // namespace
 
 Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
     std::vector<bool> used(crown.positions.size(), false);
     for (const auto& t : crown.triangles) used[t[0]] = used[t[1]] = used[t[2]] = true;
     std::vector<glm::vec3> points;
+    std::vector<std::int64_t> index(crown.positions.size(), -1);
     for (std::size_t v = 0; v < crown.positions.size(); ++v)
-        if (used[v]) points.push_back(crown.positions[v]);
+        if (used[v]) {
+            index[v] = static_cast<std::int64_t>(points.size());
+            points.push_back(crown.positions[v]);
+        }
     if (points.size() < 4 || hulls == 0) return crown;
-    const std::vector<std::uint32_t> cluster = k_means(points, hulls);
+    const std::vector<std::uint32_t> cluster = apart_clusters(crown, index, k_means(points, hulls));
     const std::uint32_t clusters = *std::max_element(cluster.begin(), cluster.end()) + 1;
     std::vector<Mesh> hull_meshes;
     for (std::uint32_t c = 0; c < clusters; ++c) {

@@ -1,11 +1,10 @@
 // Low budgets and the crown's shape. A crown of blobs (tree/crown_merge.h bridges them into
 // a few pieces) reduced to a hundred triangles loses its shape piece by piece: the quadric
 // queue collapses the bridges and dents into spikes and slabs, and whole blobs end as
-// tetrahedra. A convex hull is what a small budget draws well: a few
-// dozen triangles that cover the piece, never a token. Issue 11: "a crown of many small
-// blobs becomes a few hulls (an option and the default at low budgets)". The convex hull
-// of a whole crown would fill its hollows (under an umbrella or a willow's curtain), so
-// the crown is split into a few clusters first, and each cluster becomes a hull.
+// tetrahedra. A convex hull is what a small budget draws well: a few dozen triangles that
+// cover the piece, never a token. The convex hull of a whole crown would fill its hollows
+// (under an umbrella or a willow's curtain), so the crown is split into a few clusters
+// first, and each cluster becomes a hull.
 #pragma once
 
 #include <cstddef>
@@ -26,7 +25,9 @@ inline constexpr std::size_t kCrownHullBudget = 400;
 inline constexpr std::size_t kTrianglesPerHull = 70;
 
 // The crown's vertices split into `hulls` clusters (k-means, seeded by farthest points, so
-// deterministic) and the convex hull of each (core/convex_hull.h's extreme_point_hull: at
+// deterministic), a cluster split again where its vertices lie on surface pieces apart (each
+// piece of at least a tenth of it: a hull over two curtains or two blobs would bridge the gap
+// between them), and the convex hull of each (core/convex_hull.h's extreme_point_hull: at
 // most 124 triangles each), as one mesh: every hull closed, 2-manifold and outward, within
 // the crown's bounding box. Clusters are near-disjoint in space, so neighbouring hulls
 // overlap only where they meet. A crown with fewer than 4 vertices, or a cluster that spans

@@ -13,39 +13,9 @@
 namespace sylva {
 namespace {
 
-// One leaf: its triangles (indices into the mesh's list) and its base vertex.
-struct Leaf {
-    std::vector<std::uint32_t> triangles;
-    std::uint32_t base = 0;  // the leaf's smallest vertex index: its first vertex
-    std::uint64_t rank = 0;
-};
-
 std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
-}
-
-// Leaves in the order of their first triangle.
-std::vector<Leaf> split_leaves(const Mesh& mesh) {
-    std::vector<std::uint32_t> parent(mesh.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    for (const auto& t : mesh.triangles)
-        for (int k = 1; k < 3; ++k) {
-            // The smaller index becomes the root, so a leaf's root is its first vertex.
-            const std::uint32_t a = find_root(parent, t[0]), b = find_root(parent, t[k]);
-            parent[std::max(a, b)] = std::min(a, b);
-        }
-    std::vector<Leaf> leaves;
-    std::vector<std::int64_t> leaf_of_root(mesh.positions.size(), -1);
-    for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-        const std::uint32_t root = find_root(parent, mesh.triangles[f][0]);
-        if (leaf_of_root[root] < 0) {
-            leaf_of_root[root] = static_cast<std::int64_t>(leaves.size());
-            leaves.push_back({{}, root, 0});
-        }
-        leaves[static_cast<std::size_t>(leaf_of_root[root])].triangles.push_back(f);
-    }
-    return leaves;
 }
 
 // A hash of where the leaf is: as random as the scatter, stable for the same leaf.
@@ -58,19 +28,42 @@ std::uint64_t rank_of(const glm::vec3& base) {
 
 }  // namespace
 
+std::vector<LeafPiece> split_leaves(const Mesh& mesh) {
+    std::vector<std::uint32_t> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (const auto& t : mesh.triangles)
+        for (int k = 1; k < 3; ++k) {
+            // The smaller index becomes the root, so a leaf's root is its first vertex.
+            const std::uint32_t a = find_root(parent, t[0]), b = find_root(parent, t[k]);
+            parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::vector<LeafPiece> leaves;
+    std::vector<std::int64_t> leaf_of_root(mesh.positions.size(), -1);
+    for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        const std::uint32_t root = find_root(parent, mesh.triangles[f][0]);
+        if (leaf_of_root[root] < 0) {
+            leaf_of_root[root] = static_cast<std::int64_t>(leaves.size());
+            leaves.push_back({{}, root});
+        }
+        leaves[static_cast<std::size_t>(leaf_of_root[root])].triangles.push_back(f);
+    }
+    return leaves;
+}
+
 std::size_t count_leaves(const Mesh& leaves) {
     return split_leaves(leaves).size();
 }
 
 Mesh thin_leaves(const Mesh& leaves, std::size_t max_triangles, float max_growth) {
     if (leaves.triangles.size() <= max_triangles) return leaves;
-    std::vector<Leaf> all = split_leaves(leaves);
-    for (Leaf& leaf : all) leaf.rank = rank_of(leaves.positions[leaf.base]);
+    const std::vector<LeafPiece> all = split_leaves(leaves);
+    std::vector<std::uint64_t> rank(all.size());
+    for (std::size_t l = 0; l < all.size(); ++l) rank[l] = rank_of(leaves.positions[all[l].base]);
 
     std::vector<std::size_t> by_rank(all.size());
     std::iota(by_rank.begin(), by_rank.end(), std::size_t{0});
     std::stable_sort(by_rank.begin(), by_rank.end(),
-                     [&](std::size_t a, std::size_t b) { return all[a].rank < all[b].rank; });
+                     [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
     // A prefix of the rank order, so smaller budgets keep subsets of larger ones.
     std::vector<bool> keep(all.size(), false);
     std::size_t triangles = 0, kept = 0;

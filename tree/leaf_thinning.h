@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "core/mesh.h"
 
@@ -11,6 +13,17 @@ namespace sylva {
 
 // How far a kept leaf may grow: past about twice its length a leaf stops reading as a leaf.
 constexpr float kMaxLeafGrowth = 2.0f;
+
+// One leaf of a leaf mesh: its triangles (indices into the mesh's list) and its base vertex
+// (its smallest vertex index: the first vertex tree/leaves.h gives it).
+struct LeafPiece {
+    std::vector<std::uint32_t> triangles;
+    std::uint32_t base = 0;
+};
+
+// The leaves of `leaves` (tree/leaves.h: no two share a vertex), in the order of their first
+// triangle.
+std::vector<LeafPiece> split_leaves(const Mesh& leaves);
 
 // The number of leaves in `leaves`: its sets of triangles joined by shared vertices
 // (tree/leaves.h: no two leaves share a vertex).

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/geometric.hpp>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <utility>
 
@@ -15,6 +17,7 @@
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
 #include "tree/crown_hulls.h"
+#include "tree/leaf_cards.h"
 #include "tree/leaf_thinning.h"
 
 namespace sylva {
@@ -121,6 +124,10 @@ class SampledHausdorff {
     std::vector<glm::vec3> source_samples_;
 };
 
+// A crown reduced alone (its branches drawn as prisms) to fewer triangles than this is
+// drawn as hulls in the automatic mode even without handles.
+constexpr std::size_t kTinyCrownBudget = 100;
+
 // Trunk and crown to the budget, the crown drawn as crown_hull_count() says. In the
 // automatic mode only a crown with handles (genus above 0) becomes hulls: where blobs touch in
 // rings the reduction must keep each tunnel (a dozen triangles) or cut it, and spends the budget on
@@ -139,7 +146,9 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     const std::size_t hull_count = crown_hull_count(budget);
     const bool automatic =
         budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
-    if (hull_count == 0 || (automatic && genus(hull_source) == 0))
+    // Blobs reduced to very few triangles fold into spikes as surely as blobs with handles.
+    const bool tiny = solid_budget(budget) < kTinyCrownBudget && trunk.triangles.empty();
+    if (hull_count == 0 || (automatic && !tiny && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
     // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
     // no closer: they alone.
@@ -173,6 +182,56 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
         out.crown = std::move(more.parts[0]);
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     }
+    return out;
+}
+
+// The surface area of a mesh.
+double area_of(const Mesh& mesh) {
+    double area = 0.0;
+    for (const auto& t : mesh.triangles)
+        area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                             mesh.positions[t[2]] - mesh.positions[t[0]]));
+    return area;
+}
+
+// The trunk's share of `total` triangles when its branches are prisms: all of it without a
+// crown, else in proportion to the branches' side area against the crown's surface, between a
+// quarter and three quarters (the crown and the branches each need some to read at all).
+std::size_t prism_allowance(const Tree& tree, std::size_t total) {
+    if (tree.crown.triangles.empty()) return total;
+    double branches = 0.0;
+    for (const BranchAxis& axis : tree.branch_axes.axes)
+        branches += 0.5 * std::numbers::pi * axis.area;  // pi (r0 + r1) L, a cone's side
+    const double share =
+        std::clamp(branches / std::max(branches + area_of(tree.crown), 1e-12), 0.25, 0.75);
+    return static_cast<std::size_t>(std::lround(share * static_cast<double>(total)));
+}
+
+// A tree whose branches are prisms (Tree::branch_axes): as many branches as the trunk's
+// share of the budget buys (at most `most_branch_triangles`, a LOD level's trunk at most
+// the level before's), the crown reduced alone to the rest, drawn as `budget` says.
+ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& hull_source,
+                               const TreeBudget& budget, const DecimateSettings& settings,
+                               std::size_t most_branch_triangles) {
+    const std::size_t total = solid_budget(budget);
+    if (total == 0) {  // no reduction: every branch the tree has, the crown as it is
+        ReducedTree out;
+        out.trunk = tree.trunk;
+        out.crown = crown;
+        out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
+        return out;
+    }
+    const std::size_t allowance = budget.trunk ? *budget.trunk : prism_allowance(tree, total);
+    BranchPrisms prisms =
+        branch_prisms(tree.branch_axes, total, std::min(allowance, most_branch_triangles));
+    TreeBudget rest = budget;
+    rest.trunk = rest.crown = std::nullopt;
+    const std::size_t drawn = prisms.mesh.triangles.size();
+    rest.total = budget.crown ? *budget.crown : (total > drawn + 4 ? total - drawn : 4);
+    ReducedTree out = reduce_shaped(Mesh{}, crown, hull_source, rest, settings);
+    out.trunk = std::move(prisms.mesh);
+    out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
+    out.within_budget = out.within_budget && out.triangles <= total;
     return out;
 }
 
@@ -244,6 +303,23 @@ DecimateSettings with_foot(DecimateSettings settings, const Mesh& trunk) {
 
 }  // namespace
 
+Mesh game_leaves(const Tree& tree, std::size_t budget) {
+    const bool textured = tree.leaf_style == LeafStyle::Textured;
+    if (tree.leaves.triangles.size() <= budget && !textured) return tree.leaves;
+    switch (tree.leaf_style) {
+        case LeafStyle::None:
+            return {};
+        case LeafStyle::Leaves:
+            return thin_leaves(tree.leaves, budget);
+        case LeafStyle::Cards:
+        case LeafStyle::Textured:
+            break;
+    }
+    LeafCardSettings cards;
+    cards.max_triangles = budget;
+    return leaf_cards(tree.leaves, cards);
+}
+
 std::size_t leaf_budget(const TreeBudget& budget) {
     if (budget.leaves) return *budget.leaves;
     return budget.total > 0 ? budget.total : std::numeric_limits<std::size_t>::max();
@@ -262,10 +338,14 @@ std::size_t crown_hull_count(const TreeBudget& budget) {
 ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
                         const DecimateSettings& settings) {
     const SolidsToReduce solids(tree);
-    ReducedTree out = reduce_shaped(solids.trunk(), solids.crown(), solids.crown(),
-                                    shaped_for(budget, tree), with_foot(settings, tree.trunk));
+    ReducedTree out =
+        tree.branch_axes.axes.empty()
+            ? reduce_shaped(solids.trunk(), solids.crown(), solids.crown(),
+                            shaped_for(budget, tree), with_foot(settings, tree.trunk))
+            : reduce_with_prisms(tree, solids.crown(), solids.crown(), shaped_for(budget, tree),
+                                 settings, std::numeric_limits<std::size_t>::max());
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
-    out.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
+    out.leaves = game_leaves(tree, leaf_budget(budget));
     return out;
 }
 
@@ -300,14 +380,18 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
     for (const TreeBudget& budget : budgets.subspan(levels.size())) {
         const Mesh& trunk = levels.empty() ? finest.trunk() : levels.back().trunk;
         const Mesh& crown = levels.empty() ? finest.crown() : levels.back().crown;
-        ReducedTree level = reduce_shaped(trunk, crown, finest.crown(), shaped_for(budget, tree),
-                                          with_foot(settings, tree.trunk));
+        ReducedTree level =
+            tree.branch_axes.axes.empty()
+                ? reduce_shaped(trunk, crown, finest.crown(), shaped_for(budget, tree),
+                                with_foot(settings, tree.trunk))
+                : reduce_with_prisms(tree, crown, finest.crown(), shaped_for(budget, tree),
+                                     settings, trunk.triangles.size());
         // A reduction only removes triangles, but cutting a handle caps it with new ones.
         if (level.trunk.triangles.size() > trunk.triangles.size()) level.trunk = trunk;
         if (level.crown.triangles.size() > crown.triangles.size()) level.crown = crown;
         level.triangles = level.trunk.triangles.size() + level.crown.triangles.size();
         pin_to_ground(level.trunk, ground);
-        level.leaves = thin_leaves(tree.leaves, leaf_budget(budget));
+        level.leaves = game_leaves(tree, leaf_budget(budget));
         levels.push_back(std::move(level));
     }
     return levels;

@@ -56,6 +56,12 @@ std::size_t crown_hull_count(const TreeBudget& budget);
 // The leaf triangles `budget` allows; SIZE_MAX for every leaf.
 std::size_t leaf_budget(const TreeBudget& budget);
 
+// The tree's leaves within `budget` triangles (leaf_budget()): the tree's own where they
+// fit, else as its leaf style draws them: cards (tree/leaf_cards.h), some of its own
+// (tree/leaf_thinning.h) or none; textured cards always (their texture is of many leaves).
+// What reduce_tree() and make_lod_chain() give each level.
+Mesh game_leaves(const Tree& tree, std::size_t budget);
+
 struct ReducedTree {
     Mesh trunk;  // closed 2-manifolds, empty where the tree has none
     Mesh crown;
@@ -102,7 +108,7 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
                                         std::optional<ReducedTree> level0 = std::nullopt);
 
 // The tree's fine surface: trunk and crown meshed at `resolution` cells along the longest
-// side (issue 6 measures against 200), as one mesh.
+// side (fidelity is measured against 200), as one mesh.
 Mesh reference_surface(const TreeTemplate& tree, int resolution = 200,
                        const MeshOptions& options = {});
 

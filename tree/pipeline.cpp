@@ -467,6 +467,16 @@ FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
     return cells;
 }
 
+// The thinnest branch the full-detail trunk draws (resolvable_cones at the template's own
+// resolution): what prisms widen thinner branches to, so a game mesh keeps its outline.
+float full_detail_radius(const Skeleton& skeleton, const TreeParams& template_params) {
+    Box box = skeleton_bounds(skeleton);
+    const float joint_blend = static_cast<float>(template_params.joint_blend);
+    box.min -= glm::vec3(joint_blend);
+    box.max += glm::vec3(joint_blend);
+    return kMinRadiusInCells * cell_size(box, template_params.trunk_resolution);
+}
+
 }  // namespace
 
 Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeParams& p,
@@ -495,7 +505,8 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
             out = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
                                  fields.crown_box, leaves);
     }
-    add_polygon_leaves(out, skeleton.polygons);
+    if (static_cast<PolygonPart>(p.polygon_part) == PolygonPart::Leaves)
+        add_polygon_leaves(out, skeleton.polygons);
     return out;
 }
 
@@ -539,13 +550,16 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     out.skeleton = grow(tree, growth, &mature);
     out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
+    out.leaf_style = static_cast<LeafStyle>(tree.params.leaf_style);
+    out.leaf_shape = static_cast<LeafShape>(tree.params.leaf_shape);
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     p.trunk_resolution = trunk_resolution_for_budget(p, options.budget);
     const FieldCells cells = p.age < 1.0 ? apply_age(p, mature) : FieldCells{};
 
     check_extent(out.skeleton);
-    throw_if_cancelled(options.cancel);  // each stage below starts only when still wanted
+    out.organs = tree_organs(out.skeleton, p);  // small; an unknown organ fails before meshing
+    throw_if_cancelled(options.cancel);         // each stage below starts only when still wanted
     Stopwatch clock;
     const bool crown_wanted = p.crown_mesh != 0;
     // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in
@@ -553,10 +567,12 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     // draws, not twice.
     const bool game_mesh = options.budget > 0;
     const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden != 0;
+    // A game mesh's branches as prisms need no trunk field at all, only the segments.
+    const bool prisms = game_mesh && branch_style(p) == BranchStyle::Prisms;
     TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel,
-                                    !game_mesh    ? TrunkField::Whole
-                                    : drop_hidden ? TrunkField::None
-                                                  : TrunkField::Pieces);
+                                    !game_mesh              ? TrunkField::Whole
+                                    : drop_hidden || prisms ? TrunkField::None
+                                                            : TrunkField::Pieces);
     if (cells.trunk > 0.0f) p.trunk_resolution = cells_along(fields.trunk_box, cells.trunk);
     if (cells.crown > 0.0f && fields.crown)
         p.crown_resolution = cells_along(fields.crown_box, cells.crown);
@@ -583,12 +599,23 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
                 trunk_cell = cell_size(trunk_box, p.trunk_resolution);
             }
         }
-        fields.trunk_pieces =
-            trunk_pieces(out.skeleton, shown, trunk_cell, joint_blend, options.cancel);
+        if (!prisms)
+            fields.trunk_pieces =
+                trunk_pieces(out.skeleton, shown, trunk_cell, joint_blend, options.cancel);
+        else
+            out.branch_axes =
+                branch_axes(out.skeleton, shown, full_detail_radius(out.skeleton, tree.params));
+    } else if (prisms) {
+        out.branch_axes = branch_axes(out.skeleton, std::vector<std::uint8_t>(segments.size(), 1),
+                                      full_detail_radius(out.skeleton, tree.params));
     }
     out.times.push_back({"fields", clock.lap_ms()});
     throw_if_cancelled(options.cancel);
-    if (!fields.trunk && fields.trunk_pieces.empty())
+    if (prisms && out.branch_axes.axes.empty())
+        throw InputError(
+            "the tree has no trunk: the derived word draws no segment with a "
+            "width above zero (it needs F, and a width from branch_width or !)");
+    if (!prisms && !fields.trunk && fields.trunk_pieces.empty())
         throw InputError(
             "the tree has no trunk: the derived word draws no segment with a "
             "width above zero (it needs F, and a width from branch_width or !)");
@@ -597,7 +624,8 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     // the others take. Progress is the trunk's share of what its pieces have done on average
     // plus the crown's of what it has done, reported one at a time so that it only rises;
     // each stage's time is its own, so they overlap.
-    const float trunk_share = mesh_crown ? 0.5f : 1.0f;
+    // Prisms are drawn, not meshed: the crown's meshing is all the progress there is.
+    const float trunk_share = prisms ? 0.0f : mesh_crown ? 0.5f : 1.0f;
     const std::vector<ConeField>& pieces = fields.trunk_pieces;
     const std::size_t trunk_slots = std::max<std::size_t>(pieces.size(), 1);
     std::vector<float> done(trunk_slots + 1, 0.0f);  // each trunk piece's fraction, the crown's
@@ -618,7 +646,10 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     double trunk_ms = 0.0, crown_ms = 0.0, leaves_ms = 0.0;
     auto trunk = [&] {
         Stopwatch own;
-        if (game_mesh) {
+        if (prisms) {
+            out.trunk = branch_prisms(out.branch_axes, options.budget).mesh;
+            if (!mesh_crown && options.progress) options.progress(1.0f);
+        } else if (game_mesh) {
             // The pieces meshed beside each other too.
             std::vector<Mesh> meshed(pieces.size());
             tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t k) {
@@ -656,6 +687,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         crown_ms = own.lap_ms();
     };
     auto leaves = [&] {
+        if (out.leaf_style == LeafStyle::None) return;
         Stopwatch own;
         out.leaves = tree_leaves(out.skeleton, fields, p, options.cancel);
         leaves_ms = own.lap_ms();
@@ -665,7 +697,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         out.notes.push_back(vanished_crown(p, fields.crown_box));
     out.times.push_back({"trunk mesh", trunk_ms, true});
     if (mesh_crown) out.times.push_back({"crown mesh", crown_ms, true});
-    out.times.push_back({"leaves", leaves_ms, true});
+    if (out.leaf_style != LeafStyle::None) out.times.push_back({"leaves", leaves_ms, true});
     return out;
 }
 

@@ -17,21 +17,32 @@
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
 #include "sdf/sphere_field.h"
+#include "tree/branch_prisms.h"
+#include "tree/organs.h"
 
 namespace sylva {
 
 struct Tree {
     Skeleton skeleton;
     Mesh trunk;
-    Mesh crown;   // empty without tips, with sphere_diameter 0 or crown_mesh 0
-    Mesh leaves;  // open quads by design (two triangles up, two down per leaf); may be empty
+    Mesh crown;        // empty without tips, with sphere_diameter 0 or crown_mesh 0
+    Mesh leaves;       // open quads by design (two triangles up, two down per leaf); may be empty
+    OrganMesh organs;  // flowers, fruit, cones (tree/organs.h); empty for most trees
     // Struts added between crown blobs so a low budget can draw the crown (crown_merge.h);
     // 0 when the crown is meshed as grown.
     std::size_t crown_bridges = 0;
     // Segments a game mesh left out of the trunk because the crown hides them (drop_hidden).
     std::size_t hidden_segments = 0;
+    // A game mesh whose branches are prisms (BranchStyle::Prisms): the branches it may draw,
+    // and `trunk` is every one of them as prisms for the budget (branch_prisms()); a
+    // reduction draws as many as its own budget buys. Empty when the trunk is the field's
+    // surface.
+    BranchAxes branch_axes;
     // The template's crown_shape: how a game mesh draws the crown unless its budget says.
     CrownShape crown_shape = CrownShape::Automatic;
+    // The template's leaf_style: how a game mesh draws the leaves.
+    LeafStyle leaf_style = LeafStyle::Cards;
+    LeafShape leaf_shape = LeafShape::Round;  // the template's: textured cards draw it
     // The template's crown_lump_triangles: triangles of the budget per hull.
     std::size_t crown_lump_triangles = 70;
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
@@ -125,8 +136,8 @@ TreeFields tree_fields(const Skeleton& skeleton, const TreeParams& params,
 
 // The tree's leaves (generate_tree's last stage): scattered over the crown's field, or where
 // the crown is meshed in a shell one leaf deep under its surface, then the turtle's
-// polygons. `params` as generate_tree meshes with (the budget's crown resolution). Throws
-// Cancelled once `cancel` is set.
+// polygons (unless polygon_part puts them among the organs). `params` as generate_tree meshes with
+// (the budget's crown resolution). Throws Cancelled once `cancel` is set.
 Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeParams& params,
                  CancelFlag cancel = nullptr);
 

@@ -102,29 +102,53 @@ class Reader {
         }
     }
 
+    // [colors]: the parts' colours and, optionally, `palette`; or `colors = [...]`, the
+    // palette alone (the parts keep their defaults).
     void colors(const toml::node* node, PartColors& colors) const {
         if (!node) return;
+        if (node->as_array()) return palette(node, "colors", colors.palette);
         const toml::table* table = node->as_table();
-        if (!table) fail(node, "'colors' must be a table");
+        if (!table) fail(node, "'colors' must be a table of part colours or a list of [r, g, b]");
         for (const auto& [key, value] : *table) {
+            if (key.str() == "palette") {
+                palette(&value, "[colors] palette", colors.palette);
+                continue;
+            }
             glm::vec3* target = key.str() == "trunk"    ? &colors.trunk
                                 : key.str() == "crown"  ? &colors.crown
                                 : key.str() == "leaves" ? &colors.leaves
                                                         : nullptr;
             if (!target)
                 fail(&value, "[colors] unknown part '" + std::string(key.str()) +
-                                 "' (trunk, crown, leaves)");
-            const toml::array* rgb = value.as_array();
-            if (!rgb || rgb->size() != 3)
-                fail(&value, "[colors] " + std::string(key.str()) + " must be [r, g, b]");
-            for (size_t i = 0; i < 3; ++i) {
-                std::optional<double> c = (*rgb)[i].value<double>();
-                if (!c || !(*c >= 0.0 && *c <= 1.0))
-                    fail(&value, "[colors] " + std::string(key.str()) +
-                                     ": each component must be a number from 0 to 1");
-                (*target)[static_cast<int>(i)] = static_cast<float>(*c);
-            }
+                                 "' (trunk, crown, leaves, palette)");
+            *target = rgb(&value, "[colors] " + std::string(key.str()));
         }
+    }
+
+  private:
+    glm::vec3 rgb(const toml::node* value, const std::string& what) const {
+        const toml::array* rgb = value->as_array();
+        if (!rgb || rgb->size() != 3) fail(value, what + " must be [r, g, b]");
+        glm::vec3 out;
+        for (size_t i = 0; i < 3; ++i) {
+            std::optional<double> c = (*rgb)[i].value<double>();
+            if (!c || !(*c >= 0.0 && *c <= 1.0))
+                fail(value, what + ": each component must be a number from 0 to 1");
+            out[static_cast<int>(i)] = static_cast<float>(*c);
+        }
+        return out;
+    }
+
+    void palette(const toml::node* node, const std::string& what,
+                 std::vector<glm::vec3>& out) const {
+        const toml::array* list = node->as_array();
+        if (!list) fail(node, what + " must be a list of [r, g, b]");
+        if (list->size() > kMaxPaletteColors)
+            fail(node, what + " has " + std::to_string(list->size()) + " colours; at most " +
+                           std::to_string(kMaxPaletteColors));
+        out.clear();
+        for (size_t i = 0; i < list->size(); ++i)
+            out.push_back(rgb(list->get(i), what + "[" + std::to_string(i) + "]"));
     }
 
   private:
@@ -374,6 +398,12 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
     put("colors", "trunk", rgb(tree.colors.trunk));
     put("colors", "crown", rgb(tree.colors.crown));
     put("colors", "leaves", rgb(tree.colors.leaves));
+    if (!tree.colors.palette.empty()) {
+        std::string list = "[";
+        for (std::size_t i = 0; i < tree.colors.palette.size(); ++i)
+            list += (i ? ", " : "") + rgb(tree.colors.palette[i]);
+        put("colors", "palette", list + "]");
+    }
     return out.str();
 }
 

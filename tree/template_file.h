@@ -15,6 +15,8 @@
 //   leaf_shape = "oak"
 //   [colors]                 # linear RGB, 0-1
 //   trunk = [0.36, 0.24, 0.15]
+//   palette = [[0.3, 0.2, 0.1], [0.9, 0.9, 1.0]]   # colour index i (' and ;) -> entry i
+//   (or, the palette alone: colors = [[...], [...]])
 #pragma once
 
 #include <filesystem>

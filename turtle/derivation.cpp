@@ -9,9 +9,15 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "turtle/turtle.h"
 
 namespace sylva {
 namespace {
+
+// Samples of the noise field that rank a noise value (noise_choice): the choice draws the
+// value's rank among them, uniform in [0, 1), so weights keep their shares although noise
+// values crowd around 0.
+constexpr int kRankSamples = 4096;
 
 class Deriver {
   public:
@@ -19,21 +25,25 @@ class Deriver {
         : system_(system),
           settings_(settings),
           random_(settings.seed),
-          noise_(expression_noise(settings.seed)) {
+          noise_(expression_noise(settings.seed, settings.noise_kind)) {
         for (size_t r = 0; r < system.rules.size(); ++r) {
             const Rule& rule = system.rules[r];
             by_symbol_[static_cast<unsigned char>(rule.predecessor.symbol)].push_back(r);
             has_context_ = has_context_ || !rule.left.empty() || !rule.right.empty();
+            has_noise_choice_ = has_noise_choice_ || rule.noise_choice > 0.0;
         }
+        if (has_noise_choice_) rank_noise_values();
     }
 
     Word run() {
         Word word = axiom_word(system_, random_, &noise_);
         Word next;
+        next.set_names(system_.words);
         const std::vector<double> ends = step_ends();
         for (int step = 1; step <= settings_.steps; ++step) {
             throw_if_cancelled(settings_.cancel);
             if (has_context_) match_brackets(word);
+            if (has_noise_choice_) find_positions(word);
             next.clear();
             next.reserve(word.size() * 2, word.param_count() * 2);
             const double begin = ends[static_cast<size_t>(step - 1)];
@@ -110,7 +120,7 @@ class Deriver {
             total_weight += *rule.weight;
         }
         if (!weighted_.empty()) {
-            chosen = pick_weighted(total_weight);
+            chosen = pick_weighted(total_weight, word, i);
         }
         if (!chosen) {  // identity production
             out.push(symbol, word.args(i));
@@ -123,16 +133,72 @@ class Deriver {
         }
     }
 
-    const Rule* pick_weighted(double total) {
-        double target = random_.uniform() * total;
+    // One of the competing weighted rules, each with the chance of its share of `total`.
+    // Weights near the largest double sum to infinity: then every weight is taken relative
+    // to the largest, which keeps the shares. All weights zero is an error, not the last
+    // rule.
+    // Out of line: rewrite() stays small for the common, unweighted rules.
+    [[gnu::noinline]] const Rule* pick_weighted(double total, const Word& word, size_t i) {
+        const Rule& first = *weighted_.front().first;
+        if (total == 0.0)
+            throw GrammarError(
+                "the weights of the rules for '" + std::string(word.symbol_name(word.symbol(i))) +
+                    "' that apply here are all zero, so none can be chosen (give one a weight "
+                    "above zero)",
+                first.line, first.weight_column, first.text);
+        double scale = 1.0;
+        if (!std::isfinite(total)) {
+            double largest = 0.0;
+            for (const auto& [rule, bindings] : weighted_)
+                largest = std::max(largest, *rule->weight);
+            scale = 1.0 / largest;
+            total = 0.0;
+            for (const auto& [rule, bindings] : weighted_) total += *rule->weight * scale;
+        }
+        double target = choice_draw(i) * total;
         for (auto& [rule, bindings] : weighted_) {
-            target -= *rule->weight;
+            target -= *rule->weight * scale;
             if (target < 0.0 || &rule == &weighted_.back().first) {
                 bindings_ = bindings;
                 return rule;
             }
         }
         return nullptr;
+    }
+
+    // The draw in [0, 1) that picks among weighted rules: the seeded random number, or with
+    // the first competing rule's noise_choice, the rank of the noise at the module's place.
+    double choice_draw(size_t i) {
+        double frequency = 0.0;
+        for (const auto& [rule, bindings] : weighted_)
+            if (rule->noise_choice > 0.0) {
+                frequency = rule->noise_choice;
+                break;
+            }
+        if (frequency == 0.0 || i >= positions_.size()) return random_.uniform();
+        const glm::vec3& p = positions_[i];
+        // Off the lattice's integer points, where gradient noise is zero everywhere.
+        const double n =
+            noise_(p.x * frequency + 0.31, p.y * frequency + 0.57, p.z * frequency + 0.73);
+        const auto rank = std::lower_bound(ranks_.begin(), ranks_.end(), n) - ranks_.begin();
+        return std::min(static_cast<double>(rank) / kRankSamples, 1.0 - 1e-12);
+    }
+
+    void rank_noise_values() {
+        Random points(derive_seed(settings_.seed, 0x6e6f697365ULL));
+        ranks_.resize(kRankSamples);
+        for (double& v : ranks_)
+            v = noise_(points.uniform() * 256.0, points.uniform() * 256.0,
+                       points.uniform() * 256.0);
+        std::sort(ranks_.begin(), ranks_.end());
+    }
+
+    void find_positions(const Word& word) {
+        positions_.clear();
+        if (settings_.positions)
+            settings_.positions(word, positions_);
+        else
+            turtle_positions(word, TurtleSettings{}, positions_);
     }
 
     double evaluate(const Expression& e, const Rule& rule) {
@@ -233,9 +299,12 @@ class Deriver {
     const LSystem& system_;
     const DeriveSettings& settings_;
     Random random_;
-    GradientNoise noise_;
+    NoiseField noise_;
     std::array<std::vector<size_t>, 256> by_symbol_;
     bool has_context_ = false;
+    bool has_noise_choice_ = false;
+    std::vector<double> ranks_;         // sorted noise samples (rank_noise_values)
+    std::vector<glm::vec3> positions_;  // the turtle's place at each module of this step's word
     float reported_ = 0.0f;
     std::vector<size_t> bracket_match_;
     std::vector<double> bindings_;
@@ -257,8 +326,13 @@ GradientNoise expression_noise(std::uint64_t seed) {
     return GradientNoise(derive_seed(seed, noise_stream::expressions));
 }
 
-Word axiom_word(const LSystem& system, Random& random, const GradientNoise* noise) {
+NoiseField expression_noise(std::uint64_t seed, NoiseKind kind) {
+    return NoiseField(derive_seed(seed, noise_stream::expressions), kind);
+}
+
+Word axiom_word(const LSystem& system, Random& random, const NoiseField* noise) {
     Word word;
+    word.set_names(system.words);
     std::vector<double> args;
     for (const ModuleProduction& m : system.axiom) {
         args.clear();

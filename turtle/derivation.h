@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <glm/vec3.hpp>
+#include <vector>
 
 #include "core/cancel.h"
 #include "turtle/lsystem.h"
@@ -23,6 +25,12 @@ struct DeriveSettings {
     // step and every 4096 modules within one. A step's share is word_growth()'s estimate of
     // its word, so the late, large steps get most of the bar.
     std::function<void(float)> progress = nullptr;
+    // The noise noise(), fbm() and noise_loop() read (the `noise_kind` parameter).
+    NoiseKind noise_kind = NoiseKind::gradient;
+    // Where the turtle stands at each module of a word (`positions[i]` for module i), for
+    // rules that choose by noise over position (Rule::noise_choice); called once per step,
+    // only for grammars that have such rules. Null: turtle_positions() with a default turtle.
+    std::function<void(const Word&, std::vector<glm::vec3>& positions)> positions = nullptr;
 };
 
 // How big the word gets, known before deriving: symbol counts pushed through the rules
@@ -40,14 +48,17 @@ WordGrowth word_growth(const LSystem& system, int steps, double module_limit = 1
 
 // The axiom as a word (its expressions evaluated; rand() draws from `random`, noise() and
 // fbm() read `noise`, an error when null).
-Word axiom_word(const LSystem& system, Random& random, const GradientNoise* noise = nullptr);
+Word axiom_word(const LSystem& system, Random& random, const NoiseField* noise = nullptr);
 
-// The noise field noise() and fbm() read for a derivation with this seed.
+// The noise field noise() and fbm() read for a derivation with this seed (gradient noise;
+// with a kind, that kind's field of the same seed).
 GradientNoise expression_noise(std::uint64_t seed);
+NoiseField expression_noise(std::uint64_t seed, NoiseKind kind);
 
 // Throws GrammarError on evaluation errors (naming the rule's line) or when the word
 // exceeds max_modules (naming the step and the size); a word that word_growth() proves will
-// exceed it is refused before the first step.
+// exceed it is refused before the first step. Stochastic rules whose weights are all zero
+// where they compete throw a GrammarError naming the first one's line and weight column.
 Word derive(const LSystem& system, const DeriveSettings& settings);
 
 }  // namespace sylva

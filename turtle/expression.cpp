@@ -53,7 +53,10 @@ class ExpressionParser {
                 return 1;
             case Op::Noise3:
             case Op::Fbm2:
+            case Op::NoiseLoop3:
                 return 2;
+            case Op::NoiseLoop2:
+                return 1;
             case Op::Fbm3:
                 return 3;
             default:
@@ -202,7 +205,7 @@ class ExpressionParser {
             int max_arity;
             std::string_view arguments;  // for the arity error
         };
-        static constexpr std::array<Function, 11> functions{
+        static constexpr std::array<Function, 12> functions{
             {{"sin", Op::Sin, 1, 1, ""},
              {"cos", Op::Cos, 1, 1, ""},
              {"tan", Op::Tan, 1, 1, ""},
@@ -213,7 +216,8 @@ class ExpressionParser {
              {"max", Op::Max, 2, 2, ""},
              {"rand", Op::Rand, 2, 2, ""},
              {"noise", Op::Noise1, 1, 3, "x[, y[, z]]"},
-             {"fbm", Op::Fbm1, 2, 4, "octaves, x[, y[, z]]"}}};
+             {"fbm", Op::Fbm1, 2, 4, "octaves, x[, y[, z]]"},
+             {"noise_loop", Op::NoiseLoop2, 2, 3, "t, period[, x]"}}};
         const Function* function = nullptr;
         for (const Function& f : functions)
             if (f.name == name) function = &f;
@@ -293,11 +297,11 @@ bool Expression::is_constant() const {
 
 namespace {
 
-const GradientNoise& need_noise(const GradientNoise* noise) {
+const NoiseField& need_noise(const NoiseField* noise) {
     if (!noise)
         throw GrammarError(
-            "noise() and fbm() depend on the tree's seed and are not available here (in #define "
-            "values and rule weights); use them in rules and the axiom");
+            "noise(), fbm() and noise_loop() depend on the tree's seed and are not available "
+            "here (in #define values and rule weights); use them in rules and the axiom");
     return *noise;
 }
 
@@ -313,7 +317,7 @@ FbmSettings fbm_settings(double octaves) {
 }  // namespace
 
 double Expression::evaluate(std::span<const double> variables, Random& random,
-                            const GradientNoise* noise) const {
+                            const NoiseField* noise) const {
     constexpr double kDegree = std::numbers::pi / 180.0;
     double stack[64];  // compile() rejects programs deeper than this
     int top = -1;
@@ -374,6 +378,15 @@ double Expression::evaluate(std::span<const double> variables, Random& random,
                 top -= 3;
                 stack[top] = fbm(need_noise(noise), stack[top + 1], stack[top + 2], stack[top + 3],
                                  fbm_settings(stack[top]));
+                continue;
+            case Op::NoiseLoop2:
+                --top;
+                stack[top] = looping_noise(need_noise(noise), 0.0, stack[top], stack[top + 1]);
+                continue;
+            case Op::NoiseLoop3:
+                top -= 2;
+                stack[top] =
+                    looping_noise(need_noise(noise), stack[top + 2], stack[top], stack[top + 1]);
                 continue;
             default:
                 break;

@@ -3,9 +3,12 @@
 //
 // Syntax: numbers, names, + - * / ^ (power), unary - and !, parentheses, comparisons
 // < <= > >= == !=, && ||, and the functions sin cos tan (degrees), sqrt abs min max floor
-// rand(a,b), noise(x), noise(x,y), noise(x,y,z) (improved gradient noise in [-1, 1], seeded
-// by the tree's seed) and fbm(octaves,x), fbm(octaves,x,y), fbm(octaves,x,y,z) (that many
-// octaves, 1 to 16, persistence 1/2, lacunarity 2; in [-1, 1]). Booleans are 1 and 0.
+// rand(a,b), noise(x), noise(x,y), noise(x,y,z) (the tree's noise field in [-1, 1]: Perlin's
+// gradient noise or a value noise, as `noise_kind` says, seeded by the tree's seed),
+// fbm(octaves,x), fbm(octaves,x,y), fbm(octaves,x,y,z) (that many octaves, 1 to 16,
+// persistence 1/2, lacunarity 2; in [-1, 1]) and noise_loop(t, period), noise_loop(t,
+// period, x) (noise that repeats in t with that period: looping animation, such as wind).
+// Booleans are 1 and 0.
 #pragma once
 
 #include <cstdint>
@@ -39,10 +42,10 @@ class Expression {
     static Expression constant(double value);
 
     // Throws GrammarError (no line) on division by zero or a non-finite result, and when the
-    // expression calls noise() or fbm() but `noise` is null (constants and weights are
-    // evaluated before a tree's seed is known).
+    // expression calls noise(), fbm() or noise_loop() but `noise` is null (constants and
+    // weights are evaluated before a tree's seed is known).
     double evaluate(std::span<const double> variables, Random& random,
-                    const GradientNoise* noise = nullptr) const;
+                    const NoiseField* noise = nullptr) const;
 
     // True when the value does not depend on variables, rand or noise, so it can be folded.
     bool is_constant() const;
@@ -82,6 +85,8 @@ class Expression {
                // dimension)
         Fbm2,
         Fbm3,
+        NoiseLoop2,  // noise_loop(t, period), noise_loop(t, period, x)
+        NoiseLoop3,
     };
     struct Instruction {
         Op op;

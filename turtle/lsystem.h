@@ -1,13 +1,15 @@
 // A parsed L-system (docs/grammar.md): axiom, rules with optional contexts, conditions and
-// weights, and the symbols context matching skips.
+// weights, the symbols context matching skips, and the names of its word modules.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "turtle/expression.h"
+#include "turtle/word.h"
 
 namespace sylva {
 
@@ -31,8 +33,14 @@ struct Rule {
     std::optional<Expression> condition;
     std::vector<ModuleProduction> successor;
     std::optional<double> weight;  // set for stochastic rules
-    int line = 0;                  // where the rule was written, for error messages
-    std::string text;              // the rule's source line
+    // Stochastic choice by noise over where the module stands (Limbach 2004: neighbours
+    // choose alike) instead of the seeded random draw: the noise's cycles per meter; 0 for
+    // the random draw. Written `: weight, noise FREQUENCY`.
+    double noise_choice = 0.0;
+    int line = 0;           // where the rule was written, for error messages
+    int column = 0;         // the predecessor's column (1-based), for warnings
+    int weight_column = 0;  // the weight's column (1-based), 0 without a weight
+    std::string text;       // the rule's source line
 };
 
 struct LSystem {
@@ -41,6 +49,8 @@ struct LSystem {
     std::string axiom_text;           // its source line
     std::vector<Rule> rules;          // in the order written
     std::array<bool, 256> ignored{};  // #ignore: skipped when matching contexts
+    // The names of the word symbols (Word::set_names); null when the grammar has none.
+    std::shared_ptr<const WordNames> words;
 };
 
 }  // namespace sylva

@@ -66,6 +66,11 @@ TurtleSettings turtle_settings(const TreeTemplate& tree) {
     s.trunk_taper = p.trunk_taper;
     s.branch_taper = p.branch_taper;
     s.elasticity = p.tropism;
+    // ABOP's T: the template's tropism vector, or straight down while it is 0 (the vector
+    // is colonization's too, where 0 means no pull).
+    const glm::dvec3 t(p.tropism_vector_x, p.tropism_vector_y, p.tropism_vector_z);
+    if (t != glm::dvec3(0.0)) s.tropism = t;
+    s.noise_kind = static_cast<NoiseKind>(p.noise_kind);
     s.pipe_tip_width = p.tip_width;
     s.pipe_exponent = p.pipe_exponent;
     s.seed = p.seed;
@@ -86,6 +91,12 @@ Word derive_word(const TreeTemplate& tree, CancelFlag cancel,
         settings.seed = tree.params.seed;
         settings.cancel = cancel;
         settings.progress = progress;
+        settings.noise_kind = static_cast<NoiseKind>(tree.params.noise_kind);
+        // Rules that choose by noise over position see the turtle the tree is drawn with.
+        const TurtleSettings turtle = turtle_settings(tree);
+        settings.positions = [&turtle](const Word& word, std::vector<glm::vec3>& positions) {
+            turtle_positions(word, turtle, positions);
+        };
         return derive(system, settings);
     });
 }

@@ -1,6 +1,7 @@
 #include "turtle/turtle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -71,38 +72,81 @@ void orthonormalize(State& s) {
     s.up = glm::cross(s.heading, s.left);
 }
 
+// A polygon being drawn: the outline its moves trace (from where '{' stood), the vertices
+// its '.' marks, and its colour index.
+struct OpenPolygon {
+    std::vector<glm::vec3> traced;
+    std::vector<glm::vec3> dotted;
+    int color = 0;
+};
+
+// Drops vertices that repeat the one before, and a last one that returns to the first (ABOP's
+// leaves trace back to where they started): the outline without zero-length edges.
+std::vector<glm::vec3> clean_outline(const std::vector<glm::vec3>& traced) {
+    constexpr float kSame = 1e-6f;
+    std::vector<glm::vec3> out;
+    for (const glm::vec3& v : traced)
+        if (out.empty() || glm::distance(v, out.back()) > kSame) out.push_back(v);
+    while (out.size() > 1 && glm::distance(out.back(), out.front()) <= kSame) out.pop_back();
+    return out;
+}
+
 class Interpreter {
   public:
-    Interpreter(const Word& word, const TurtleSettings& settings)
+    Interpreter(const Word& word, const TurtleSettings& settings,
+                std::vector<glm::vec3>* positions = nullptr)
         : word_(word),
           settings_(settings),
-          bend_pitch_(derive_seed(settings.seed, noise_stream::bend)),
-          bend_turn_(derive_seed(derive_seed(settings.seed, noise_stream::bend), 1)),
-          width_(derive_seed(settings.seed, noise_stream::width)),
+          bend_pitch_(derive_seed(settings.seed, noise_stream::bend), settings.noise_kind),
+          bend_turn_(derive_seed(derive_seed(settings.seed, noise_stream::bend), 1),
+                     settings.noise_kind),
+          width_(derive_seed(settings.seed, noise_stream::width), settings.noise_kind),
           tropism_{
-              GradientNoise(derive_seed(settings.seed, noise_stream::tropism)),
-              GradientNoise(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 1)),
-              GradientNoise(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 2))},
-          jitter_seed_(derive_seed(settings.seed, noise_stream::jitter)) {
+              NoiseField(derive_seed(settings.seed, noise_stream::tropism), settings.noise_kind),
+              NoiseField(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 1),
+                         settings.noise_kind),
+              NoiseField(derive_seed(derive_seed(settings.seed, noise_stream::tropism), 2),
+                         settings.noise_kind)},
+          jitter_seed_(derive_seed(settings.seed, noise_stream::jitter)),
+          positions_(positions) {
         state_.width = settings.initial_width;
         start_branch();
+        // Word modules named "~name" place the organ `name`; other words only drive the
+        // derivation.
+        if (const auto& names = word.names())
+            for (std::size_t k = 0; k < names->size(); ++k)
+                if ((*names)[k].size() > 1 && (*names)[k][0] == '~')
+                    surfaces_[k] = (*names)[k].substr(1);
     }
 
     Skeleton run() {
+        if (positions_) positions_->assign(word_.size(), glm::vec3(0.0f));
         for (size_t i = 0; i < word_.size(); ++i) {
             if (i % 4096 == 0) {
                 throw_if_cancelled(settings_.cancel);
                 if (settings_.progress)
                     settings_.progress(static_cast<float>(i) / static_cast<float>(word_.size()));
             }
+            if (positions_) (*positions_)[i] = glm::vec3(state_.position);
             std::span<const double> a = word_.args(i);
             auto arg = [&](double fallback) { return a.empty() ? fallback : a[0]; };
-            switch (word_.symbol(i)) {
+            const char symbol = word_.symbol(i);
+            if (is_word_symbol(symbol)) {
+                place_organ(symbol, a);
+                continue;
+            }
+            switch (symbol) {
                 case 'F':
                     forward(arg(settings_.step), true);
                     break;
                 case 'f':
                     forward(arg(settings_.step), false);
+                    break;
+                case 'G':
+                    forward(arg(settings_.step), true, false);
+                    break;
+                case 'g':
+                    forward(arg(settings_.step), false, false);
                     break;
                 case '+':
                     turn(state_.angle_factor * arg(settings_.turn_angle));
@@ -135,9 +179,11 @@ class Interpreter {
                     start_branch();
                     break;
                 case ']':
-                    if (stack_.empty())
+                    if (stack_.empty()) {
+                        if (positions_) break;
                         throw GrammarError("the derived word has a ']' with no '[' (module " +
                                            std::to_string(i + 1) + ")");
+                    }
                     state_ = stack_.back();
                     stack_.pop_back();
                     break;
@@ -147,18 +193,27 @@ class Interpreter {
                 case '\'':
                     state_.color = colour_index(a.empty() ? state_.color + 1.0 : a[0]);
                     break;
+                case ';':
+                    state_.color = colour_index(a.empty() ? state_.color - 1.0 : a[0]);
+                    break;
                 case '{':
-                    polygons_.emplace_back();
+                    polygons_.push_back({{glm::vec3(state_.position)}, {}, state_.color});
                     break;
                 case '.':
-                    if (!polygons_.empty()) polygons_.back().push_back(glm::vec3(state_.position));
+                    if (!polygons_.empty())
+                        polygons_.back().dotted.push_back(glm::vec3(state_.position));
                     break;
                 case '}':
                     close_polygon(i);
                     break;
-                case '%':
-                    i = end_of_branch(i);
+                case '%': {
+                    const size_t end = end_of_branch(i);
+                    if (positions_)
+                        for (size_t k = i + 1; k <= end && k < word_.size(); ++k)
+                            (*positions_)[k] = glm::vec3(state_.position);
+                    i = end;
                     break;
+                }
                 default:
                     break;  // other symbols only drive the derivation
             }
@@ -197,9 +252,35 @@ class Interpreter {
         }
     }
 
+    // The organ a "~name" word places, in the turtle's frame; its parameter is its size.
+    void place_organ(char symbol, std::span<const double> a) {
+        const std::string& surface = surfaces_[static_cast<std::size_t>(
+            static_cast<unsigned char>(symbol) - kFirstWordSymbol)];
+        if (surface.empty()) return;
+        Organ organ;
+        organ.surface = surface;
+        organ.position = glm::vec3(state_.position);
+        organ.heading =
+            glm::vec3(settings_.mode == TurtleMode::Lptg ? lptg_direction() : state_.heading);
+        organ.left = glm::vec3(state_.left);
+        organ.up = glm::vec3(state_.up);
+        const double size = a.empty() ? 0.0 : a[0];
+        organ.size =
+            std::isfinite(size) && size > 0.0 ? static_cast<float>(std::min(size, 1e6)) : 0.0f;
+        organ.color = state_.color;
+        out_.organs.push_back(std::move(organ));
+    }
+
+    // Inside a polygon, a move that records (F, f) adds the point it reaches to the outline.
+    void forward(double length, bool draw, bool record = true) {
+        forward_move(length, draw);
+        if (record && !polygons_.empty())
+            polygons_.back().traced.push_back(glm::vec3(state_.position));
+    }
+
     // The turtle's step with bending: pieces an eighth of a noise cycle long, each turned by
     // the curvature noise at its middle (bend degrees per meter at noise 1).
-    void forward(double length, bool draw) {
+    void forward_move(double length, bool draw) {
         length *= state_.length_factor;
         if (settings_.bend == 0.0) return forward_piece(length, draw, 1.0, true);
         const double piece = 0.125 / settings_.bend_frequency;
@@ -322,11 +403,21 @@ class Interpreter {
         state_.up = glm::cross(state_.heading, state_.left);
     }
 
+    // A polygon that marks vertices with '.' takes those (as they were marked); else its
+    // traced outline.
     void close_polygon(size_t i) {
-        if (polygons_.empty())
+        if (polygons_.empty()) {
+            if (positions_) return;
             throw GrammarError("the derived word has a '}' with no '{' (module " +
                                std::to_string(i + 1) + ")");
-        if (polygons_.back().size() >= 3) out_.polygons.push_back(std::move(polygons_.back()));
+        }
+        OpenPolygon& open = polygons_.back();
+        std::vector<glm::vec3> outline =
+            open.dotted.empty() ? clean_outline(open.traced) : std::move(open.dotted);
+        if (outline.size() >= 3) {
+            out_.polygons.push_back(std::move(outline));
+            out_.polygon_colors.push_back(open.color);
+        }
         polygons_.pop_back();
     }
 
@@ -343,16 +434,18 @@ class Interpreter {
 
     const Word& word_;
     const TurtleSettings& settings_;
-    GradientNoise bend_pitch_, bend_turn_, width_;
-    GradientNoise tropism_[3];
+    NoiseField bend_pitch_, bend_turn_, width_;
+    NoiseField tropism_[3];
     std::uint64_t jitter_seed_;
+    std::vector<glm::vec3>* positions_;            // turtle_positions(): where each module is read
+    std::array<std::string, kMaxWords> surfaces_;  // per word symbol: its organ, or empty
     int branches_ = 0;
     // Per drawn segment, for width variation: its branch and its span along the branch.
     std::vector<int> span_branch_;
     std::vector<double> span_start_, span_end_;
     State state_;
     std::vector<State> stack_;
-    std::vector<std::vector<glm::vec3>> polygons_;
+    std::vector<OpenPolygon> polygons_;
     Skeleton out_;
 };
 
@@ -360,6 +453,15 @@ class Interpreter {
 
 Skeleton interpret(const Word& word, const TurtleSettings& settings) {
     return Interpreter(word, settings).run();
+}
+
+void turtle_positions(const Word& word, const TurtleSettings& settings,
+                      std::vector<glm::vec3>& positions) {
+    TurtleSettings walk = settings;
+    walk.progress = nullptr;
+    walk.width_model = WidthModel::Explicit;  // widths are not wanted
+    walk.width_variation = 0.0;
+    Interpreter(word, walk, &positions).run();
 }
 
 }  // namespace sylva

@@ -7,8 +7,10 @@
 
 #include <functional>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "core/cancel.h"
+#include "core/noise.h"
 #include "core/skeleton.h"
 #include "core/tree_template.h"  // TurtleMode, WidthModel
 #include "turtle/word.h"
@@ -44,10 +46,24 @@ struct TurtleSettings {
     double jitter = 0.0;             // per branch: angles and lengths times 1 +- jitter (uniform)
     double width_variation = 0.0;    // widths times 1 + this * noise(s)
     double tropism_variation = 0.0;  // the tropism vector plus this * a noise vector per branch
+    NoiseKind noise_kind = NoiseKind::gradient;  // the noise of bend, width and tropism variation
 };
 
 // Throws GrammarError for a ']' with no '[' or a '}' with no '{' in the word. With bend > 0
 // an F longer than a tenth of a noise cycle is drawn as several segments, so the curve shows.
+//
+// Polygons (ABOP 5.1): '{' starts one where the turtle stands and each F, f or G/g move
+// inside it traces the outline (F and f record the point they reach as a vertex, G and g
+// move without recording one); a polygon that marks vertices with '.' takes those alone.
+// Polygons nest ('{' inside '{' starts an inner one); each gets the colour index the
+// turtle has at its '{'. A word module "~name" (ABOP's predefined surfaces) places the
+// organ `name` in the turtle's frame, with the module's parameter as its size.
 Skeleton interpret(const Word& word, const TurtleSettings& settings);
+
+// Where the turtle stands when it reads each module of `word` (positions[i] for module i),
+// walked as interpret() walks it; brackets and braces that do not match are passed over
+// (a word in the middle of a derivation may have them). Replaces `positions`.
+void turtle_positions(const Word& word, const TurtleSettings& settings,
+                      std::vector<glm::vec3>& positions);
 
 }  // namespace sylva

@@ -33,7 +33,9 @@ std::vector<FolderEntry> list_folder(const fs::path& folder,
 
 std::optional<std::string> file_dialog(FileDialogState& dialog,
                                        const std::vector<std::string>& recent_files) {
-    const char* title = dialog.saving ? "Save template as###file" : "Open template###file";
+    const std::string title_text =
+        (dialog.saving ? "Save " + dialog.what + " as" : "Open " + dialog.what) + "###file";
+    const char* title = title_text.c_str();
     if (dialog.open_requested) {
         dialog.open_requested = false;
         std::error_code ec;
@@ -53,7 +55,7 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputText("##folder", &dialog.folder);
-    const std::vector<FolderEntry> entries = list_folder(folder, {".toml", ".lsys", ".txt"});
+    const std::vector<FolderEntry> entries = list_folder(folder, dialog.extensions);
     const float list_height = ImGui::GetContentRegionAvail().y -
                               3.0f * ImGui::GetFrameHeightWithSpacing() -
                               (recent_files.empty() ? 0.0f : ImGui::GetFrameHeightWithSpacing());
@@ -72,7 +74,7 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
             }
         }
     }
-    if (entries.empty()) ImGui::TextDisabled("(no folders or template files here)");
+    if (entries.empty()) ImGui::TextDisabled("(no folders or %s files here)", dialog.what.c_str());
     ImGui::EndChild();
     if (!enter.empty()) dialog.folder = (folder / enter).string();
 
@@ -88,14 +90,16 @@ std::optional<std::string> file_dialog(FileDialogState& dialog,
         }
     }
     ImGui::SetNextItemWidth(-1.0f);
-    const bool entered = ImGui::InputTextWithHint("##name", "file name (.toml)", &dialog.name,
+    const std::string first = dialog.extensions.empty() ? "" : dialog.extensions.front();
+    const std::string hint = "file name (" + first + ")";
+    const bool entered = ImGui::InputTextWithHint("##name", hint.c_str(), &dialog.name,
                                                   ImGuiInputTextFlags_EnterReturnsTrue);
     const bool can_confirm = !dialog.name.empty();
     ImGui::BeginDisabled(!can_confirm);
     if ((ImGui::Button(dialog.saving ? "Save" : "Open") || entered) && can_confirm) {
         fs::path path =
             fs::path(dialog.name).is_absolute() ? fs::path(dialog.name) : folder / dialog.name;
-        if (dialog.saving && !path.has_extension()) path += ".toml";
+        if (dialog.saving && !path.has_extension()) path += first;
         chosen = path.string();
     }
     ImGui::EndDisabled();

@@ -26,6 +26,10 @@ struct FileDialogState {
     bool saving = false;          // Save as (a new name may be typed) or Open
     std::string folder;           // the folder shown
     std::string name;             // the file name field
+    // What it lists and names: template files by default; the first extension is the one a
+    // new name gets. `what` names them in the title ("template", "layout example").
+    std::vector<std::string> extensions{".toml", ".lsys", ".txt"};
+    std::string what = "template";
 };
 
 // Draws the dialog while it is open; returns the chosen path once, when the user confirms.

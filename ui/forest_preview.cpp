@@ -29,22 +29,27 @@ void cancel_job(ForestPreview& p) {
     p.has_job = false;
 }
 
-void start_job(ForestPreview& p, const TreeTemplate& tree, const ForestPreviewOptions& options) {
+void start_job(ForestPreview& p, const TreeTemplate& tree, const ForestPreviewOptions& options,
+               const ForestPreviewPlan& plan) {
     cancel_job(p);
     p.cancel = std::make_shared<std::atomic<bool>>(false);
     p.done = std::make_shared<std::atomic<int>>(0);
     p.total = std::make_shared<std::atomic<int>>(options.variants);
     p.job_template = tree;
     p.job_options = options;
+    p.job_plan = plan;
     p.has_job = true;
     p.error.clear();
-    p.job = std::async(
-        std::launch::async, [tree, options, cancel = p.cancel, done = p.done, total = p.total] {
-            return make_forest_preview(tree, options, cancel.get(), [&](int d, int t) {
-                total->store(t);
-                done->store(d);
-            });
-        });
+    p.job = std::async(std::launch::async,
+                       [tree, options, plan, cancel = p.cancel, done = p.done, total = p.total] {
+                           return make_forest_preview(
+                               tree, options, cancel.get(),
+                               [&](int d, int t) {
+                                   total->store(t);
+                                   done->store(d);
+                               },
+                               plan);
+                       });
 }
 
 void upload(ForestPreview& p, const ForestPreviewMeshes& m) {
@@ -63,6 +68,7 @@ void upload(ForestPreview& p, const ForestPreviewMeshes& m) {
     p.ready = true;
     p.shown_template = p.job_template;
     p.shown_options = p.job_options;
+    p.shown_plan = p.job_plan;
 }
 
 }  // namespace
@@ -98,7 +104,8 @@ bool update_forest_preview(ForestPreview& p, StudioState& state) {
     if (finished(p.job)) {
         try {
             // A first forest or another size of square: the camera follows the area.
-            const bool new_area = !p.ready || p.shown_options.size != p.job_options.size;
+            const bool new_area = !p.ready || p.shown_options.size != p.job_options.size ||
+                                  p.shown_plan.id != p.job_plan.id;
             upload(p, p.job.get());
             frame = p.frame_pending || new_area;
             p.frame_pending = false;
@@ -123,12 +130,14 @@ bool update_forest_preview(ForestPreview& p, StudioState& state) {
     // Sliders held: wait for the release rather than plant every step of the drag.
     if (state.tree && !state.dragging) {
         const ForestPreviewOptions& wanted = state.view.forest_options;
+        const std::uint64_t plan = state.view.forest_plan.id;
         const bool shown_current = p.ready &&
                                    same_template(p.shown_template, state.shown_template) &&
-                                   same_options(p.shown_options, wanted);
+                                   same_options(p.shown_options, wanted) && p.shown_plan.id == plan;
         const bool job_current = p.has_job && same_template(p.job_template, state.shown_template) &&
-                                 same_options(p.job_options, wanted);
-        if (!job_current && !shown_current) start_job(p, state.shown_template, wanted);
+                                 same_options(p.job_options, wanted) && p.job_plan.id == plan;
+        if (!job_current && !shown_current)
+            start_job(p, state.shown_template, wanted, state.view.forest_plan);
     }
     if (p.job.valid()) {
         char text[96];

@@ -21,6 +21,7 @@ struct ForestPreview {
     std::shared_ptr<std::atomic<int>> done, total;  // variants made, of how many
     TreeTemplate job_template;                      // what the job (or the shown forest) plants
     ForestPreviewOptions job_options;
+    ForestPreviewPlan job_plan, shown_plan;  // the plan planted instead of the square, if any
     bool has_job = false;  // job_template / job_options hold a started job's input
     // Cancelled jobs until their workers notice: a std::async future blocks in its
     // destructor, so dropping one at once would freeze the UI until it stops.

@@ -11,13 +11,27 @@
 namespace sylva::studio {
 
 forest::ForestSettings forest_preview_settings(const TreeTemplate& tree,
-                                               const ForestPreviewOptions& options) {
+                                               const ForestPreviewOptions& options,
+                                               const ForestPreviewPlan& plan) {
     const double size =
         std::clamp(static_cast<double>(options.size), static_cast<double>(kForestPreviewMinSize),
                    static_cast<double>(kForestPreviewMaxSize));
     forest::ForestSettings s;  // spacing, density and jitters: `sylva forest`'s defaults
     s.ground = forest::rectangle_ground(size, size);
     s.species.push_back({tree, 1.0, std::string(forest::kForestClass)});
+    if (plan.ground && !plan.ground->polygons.empty()) {
+        glm::dvec2 lo(1e300), hi(-1e300);
+        for (const forest::GroundPolygon& p : plan.ground->polygons)
+            for (const glm::dvec2& q : p.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+        const double scale =
+            std::min(kForestPreviewPlanScale,
+                     kForestPreviewPlanMaxSide / std::max({hi.x - lo.x, hi.y - lo.y, 1e-9}));
+        s.ground = *plan.ground;
+        for (forest::GroundPolygon& p : s.ground.polygons)
+            for (glm::dvec2& q : p.points) q = (q - 0.5 * (lo + hi)) * scale;
+        s.layout = forest::LayoutPlanting{};
+        s.species.push_back({tree, 1.0, std::string(forest::kOrchardClass)});
+    }
     s.variants =
         static_cast<std::size_t>(std::clamp(options.variants, 1, kForestPreviewMaxVariants));
     s.seed = tree.params.seed;
@@ -40,8 +54,9 @@ void append_transformed(Mesh& into, const Mesh& part, const glm::mat4& model) {
 
 ForestPreviewMeshes make_forest_preview(const TreeTemplate& tree,
                                         const ForestPreviewOptions& options, CancelFlag cancel,
-                                        const std::function<void(int, int)>& progress) {
-    const forest::ForestSettings settings = forest_preview_settings(tree, options);
+                                        const std::function<void(int, int)>& progress,
+                                        const ForestPreviewPlan& ground_plan) {
+    const forest::ForestSettings settings = forest_preview_settings(tree, options, ground_plan);
     const forest::ForestPlan plan = forest::plan_forest(settings);
     MeshOptions mesh;
     mesh.budget = game_budget(settings.finish);

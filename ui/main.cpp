@@ -16,9 +16,11 @@
 #include "ui/layout_panel.h"
 #endif
 #include "ui/forest_preview.h"
+#include "ui/impostor_view.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
 #include "ui/orbit_camera.h"
+#include "ui/organ_view.h"
 #include "ui/panels.h"
 #include "ui/release_bench.h"
 #include "ui/scale_figure.h"
@@ -102,6 +104,7 @@ struct Viewport {
     Backdrop backdrop;
     GroundGrid grid;
     MeshRenderer trunk, crown, leaves;
+    OrganView organs;  // flowers, fruit, cones (ui/organ_view.h), shown with the leaves
     LineRenderer skeleton;
     LineRenderer figure;  // the 1.8 m person beside the trunk
     // Space colonization: the envelope's wire, its attraction points, and the skeleton up to
@@ -110,7 +113,8 @@ struct Viewport {
     static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
     int points_step = kNothing, replay_step = kNothing;
-    WindView wind;  // the wind toggle's parts (ui/wind_view.h)
+    WindView wind;          // the wind toggle's parts (ui/wind_view.h)
+    ImpostorView impostor;  // the LOD slider's impostor slot (ui/impostor_view.h)
 };
 
 GLFWwindow* create_window() {
@@ -167,6 +171,11 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
     viewport.trunk.upload(meshes.trunk);
     viewport.crown.upload(meshes.crown);
     viewport.leaves.upload(meshes.leaves);
+    const std::vector<sylva::OrganMesh>& organs = generated.finished.organs;
+    upload_organs(viewport.organs,
+                  organs.empty() ? generated.tree.organs
+                                 : organs[std::min<std::size_t>(
+                                       static_cast<std::size_t>(meshes.level), organs.size() - 1)]);
     viewport.skeleton.upload(skeleton_lines(generated.tree.skeleton));
     viewport.wind.ready = false;
     return meshes.level;
@@ -290,7 +299,7 @@ void handle_shortcuts(StudioState& state) {
         if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
         if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
         if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
-        for (int level = 0; level < kLodLevels; ++level)
+        for (int level = 0; level <= kImpostorSlot; ++level)
             if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
                 state.view.low_poly = true;
                 state.view.lod_level = level;
@@ -353,14 +362,19 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         const MeshRenderer& renderer;
         glm::vec3 color;
     };
+    // The impostor slot draws the impostor instead of the tree, unless comparing.
+    const bool impostor = impostor_slot_shown(show) && !show.impostor_tree && !planted && !replay;
+    if (impostor) viewport.impostor.draw(view, projection, glm::vec3(glm::inverse(view)[3]));
     for (const Part& part :
          {Part{show.trunk, planted ? *forest.trunk : viewport.trunk, colors.trunk},
           Part{show.crown, planted ? *forest.crown : viewport.crown, colors.crown},
           Part{show.leaves, planted ? *forest.leaves : viewport.leaves, colors.leaves}}) {
-        if (!part.on || replay) continue;
+        if (!part.on || replay || impostor) continue;
         part.renderer.draw(view, projection, part.color);
         if (show.wireframe) part.renderer.draw_wireframe(view, projection, kWireColor);
     }
+    if (show.leaves && !replay && !planted)
+        draw_organs(viewport.organs, view, projection, colors, show.wireframe, kWireColor);
     viewport.grid.draw(view, projection);
     if (show.scale_figure && !planted) viewport.figure.draw(view, projection, kFigureColor);
     if (replay)
@@ -382,10 +396,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 #ifdef SYLVA_HAS_LAYOUT
     LayoutPanelState layout_panel;
     if (options.layout_example && !select_layout_example(layout_panel, *options.layout_example)) {
-        std::fprintf(stderr, "sylva-studio: no layout example '%s' (see sylva layout examples)\n",
+        std::fprintf(stderr,
+                     "sylva-studio: '%s' is neither a layout example (see sylva layout examples) "
+                     "nor a file\n",
                      options.layout_example->c_str());
         return 2;
     }
+    layout_panel.plant_when_ready = options.layout_example && options.forest_preview;
 #endif
     state.view.low_poly = options.low_poly;
     {
@@ -477,6 +494,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         poll_jobs(state);
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
+#ifdef SYLVA_HAS_LAYOUT
+            if (ext == ".mesh" || ext == ".json") {  // a layout example
+                open_layout_file(layout_panel, file);
+                continue;
+            }
+#endif
             if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
                 state.template_path = file;
                 open_template_file(state);
@@ -489,21 +512,23 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.view.turntable) state.camera.yaw_deg += 0.5f;
         if (state.tree_changed) {
             place_scale_figure(viewport, *state.tree);
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
             update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
             state.frame_next_tree = false;
         } else if (state.tree &&
-                   shown_parts(*state.tree, state.view.lod_level).level != uploaded_level) {
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+                   shown_parts(*state.tree, mesh_level(state.view)).level != uploaded_level) {
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
         }
+        if (state.tree && impostor_slot_shown(state.view) && state.tree->reduced())
+            viewport.impostor.update(state.tree, tree_colors(state.shown_template));
         if (state.tree && state.view.wind) {
             upload_swayed(viewport, *state.tree, uploaded_level,
                           options.wind_seconds.value_or(static_cast<float>(glfwGetTime())));
             swaying = true;
         } else if (state.tree && swaying) {
-            uploaded_level = upload_tree(viewport, *state.tree, state.view.lod_level);
+            uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
             swaying = false;
         }
         update_colonization(viewport, state, false);
@@ -528,7 +553,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_status_bar(state, layout, frame_rate.shown());
         draw_variants_strip(strip, state, layout);
 #ifdef SYLVA_HAS_LAYOUT
-        draw_layout_panel(layout_panel, layout.width, layout.height);
+        if (state.layout_requested) layout_panel.open = true, state.layout_requested = false;
+        draw_layout_panel(layout_panel, state, layout);
 #endif
         draw_dialogs(state);  // last: see panels.h
         const bool asking = cost_dialog_open() && !generation_running(state);
@@ -598,6 +624,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     glfwHideWindow(window);
     release_variants_strip(strip);
     release_forest_preview(forest);
+#ifdef SYLVA_HAS_LAYOUT
+    release_layout_panel(layout_panel);
+#endif
     cancel_generations(state);
     return 0;
 }

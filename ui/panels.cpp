@@ -17,6 +17,8 @@
 #include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
+#include "ui/impostor_view.h"
+#include "ui/rules_warnings.h"
 #include "ui/template_controls.h"
 
 namespace sylva::studio {
@@ -441,6 +443,7 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     }
     const TextMark mark{state.error_line, state.error_column};
     rules_editor("rules", state.tree_template.grammar, mark, editor, height);
+    rules_warnings(state.tree_template, editor);
     if (state.error_line > 0) {
         ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
         ImGui::SameLine();
@@ -511,11 +514,17 @@ void view_section(StudioState& state) {
     ImGui::SameLine();
     ImGui::BeginDisabled(!v.low_poly);
     ImGui::SetNextItemWidth(90.0f);
-    ImGui::SliderInt("##lod", &v.lod_level, 0, kLodLevels - 1, "LOD %d");
+    ImGui::SliderInt("##lod", &v.lod_level, 0, kImpostorSlot,
+                     v.lod_level == kImpostorSlot ? "impostor" : "LOD %d");
     tooltip(
         "the level of the LOD chain an export with \"LOD chain\" writes: budget, 1/2, 1/4, "
-        "1/8 (keys 0-3)");
+        "1/8 (keys 0-3), then the octahedral impostor of export --impostor (key 4)");
     ImGui::EndDisabled();
+    if (impostor_slot_shown(v)) {  // ui/impostor_view.h
+        ImGui::SameLine();
+        ImGui::Checkbox("tree", &v.impostor_tree);
+        tooltip("show the tree the impostor stands for (LOD 0) in its place, to compare");
+    }
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
     ImGui::Checkbox("scale figure", &v.scale_figure);
@@ -528,6 +537,10 @@ void view_section(StudioState& state) {
     tooltip("saves the 3D view as a PNG in the working folder");
     message_line(state.screenshot_message, false);
     forest_preview_row(state);  // ui/forest_preview.h
+#ifdef SYLVA_HAS_LAYOUT
+    if (ImGui::Button("2D layouts...")) state.layout_requested = true;  // ui/layout_panel.h
+    tooltip("ground plans grown from one drawn example, to plant as a forest");
+#endif
     if (state.tree && grows_by_colonization(state.shown_template))
         colonization_view_row(v, last_iteration(state.tree->tree.skeleton));
     ImGui::TextDisabled("left drag orbit, right / middle drag pan, wheel zoom");
@@ -537,22 +550,21 @@ void view_section(StudioState& state) {
 void profile_combo(EngineProfile& profile) {
     ImGui::SetNextItemWidth(110.0f);
     if (ImGui::BeginCombo("profile", std::string(profile_info(profile).name).c_str())) {
-        for (EngineProfile p : {EngineProfile::Generic, EngineProfile::Unity, EngineProfile::Unreal,
-                                EngineProfile::Godot})
-            if (ImGui::Selectable(std::string(profile_info(p).name).c_str(), p == profile))
-                profile = p;
+        for (const ProfileInfo& p : engine_profiles()) {
+            if (ImGui::Selectable(std::string(p.name).c_str(), p.profile == profile))
+                profile = p.profile;
+            tooltip(std::string(p.summary).c_str());
+        }
         ImGui::EndCombo();
     }
-    tooltip(
-        "collision names, wind channel and OBJ/PLY units for unity, unreal or godot; generic "
-        "writes no collision");
+    tooltip(std::string(profile_info(profile).summary).c_str());
 }
 
 void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
-    tooltip("the extension picks the format: .obj (+ .mtl), .glb or .ply");
+    tooltip("the extension picks the format: .obj (+ .mtl), .glb, .ply or .fbx");
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())
@@ -697,7 +709,10 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
         const Tree& t = shown.tree;
         ImGui::Text("%s  ", state.shown_template.name.c_str());
         ImGui::SameLine(0.0f, 0.0f);
-        if (shown.reduced()) {
+        if (shown.reduced() && impostor_slot_shown(state.view)) {
+            ImGui::Text("impostor of LOD0: 2 triangles, 8 x 8 views of 128 px%s",
+                        state.view.impostor_tree ? " (showing LOD0)" : "");
+        } else if (shown.reduced()) {
             const GameMeshTotals totals = game_mesh_totals(shown, state.view.lod_level);
             const std::string label = "game mesh LOD" + std::to_string(totals.level) + ": ";
             totals_line(label, totals, false);

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <string_view>
 
+#include "ui/studio_state.h"
+
 namespace sylva::studio {
 
 StudioOptions parse_studio_options(int argc, const char* const* argv) {
@@ -34,6 +36,9 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--lod takes a level from 0 to 3, got '" + std::string(text) +
                                  "'");
             options.lod_level = level;
+            options.low_poly = true;
+        } else if (arg == "--impostor") {  // the LOD slider's slot after LOD 3
+            options.lod_level = kLodLevels;
             options.low_poly = true;
         } else if (arg == "--no-envelope") {
             options.envelope = false;
@@ -105,8 +110,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
 }
 
 std::string studio_usage() {
-    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--no-envelope] "
-           "[--points]\n"
+    return "usage: sylva-studio [--template NAME|FILE] [--low-poly] [--lod N] [--impostor]\n"
+           "                    [--no-envelope] [--points]\n"
            "                    [--replay STEP] [--variants N] [--layout EXAMPLE] [--wind "
            "SECONDS]\n"
            "                    [--forest-preview] [--screenshot PATH [--frames N]]\n"
@@ -118,6 +123,7 @@ std::string studio_usage() {
            "  --low-poly         show the game mesh: what an export at the template's budget\n"
            "                     writes (trunk + crown reduced, leaves thinned)\n"
            "  --lod N            show level N (0-3) of its LOD chain; implies --low-poly\n"
+           "  --impostor         show the octahedral impostor (export --impostor) instead\n"
            "  --no-envelope      space colonization: hide the envelope's wire cage\n"
            "  --points           space colonization: show the attraction points\n"
            "  --replay STEP      space colonization: show the skeleton as growth left it after\n"
@@ -126,7 +132,8 @@ std::string studio_usage() {
            "  --forest-preview   start with the forest view on: a 40 x 40 m square planted with\n"
            "                     the template (sylva forest's spacing, 4 variants)\n"
            "  --layout EXAMPLE   open the 2D layout panel on a shipped example (sylva layout\n"
-           "                     examples lists them)\n"
+           "                     examples lists them) or a .mesh / .json file; with\n"
+           "                     --forest-preview its first variation is planted\n"
            "  --wind SECONDS     wind on, frozen at that time (for screenshots of the sway)\n"
            "  --screenshot PATH  draw N frames, save the window as a PNG at PATH, and exit\n"
            "  --frames N         frames to draw before the screenshot (default 5)\n"

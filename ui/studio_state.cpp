@@ -204,6 +204,7 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
     ExportOptions options;
     options.profile = settings.profile;
     options.engine.seed = tmpl.params.seed;
+    options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
     const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl), options);
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +
@@ -316,7 +317,8 @@ std::optional<FinishedTree> reuse_reduction(const GeneratedTree& previous, const
         return std::nullopt;
     FinishedTree finished = previous.finished;
     for (std::size_t i = 0; i < finished.levels.size(); ++i)
-        finished.levels[i].leaves = thin_leaves(tree.leaves, finished.leaf_budgets[i]);
+        finished.levels[i].leaves = game_leaves(tree, finished.leaf_budgets[i]);
+    finished.organs = finished_organs(tree, finished.leaf_budgets);  // this tree's, not the last
     return finished;
 }
 

@@ -137,6 +137,8 @@ struct ViewToggles {
     bool wireframe = false;
     bool low_poly = false;  // show the game mesh: what an export at the budget writes
     int lod_level = 0;      // which level of the LOD chain the low-poly view shows
+    // At the slider's impostor slot (ui/impostor_view.h): the tree it stands for instead.
+    bool impostor_tree = false;
     // Space colonization trees only (ui/colonization_view.h):
     bool envelope = true;      // the envelope as a wire cage
     bool points = false;       // the attraction points the growth started from
@@ -148,6 +150,7 @@ struct ViewToggles {
     // A small square of forest planted with the shown template (ui/forest_preview.h).
     bool forest = false;
     ForestPreviewOptions forest_options;
+    ForestPreviewPlan forest_plan;  // a 2D layout planted instead of the square (layout panel)
 };
 
 // The export's own settings; the triangle budget is the template's `triangle_budget`.
@@ -234,8 +237,9 @@ struct StudioState {
     // "screenshot": main saves the 3D view as a PNG after the next frame is drawn.
     bool screenshot_requested = false;
     std::string screenshot_message;
-    bool show_shortcuts = false;  // the list of keys (F1, "?")
-    std::string forest_status;    // the forest preview's progress or error, for the View row
+    bool show_shortcuts = false;    // the list of keys (F1, "?")
+    std::string forest_status;      // the forest preview's progress or error, for the View row
+    bool layout_requested = false;  // the View row's "2D layouts" button (a build with layout/)
 };
 
 // True when the next generation should show a draft: the low-poly view is on and a slider

@@ -114,10 +114,21 @@ std::vector<std::string_view> drawn_texts(std::string_view grammar) {
         if (line.empty() || line.front() == '#') continue;  // comments, #define, #axiom, #rules
         if (const auto hash = line.find('#'); hash != std::string_view::npos)
             line = line.substr(0, hash);
-        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos)
+        if (const auto arrow = line.rfind("->"); arrow != std::string_view::npos) {
             line = line.substr(arrow + 2);
-        else if (line.starts_with("axiom:"))
+            // A stochastic rule's weight (": w") is not drawn: cut at the first ':' outside
+            // parentheses.
+            int depth = 0;
+            for (std::size_t i = 0; i < line.size(); ++i) {
+                depth += line[i] == '(' ? 1 : line[i] == ')' ? -1 : 0;
+                if (depth == 0 && line[i] == ':') {
+                    line = line.substr(0, i);
+                    break;
+                }
+            }
+        } else if (line.starts_with("axiom:")) {
             line = line.substr(6);
+        }
         texts.push_back(line);
     }
     return texts;
@@ -212,7 +223,7 @@ bool axiom_sets_width(std::string_view grammar) {
 }
 
 bool colonization_key(std::string_view key) {
-    static constexpr std::array<std::string_view, 34> keys = {
+    static constexpr std::array<std::string_view, 31> keys = {
         "attraction_points", "influence_radius",
         "kill_distance",     "step_size",
         "max_iterations",    "envelope",
@@ -225,11 +236,10 @@ bool colonization_key(std::string_view key) {
         "obstacle_size_x",   "obstacle_size_y",
         "obstacle_size_z",   "roots",
         "root_spread",       "point_distribution",
-        "trunk_height",      "tropism_vector_x",
-        "tropism_vector_y",  "tropism_vector_z",
-        "max_degree",        "max_depth",
-        "max_no_grow",       "weighted_growth",
-        "curve_reduction",   "angle_smoothing"};
+        "trunk_height",      "max_degree",
+        "max_depth",         "max_no_grow",
+        "weighted_growth",   "curve_reduction",
+        "angle_smoothing"};
     return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
@@ -368,6 +378,8 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
             mark(key,
                  "a turtle parameter: space colonization does not read it (tropism_variation "
                  "varies its growth directions)");
+        mark("noise_kind",
+             "the L-system's noise: space colonization's variation keeps the gradient noise");
         if (std::string why = max_no_grow_unused(tree); !why.empty())
             mark("max_no_grow", std::move(why));
     } else {
@@ -380,6 +392,14 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         auto unread = [&](std::string_view key, std::string_view symbols) {
             return !uses_default(texts, symbols) && !names_param(tree.grammar, key);
         };
+        // The noise kind matters where something reads the noise: the rules (noise, fbm,
+        // noise_loop, and the ", noise F" choice all name it) or the turtle's variation.
+        if (!names_param(tree.grammar, "noise") && !names_param(tree.grammar, "fbm") &&
+            !names_param(tree.grammar, "noise_loop") && p.bend == 0.0 && p.width_variation == 0.0 &&
+            (p.tropism_variation == 0.0 || p.tropism == 0.0))
+            mark("noise_kind",
+                 "nothing reads the noise: the rules call no noise(), fbm() or noise_loop() and "
+                 "bend, width_variation and tropism_variation are 0");
         if (unread("branch_length", "Ff"))
             mark("branch_length", "every F and f in the rules gives its own length");
         if (unread("pitch_angle", "&^"))
@@ -389,8 +409,14 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         if (tree.mode == TurtleMode::Lptg && !names_param(tree.grammar, "tropism"))
             mark("tropism", "the lptg turtle (seed 001) does not bend towards gravity");
         if ((inert.contains("tropism") || p.tropism == 0.0) &&
-            !names_param(tree.grammar, "tropism"))
+            !names_param(tree.grammar, "tropism")) {
             mark("tropism_variation", "no tropism to vary: set tropism first");
+            // The L-system's tropism vector is where `tropism` bends towards.
+            for (std::string_view key :
+                 {"tropism_vector_x", "tropism_vector_y", "tropism_vector_z"})
+                if (!names_param(tree.grammar, key))
+                    mark(key, "no tropism to point: set tropism first");
+        }
         const auto width_reason = [&](WidthModel model) -> std::string {
             switch (model) {
                 case WidthModel::Explicit:
@@ -434,8 +460,10 @@ std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate&
         for (std::string_view key : {"crown_resolution", "crown_blend", "crown_fusion",
                                      "crown_shape", "crown_lump_triangles"})
             mark(key, "crown_mesh is off: the crown is not meshed (its leaves stay)");
-    if (p.triangle_budget == 0)
+    if (p.triangle_budget == 0) {
         mark("crown_shape", "triangle_budget is 0: the game mesh keeps the crown as meshed");
+        mark("branch_style", "triangle_budget is 0: the game mesh keeps the trunk as meshed");
+    }
     if (p.triangle_budget == 0 || static_cast<CrownShape>(p.crown_shape) == CrownShape::Blobs)
         mark("crown_lump_triangles", "the game mesh draws the crown as blobs, not as lumps");
     if (p.sphere_diameter <= 0.0)
@@ -471,6 +499,9 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
     const auto budget = static_cast<std::size_t>(std::max(params.triangle_budget, 0));
     int used = 0, set = 0;
     std::string why = "what it can show";
+    if (key == "trunk_resolution" && budget > 0 && branch_style(params) == BranchStyle::Prisms)
+        return "\nthe game mesh draws its branches as prisms: this meshes the full-detail "
+               "trunk and sets the thinnest branch drawn";
     if (key == "trunk_resolution") {
         used = trunk_resolution_for_budget(params, budget);
         set = params.trunk_resolution;

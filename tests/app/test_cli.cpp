@@ -72,7 +72,7 @@ TEST_F(Cli, HelpAndUsageErrors) {
     EXPECT_EQ(run("frobnicate").code, 2);
     EXPECT_EQ(run("export").code, 2);  // no -o
     EXPECT_EQ(run("export --bogus -o x.obj").code, 2);
-    EXPECT_EQ(run("export -o " + path("x.fbx")).code, 2);  // no such format
+    EXPECT_EQ(run("export -o " + path("x.dae")).code, 2);  // no such format
     EXPECT_EQ(run("export --format fbx -o " + path("x.obj")).code, 2);
 }
 
@@ -188,12 +188,13 @@ TEST_F(Cli, CostlyWorkIsRefusedBeforeItStartsWithTheEstimateAndTheOverride) {
     EXPECT_NE(r.output.find("--max-memory"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("estimated"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("s.json")));
-    // A reduction's cost shows once the meshes are made: refused before it starts.
+    // A reduction's cost shows once the meshes are made: refused before it starts (the
+    // trunk's surface reduced; prisms are drawn, not reduced).
     // (96 cells make more handles than the template's own 80, which bind only above 1,422
     // triangles with drop_hidden.)
     r =
         run("export -t ternary --set generations=8 --set drop_hidden=0 --set trunk_resolution=96 "
-            "--max-seconds 1 -o " +
+            "--set branch_style=surface --max-seconds 1 -o " +
             path("t.glb"));
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("handles to reduce"), std::string::npos) << r.output;
@@ -414,3 +415,23 @@ TEST_F(Cli, CrownShapeHullsAndAWrongName) {
         << wrong.output;
     EXPECT_FALSE(fs::exists(path("x.obj")));
 }
+
+namespace {
+
+// `--format fbx` writes an FBX and `--engine-kit DIR` the profile's kit beside it, both
+// reported as written.
+TEST_F(Cli, ExportWritesAnFbxAndTheEngineKit) {
+    Result r =
+        run("export --lod --profile godot -o " + path("tree.fbx") + " --engine-kit " + path("kit"));
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(path("tree.fbx")));
+    for (const char* file : {"kit/godot3/sylva_post_import.gd", "kit/godot3/sylva_lod.gd",
+                             "kit/godot3/sylva_wind.shader", "kit/godot4/sylva_post_import.gd",
+                             "kit/godot4/sylva_wind.gdshader"}) {
+        EXPECT_TRUE(fs::exists(path(file))) << file;
+        EXPECT_NE(r.output.find(file), std::string::npos) << r.output;
+    }
+    EXPECT_FALSE(fs::exists(path("kit/unity"))) << "only the profile's kits";
+}
+
+}  // namespace

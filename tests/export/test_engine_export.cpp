@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/convex_hull.h"
+#include "export/collision.h"
 #include "export/export_tree.h"
 #include "export/part_attributes.h"
 #include "export/wind_motion.h"
@@ -133,8 +134,18 @@ TEST_F(EngineExport, EveryPartHasUvsAndTheWindInTheProfilesChannel) {
                 EXPECT_FALSE(p.attributes.contains("COLOR_1"));
                 const std::vector<float> w1 = floats(e.model, p.attributes.at("TEXCOORD_1"), 2);
                 const std::vector<float> w2 = floats(e.model, p.attributes.at("TEXCOORD_2"), 2);
+                // What the engine reads: Unity's glTF importers flip v, undoing the unity
+                // profile's flip; Godot 3.2.3 reads floats right (it ignores `normalized`).
+                const bool flipped = profile_info(profile).wind_v_flipped;
+                EXPECT_EQ(flipped, profile == EngineProfile::Unity);
+                const int type =
+                    e.model.accessors[static_cast<std::size_t>(p.attributes.at("TEXCOORD_1"))]
+                        .componentType;
+                EXPECT_EQ(type == TINYGLTF_COMPONENT_TYPE_FLOAT, profile == EngineProfile::Godot);
+                auto v = [&](float y) { return flipped ? 1.0f - y : y; };
                 for (std::size_t i = 0; i < n; ++i)
-                    wind.insert(wind.end(), {w1[2 * i], w1[2 * i + 1], w2[2 * i], w2[2 * i + 1]});
+                    wind.insert(wind.end(),
+                                {w1[2 * i], v(w1[2 * i + 1]), w2[2 * i], v(w2[2 * i + 1])});
             }
             ASSERT_EQ(wind.size(), 4 * n);
             for (float w : wind) ASSERT_TRUE(w >= 0.0f && w <= 1.0f) << w;
@@ -214,8 +225,10 @@ TEST_F(EngineExport, LodChainsNameEachLevelOnceAndStandOnTheGround) {
         if (node.mesh < 0 && first != std::string::npos) ++levels;
     }
     EXPECT_EQ(levels, 3u);
+    // Collision is per model, named (in the unreal profile) for the finest level's mesh,
+    // which Unreal attaches UCX_ hulls to.
     for (const tinygltf::Node* node : e.collision)
-        EXPECT_EQ(node->name.find("_LOD"), std::string::npos) << "collision is per model";
+        EXPECT_EQ(node->name.rfind("UCX_tree_LOD0_", 0), 0u) << node->name;
     float lowest = 1e9f;
     for (const tinygltf::Node* node : e.parts) {
         EXPECT_NE(node->name.find("_LOD"), std::string::npos) << node->name;
@@ -336,6 +349,57 @@ TEST_F(EngineExport, APaletteIsOneEmbeddedPngTheUvsPointInto) {
         EXPECT_EQ(m.pbrMetallicRoughness.baseColorTexture.index, 0) << node->name;
         const std::vector<float> uv = floats(e.model, p.attributes.at("TEXCOORD_0"), 2);
         for (float c : uv) ASSERT_TRUE(c > 0.0f && c < 1.0f) << node->name << " UV " << c;
+    }
+}
+
+}  // namespace
+}  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// The trunk's hull is what a character bumps into: from the ground up to the first branch
+// or a quarter of the tree's height, whichever is lower (at least), and as wide as the
+// trunk's foot; on every template's game mesh, where a reduced trunk has few vertices
+// between its foot and the first fork.
+TEST(TrunkHull, ReachesTheFirstBranchAndIsAsWideAsTheTrunk) {
+    for (const TreeTemplate* tmpl : builtin_templates()) {
+        SCOPED_TRACE(tmpl->name);
+        FinishSettings finish;
+        finish.budget.total = 400;
+        MeshOptions mesh;
+        mesh.budget = game_budget(finish);
+        const Tree tree = generate_tree(*tmpl, mesh);
+        const FinishedTree finished = finish_tree(tree, finish);
+        const SolidParts solids = finest_solids(tree, finished);
+        if (solids.trunk.triangles.empty()) continue;  // a bush of crown alone
+        const std::vector<Mesh> hulls = collision_hulls(solids.trunk, solids.crown, tree.skeleton);
+        ASSERT_FALSE(hulls.empty()) << solids.trunk.triangles.size() << " trunk triangles";
+        float ground = 1e9f, top = -1e9f, first_branch = 1e9f, foot_radius = 0.0f;
+        for (const Mesh* part : {&solids.trunk, &solids.crown})
+            for (const glm::vec3& p : part->positions) {
+                ground = std::min(ground, p.y);
+                top = std::max(top, p.y);
+            }
+        int trunk_depth = 1 << 30;
+        for (const Segment& s : tree.skeleton.segments)
+            trunk_depth = std::min(trunk_depth, s.depth);
+        for (const Segment& s : tree.skeleton.segments) {
+            if (s.depth > trunk_depth) first_branch = std::min(first_branch, s.a.y);
+            if (s.depth == trunk_depth && s.parent < 0) foot_radius = std::max(foot_radius, s.ra);
+        }
+        glm::vec3 lo(1e9f), hi(-1e9f);
+        for (const glm::vec3& p : hulls[0].positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const float height = top - ground;
+        EXPECT_NEAR(lo.y, ground, 0.02f * height) << "the hull stands on the ground";
+        EXPECT_GE(hi.y - lo.y, 0.999f * std::min(0.25f * height, first_branch - ground))
+            << "hull " << hi.y - lo.y << " m of a " << height << " m tree, first branch at "
+            << first_branch - ground << " m";
+        EXPECT_GE(std::min(hi.x - lo.x, hi.z - lo.z), 2.0f * foot_radius * 0.9f)
+            << "as wide as the trunk's foot (radius " << foot_radius << " m)";
     }
 }
 

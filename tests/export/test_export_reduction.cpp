@@ -173,7 +173,8 @@ TEST(TreeReduction, TheCrownIsMeshedAsFineAsItsBudgetCanShow) {
 // as the one reduced from the template's resolution (the mean error within 10% of it, the
 // Hausdorff distance under 22% of the height).
 TEST(TreeReduction, ASmallBudgetMeshesTheTrunkAsCoarseAsItCanShow) {
-    const TreeTemplate bush = load_template("bush");
+    TreeTemplate bush = load_template("bush");
+    bush.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 0), bush.params.trunk_resolution);
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 800), bush.params.trunk_resolution);
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 3000), bush.params.trunk_resolution);

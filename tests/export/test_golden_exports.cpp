@@ -1,4 +1,4 @@
-// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply}` does,
+// Every built-in template exported as `sylva export -t NAME -o NAME.{obj,glb,ply,fbx}` does,
 // hashed byte for byte against the recorded files.
 // A change here must be on purpose: update the hash and say why in the commit body.
 #include <gtest/gtest.h>
@@ -42,60 +42,79 @@ std::uint64_t fnv1a(const std::vector<fs::path>& files) {
 
 const std::map<std::string, std::uint64_t>& golden_hashes() {
     static const std::map<std::string, std::uint64_t> hashes = {
-        {"oak.obj", 0x8de52ec84074b8d5ull},
-        {"oak.glb", 0x8f3cba0181e78e2bull},
-        {"oak.ply", 0xef6e7a6ae99c686ull},
-        {"baobab.obj", 0xcf18120094b91a4ull},
-        {"baobab.glb", 0xe6786b3592dcf95dull},
+        {"oak.obj", 0x8d1e0940eb70af39ull},
+        {"oak.glb", 0x6d4bde25ea9c232full},
+        {"oak.ply", 0x81f3d549b72af374ull},
+        {"oak.fbx", 0x4e0e9ce80c8f15d0ull},
+        {"baobab.obj", 0x2a355982107f9e7eull},
+        {"baobab.glb", 0xec3eaaa3dc07a1beull},
         {"baobab.ply", 0xb2fd56d5d3f40390ull},
-        {"birch.obj", 0x712385621b7869f4ull},
-        {"birch.glb", 0xf6850fcff1654482ull},
-        {"birch.ply", 0xde8b3100ad63abdfull},
-        {"bush.obj", 0x2253432c1b745fb2ull},
-        {"bush.glb", 0x552450fac86321cfull},
-        {"bush.ply", 0xa525bc0b046ed82aull},
-        {"cypress.obj", 0xc95df5c0e3c66ddaull},
-        {"cypress.glb", 0x5749dd10d5f72287ull},
-        {"cypress.ply", 0xc7fe87da7b751720ull},
-        {"fir.obj", 0x447002f21ddad9c8ull},
-        {"fir.glb", 0x86ed5ff96b024c29ull},
-        {"fir.ply", 0x8ca71286c0e37404ull},
-        {"honda.obj", 0x4331fd0ff95b4c64ull},
-        {"honda.glb", 0x936d9c5db821f533ull},
-        {"honda.ply", 0xda717129afbfa2b7ull},
-        {"palm.obj", 0xa84e39a2b95cb95ull},
-        {"palm.glb", 0x5f8a65716567f9c7ull},
-        {"palm.ply", 0x6a2e3274e5168386ull},
-        {"pine.obj", 0xb37f01558f601a62ull},
-        {"pine.glb", 0x827b27c4e5e153a1ull},
-        {"pine.ply", 0xd5cc0961e3f4765eull},
-        {"spruce.obj", 0x8bb17d6279beacbeull},
-        {"spruce.glb", 0xaa69cbc437721a54ull},
-        {"spruce.ply", 0x27c5030bcb47dc14ull},
-        {"seed_spruce.obj", 0xf7b2ab9e280ff2bull},
-        {"seed_spruce.glb", 0x90d08d11d961a07aull},
-        {"seed_spruce.ply", 0x7b20facda484b2c6ull},
-        {"ternary.obj", 0xf3d5c0fd3895d1beull},
-        {"ternary.glb", 0xdcd110ef3efbde53ull},
-        {"ternary.ply", 0xe88d7e2fb67bf2adull},
-        {"willow.obj", 0xd005d3c0e8dfa43eull},
-        {"willow.glb", 0x95d7e3b8890d5000ull},
-        {"willow.ply", 0x9abcb31c89e00951ull},
-        {"elm.obj", 0x7ee691b705a419d1ull},
-        {"elm.glb", 0xfa0648d790157226ull},
-        {"elm.ply", 0xf176feacf39a2979ull},
-        {"maple.obj", 0xd7e9107db5bf855eull},
-        {"maple.glb", 0x610a668931004ac6ull},
-        {"maple.ply", 0xba5a3b4ed4fb37f0ull},
-        {"hedge.obj", 0xd6377fb9f4bd2440ull},
-        {"hedge.glb", 0x6e0d2e09b2ebb3bull},
-        {"hedge.ply", 0xdbab7e0d2e1be068ull},
-        {"windswept.obj", 0xba7169e225536245ull},
-        {"windswept.glb", 0x36c2b48f1b594537ull},
-        {"windswept.ply", 0x480874fd469d9de5ull},
-        // `export -t palm --lod -o palm_lod.glb` and `... -o palm_lod.obj` (MTL, LOD0-LOD3).
-        {"palm_lod.glb", 0xf79c39e4ef83888cull},
-        {"palm_lod.obj", 0x6f9e90343d44023cull},
+        {"baobab.fbx", 0x7c1e9d86dcfa06afull},
+        {"birch.obj", 0xdeebbdc07d9c43dbull},
+        {"birch.glb", 0xb68660da2f13885dull},
+        {"birch.ply", 0xeb63551c54d3edd0ull},
+        {"birch.fbx", 0x9f56efc1888c5636ull},
+        {"bush.obj", 0xc23aba323e1ed63full},
+        {"bush.glb", 0x5f1a7a7f609a3a7eull},
+        {"bush.ply", 0xcf21521279229462ull},
+        {"bush.fbx", 0x81f9c837a67426caull},
+        {"cypress.obj", 0x6d6fda9fde623da7ull},
+        {"cypress.glb", 0x943e624b1410959full},
+        {"cypress.ply", 0xb09c1f232da13cf4ull},
+        {"cypress.fbx", 0xcb9a9bafaf0bb55bull},
+        {"fir.obj", 0x78adb313abf3ca6cull},
+        {"fir.glb", 0xe93f4badd742f83dull},
+        {"fir.ply", 0x97e4db6d45de48d8ull},
+        {"fir.fbx", 0xa00deea305a3757full},
+        {"honda.obj", 0x72e704da2bd4e38eull},
+        {"honda.glb", 0x1b8f2b0cb1b938d3ull},
+        {"honda.ply", 0xc9ee65236696e1a7ull},
+        {"honda.fbx", 0x393f40335702d07bull},
+        {"palm.obj", 0x3118a170a23ddbecull},
+        {"palm.glb", 0x86aff694b464984bull},
+        {"palm.ply", 0xcccfcd5878ca4a84ull},
+        {"palm.fbx", 0xd8e10d9bea45c89full},
+        {"pine.obj", 0xd2f7fe0e878f7910ull},
+        {"pine.glb", 0xb09c3c3e2e61c2f9ull},
+        {"pine.ply", 0x8c978d7c0e7ce3ecull},
+        {"pine.fbx", 0x3e1e6bd08b6af435ull},
+        {"spruce.obj", 0xd572575d3c2b8459ull},
+        {"spruce.glb", 0x2f89e52da076f399ull},
+        {"spruce.ply", 0x42b5a27398f95c16ull},
+        {"spruce.fbx", 0xec201defc1ec6e6full},
+        {"seed_spruce.obj", 0xc55c5e7c2e84f81ull},
+        {"seed_spruce.glb", 0x9c022cee6ac54fb8ull},
+        {"seed_spruce.ply", 0xbda4f717e1217704ull},
+        {"seed_spruce.fbx", 0x98f93735cdc5e665ull},
+        {"ternary.obj", 0x4a6d55225b72b66ull},
+        {"ternary.glb", 0x7c3c2fcb05fd7ae8ull},
+        {"ternary.ply", 0xddb03aa209a8d471ull},
+        {"ternary.fbx", 0x81c09f007ac60cebull},
+        {"willow.obj", 0xa00a65ff34f14d1dull},
+        {"willow.glb", 0xb482400ff907c28full},
+        {"willow.ply", 0xaa873dff655dd9b8ull},
+        {"willow.fbx", 0x57e5688285daf1e9ull},
+        {"elm.obj", 0xee7c12d0504e9d01ull},
+        {"elm.glb", 0xe38e5233a1d9777bull},
+        {"elm.ply", 0xc8443d956c57c522ull},
+        {"elm.fbx", 0x8464255566a18e41ull},
+        {"maple.obj", 0x8374e16899a4b2abull},
+        {"maple.glb", 0x43eedb70c2587b4bull},
+        {"maple.ply", 0xf811a24229a79c05ull},
+        {"maple.fbx", 0x8fc0b7182fb70f4ull},
+        {"hedge.obj", 0x1bba8b7b081658bbull},
+        {"hedge.glb", 0x8747785f62233f4aull},
+        {"hedge.ply", 0x4e0ab6a82c96ff4cull},
+        {"hedge.fbx", 0xa3248990f677bcfdull},
+        {"windswept.obj", 0x939a824978a47457ull},
+        {"windswept.glb", 0x479b7eace48b0453ull},
+        {"windswept.ply", 0xabbf268c2a2edcecull},
+        {"windswept.fbx", 0x8fa04ce5a2ebaf2full},
+        // `export -t palm --lod -o palm_lod.glb`, `.fbx` and `... -o palm_lod.obj` (MTL,
+        // LOD0-LOD3).
+        {"palm_lod.glb", 0x39842ec632f5f5bbull},
+        {"palm_lod.fbx", 0x8782a2ad74d5fb02ull},
+        {"palm_lod.obj", 0x9acff121824be286ull},
     };
     return hashes;
 }
@@ -121,7 +140,10 @@ class GoldenExports : public ::testing::Test {
             const std::string key = name + std::string(format->extension);
             const auto expected = golden_hashes().find(key);
             if (expected == golden_hashes().end()) continue;
-            std::vector<fs::path> files = write_tree(dir_ / key, tree, finished, tmpl.colors);
+            ExportOptions options;  // as the CLI names the materials
+            options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+            std::vector<fs::path> files =
+                write_tree(dir_ / key, tree, finished, tmpl.colors, options, format);
             // The order the hashes were taken in: an OBJ before its MTL, a chain's MTL
             // before its levels.
             std::stable_partition(files.begin(), files.end(), [lod](const fs::path& f) {
@@ -141,12 +163,12 @@ class GoldenExports : public ::testing::Test {
 
 TEST_F(GoldenExports, EveryTemplateInEveryFormatIsByteIdentical) {
     for (const TreeTemplate* tmpl : builtin_templates()) check(*tmpl, tmpl->name, false);
-    EXPECT_EQ(checked_, golden_hashes().size() - 2) << "a template or a format went missing";
+    EXPECT_EQ(checked_, golden_hashes().size() - 3) << "a template or a format went missing";
 }
 
 TEST_F(GoldenExports, LodChainsAreByteIdentical) {
     check(load_template("palm"), "palm_lod", true);
-    EXPECT_EQ(checked_, 2u);
+    EXPECT_EQ(checked_, 3u);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <tiny_gltf.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -386,7 +387,20 @@ TEST_F(ForestScene, GpuInstancingCarriesEveryTree) {
     s.finish.budget.total = 200;
     const ForestResult result = plant_forest(s, dir_ / "gpu.glb");
     const tinygltf::Model model = load(dir_ / "gpu.glb");
-    ASSERT_EQ(model.extensionsRequired, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
+    // Used, never required: the default scene places every tree as plain nodes.
+    EXPECT_TRUE(model.extensionsRequired.empty());
+    EXPECT_EQ(model.extensionsUsed, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
+    ASSERT_EQ(model.scenes.size(), 2u);
+    EXPECT_EQ(model.defaultScene, 0);
+    std::size_t tree_nodes = 0;
+    for (int root : model.scenes[0].nodes)
+        for (int child : model.nodes[static_cast<std::size_t>(root)].children) {
+            const tinygltf::Node& tree = model.nodes[static_cast<std::size_t>(child)];
+            EXPECT_TRUE(tree.extensions.empty()) << tree.name;
+            EXPECT_EQ(tree.translation.size(), 3u) << tree.name;
+            ++tree_nodes;
+        }
+    EXPECT_EQ(tree_nodes, result.plan.placements.size()) << "a plain node places every tree";
     // Per variant: the instance count of its (first) instanced node.
     std::map<std::string, std::size_t> instances;
     std::size_t lod_nodes = 0;
@@ -404,6 +418,38 @@ TEST_F(ForestScene, GpuInstancingCarriesEveryTree) {
     for (const Placement& p : result.plan.placements)
         ++expected[result.plan.variants[p.variant].name];
     EXPECT_EQ(instances, expected);
+    // The instanced scene puts each tree where its placement says: group * instance.
+    const tinygltf::Node& gpu_root =
+        model.nodes[static_cast<std::size_t>(model.scenes[1].nodes.at(0))];
+    std::size_t placed = 0;
+    for (int g : gpu_root.children) {
+        const tinygltf::Node& group = model.nodes[static_cast<std::size_t>(g)];
+        // The first instanced node below the group (a chain's parts sit in level nodes).
+        const tinygltf::Node* part = &model.nodes[static_cast<std::size_t>(group.children.at(0))];
+        while (!part->extensions.contains("EXT_mesh_gpu_instancing"))
+            part = &model.nodes[static_cast<std::size_t>(part->children.at(0))];
+        auto ext = part->extensions.find("EXT_mesh_gpu_instancing");
+        const auto& a = model.accessors[static_cast<std::size_t>(
+            ext->second.Get("attributes").Get("TRANSLATION").Get<int>())];
+        const auto& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+        const float* t = reinterpret_cast<const float*>(model.buffers[0].data.data() +
+                                                        view.byteOffset + a.byteOffset);
+        const double yaw = 2.0 * std::atan2(group.rotation[1], group.rotation[3]);
+        for (std::size_t i = 0; i < a.count; ++i, ++placed) {
+            const glm::dvec3 local(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+            const glm::dvec3 world(
+                group.translation[0] +
+                    group.scale[0] * (local.x * std::cos(yaw) + local.z * std::sin(yaw)),
+                group.translation[1] + group.scale[0] * local.y,
+                group.translation[2] +
+                    group.scale[0] * (-local.x * std::sin(yaw) + local.z * std::cos(yaw)));
+            bool found = false;
+            for (const Placement& p : result.plan.placements)
+                found |= glm::length(glm::dvec3(glm::vec3(p.position)) - world) < 1e-3;
+            EXPECT_TRUE(found) << group.name << " instance " << i;
+        }
+    }
+    EXPECT_GT(placed, 0u);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "core/tree_age.h"
 #include "tree/growth.h"
+#include "tree/leaf_thinning.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -49,7 +50,8 @@ struct Sample {
     float height;    // grown_height()
     float mesh_top;  // the meshes' highest vertex
     size_t full;     // trunk + crown triangles as meshed
-    size_t game;     // reduced trunk + crown + thinned leaves
+    size_t game;     // reduced trunk + crown
+    size_t leaves;   // leaves (or leaf cards) of the game mesh
 };
 
 TEST(TemplateAge, EveryTemplateGrowsMonotonicallyInHeightAndTriangles) {
@@ -68,13 +70,14 @@ TEST(TemplateAge, EveryTemplateGrowsMonotonicallyInHeightAndTriangles) {
                 mesh_top(t.crown, mesh_top(t.trunk, std::numeric_limits<float>::lowest()));
             sweep.push_back({age, skeleton_top(t.skeleton), grown_height(t.skeleton, tree.params),
                              top, t.trunk.triangles.size() + t.crown.triangles.size(),
-                             game.triangles + game.leaves.triangles.size()});
+                             game.triangles, count_leaves(game.leaves)});
         }
         std::string shown;
         for (const Sample& s : sweep)
             shown += " [age " + std::to_string(s.age).substr(0, 3) + ": height " +
                      std::to_string(s.height) + ", mesh top " + std::to_string(s.mesh_top) +
-                     ", full " + std::to_string(s.full) + ", game " + std::to_string(s.game) + "]";
+                     ", full " + std::to_string(s.full) + ", game " + std::to_string(s.game) +
+                     ", leaves " + std::to_string(s.leaves) + "]";
         std::printf("%s:%s\n", tree.name.c_str(), shown.c_str());
         for (size_t i = 1; i < sweep.size(); ++i) {
             // Branches only grow: the skeleton rises strictly. Crown spheres sit at the tips,
@@ -90,7 +93,11 @@ TEST(TemplateAge, EveryTemplateGrowsMonotonicallyInHeightAndTriangles) {
                 sweep.back().height / static_cast<float>(tree.params.crown_resolution);
             EXPECT_GT(sweep[i].mesh_top, sweep[i - 1].mesh_top - cell) << tree.name << shown;
             EXPECT_GT(sweep[i].full, sweep[i - 1].full) << tree.name << shown;
+            // The game mesh keeps what it had: as many trunk + crown triangles, and (within the
+            // leaf cards' grid, 2 % of the cards the budget buys) as many leaves.
             EXPECT_GE(sweep[i].game, sweep[i - 1].game) << tree.name << shown;
+            EXPECT_GE(sweep[i].leaves + kDefaultTriangleBudget / 2 / 50, sweep[i - 1].leaves)
+                << tree.name << shown;
         }
         // A seedling is small next to the grown tree.
         EXPECT_LT(sweep.front().height, 0.15f * sweep.back().height) << tree.name;

@@ -93,6 +93,7 @@ TEST(Cost, CountsOfOneAreSingular) {
 TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
     TreeTemplate t = default_template();
     t.params.drop_hidden = 0;  // a trunk meshed at its own resolution, not for the budget
+    t.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
     for (int resolution : {1500, 2000}) {
         t.params.trunk_resolution = resolution;
         const Cost cost = estimate_cost(t, 800);
@@ -113,27 +114,29 @@ TEST(Cost, EveryBuiltInTemplateIsWithinTheDefaultLimits) {
     }
 }
 
-// The ternary tree at generations 8 crosses its branches many times, and each crossing makes
+// The ternary tree at generations 8, its trunk's surface reduced (branch_style = surface),
+// crosses its branches many times, and each crossing makes
 // the reduction slower than an estimate before any work can know. Once the meshes are made,
 // their handles tell: over a 1-second limit there with every
 // branch meshed, well within it at the template's own 6 generations, and within it too when
 // the branches the crown hides are left out (drop_hidden, the template's own setting).
 TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     TreeTemplate t = load_template("ternary");
+    t.params.branch_style = static_cast<int>(BranchStyle::Surface);
     MeshOptions options;
     options.budget = 800;
     const Tree usual = generate_tree(t, options);
-    const Cost usual_cost = estimate_reduction_cost(usual.trunk, usual.crown, 800);
+    const Cost usual_cost = estimate_reduction_cost(usual, 800);
     EXPECT_GT(usual_cost.handles, 50.0);
     CostLimits one_second;
     one_second.max_seconds = 1.0;
     EXPECT_TRUE(within(usual_cost, one_second)) << cost_text(usual_cost);
-    EXPECT_EQ(estimate_reduction_cost(usual.trunk, usual.crown, 0).seconds, 0.0);
+    EXPECT_EQ(estimate_reduction_cost(usual, 0).seconds, 0.0);
 
     t.params.generations = 8;
     ASSERT_NE(t.params.drop_hidden, 0);
     const Tree hidden = generate_tree(t, options);
-    const Cost hidden_cost = estimate_reduction_cost(hidden.trunk, hidden.crown, 800);
+    const Cost hidden_cost = estimate_reduction_cost(hidden, 800);
     EXPECT_TRUE(within(hidden_cost, one_second)) << cost_text(hidden_cost);
 
     t.params.drop_hidden = 0;
@@ -143,7 +146,7 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     // What the grammar alone can tell.
     EXPECT_TRUE(within(estimate_cost(t, 800), one_second)) << cost_text(estimate_cost(t, 800));
     const Tree crossed = generate_tree(t, options);
-    const Cost cost = estimate_reduction_cost(crossed.trunk, crossed.crown, 800);
+    const Cost cost = estimate_reduction_cost(crossed, 800);
     EXPECT_GT(cost.handles, 10 * usual_cost.handles);
     EXPECT_GT(cost.handles, 2 * hidden_cost.handles);
     EXPECT_FALSE(within(cost, one_second)) << cost_text(cost);

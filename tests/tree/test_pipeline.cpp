@@ -136,6 +136,7 @@ TEST(Pipeline, TheMeshHugsTheSkeleton) {
 TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
     TreeTemplate willow = load_template("willow");
     ASSERT_EQ(willow.params.drop_hidden, 1);
+    willow.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree kept = generate_tree(willow, game);
@@ -174,7 +175,8 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
 // vertex lies as near that surface or inside a branch, where a piece's base meets its
 // parent. Checked to fail when a group's segments are left out (its branches are lost).
 TEST(Pipeline, AGameMeshTrunkComesInPiecesWithTheSameSurface) {
-    const TreeTemplate bush = load_template("bush");
+    TreeTemplate bush = load_template("bush");
+    bush.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree pieces = generate_tree(bush, game);

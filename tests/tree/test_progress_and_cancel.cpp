@@ -90,12 +90,15 @@ TEST(MeshingProgress, RisesToOneWhileTrunkPiecesAndCrownAreMeshedBesideEachOther
     // The ternary's game mesh: its trunk in pieces and its crown meshed at once, each
     // reporting from its own threads; what the caller sees still only rises, to exactly 1.
     // The progress is called one at a time: the vector needs no lock.
-    for (std::size_t budget : {std::size_t{0}, std::size_t{3000}}) {
+    // With prisms (the default) the crown's meshing is the whole bar.
+    for (std::size_t budget : {std::size_t{0}, std::size_t{3000}, std::size_t{800}}) {
         std::vector<float> fractions;
         MeshOptions options;
         options.budget = budget;
         options.progress = [&](float f) { fractions.push_back(f); };
-        const Tree tree = generate_tree(load_template("ternary"), options);
+        TreeTemplate t = load_template("ternary");
+        if (budget == 3000) t.params.branch_style = static_cast<int>(BranchStyle::Surface);
+        const Tree tree = generate_tree(t, options);
         ASSERT_FALSE(tree.crown.triangles.empty());
         SCOPED_TRACE(budget);
         expect_rising_to_one(fractions);
@@ -135,6 +138,7 @@ const Tree& crossing_tree() {
     static const Tree tree = [] {
         TreeTemplate t = load_template("ternary");
         t.params.generations = 7;
+        t.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
         MeshOptions options;
         options.budget = 800;
         return generate_tree(t, options);

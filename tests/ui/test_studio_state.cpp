@@ -411,7 +411,9 @@ TEST(StudioState, ABrokenRuleKeepsTheLastGoodTreeAndNamesTheLine) {
 
 TEST(StudioState, ANewerEditCancelsTheStaleJobWithoutBlocking) {
     StudioState state = state_with(load_template("default"));
-    state.tree_template.params.drop_hidden = 0;          // else the trunk is meshed for the budget
+    state.tree_template.params.drop_hidden = 0;  // else the trunk is meshed for the budget
+    state.tree_template.params.branch_style =    // else it is drawn, not meshed
+        static_cast<int>(BranchStyle::Surface);
     state.tree_template.params.trunk_resolution = 1200;  // seconds of meshing
     start_generation(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let it start meshing
@@ -439,7 +441,9 @@ TEST(StudioState, ACancelledJobWakesTheUiOnlyWhenANewerJobWaitsForIt) {
     std::atomic<int> cancelled_wakes{0}, newer_wakes{0};
     StudioState state = state_with(load_template("default"));
     state.wake = [&cancelled_wakes] { ++cancelled_wakes; };
-    state.tree_template.params.drop_hidden = 0;          // else the trunk is meshed for the budget
+    state.tree_template.params.drop_hidden = 0;  // else the trunk is meshed for the budget
+    state.tree_template.params.branch_style =    // else it is drawn, not meshed
+        static_cast<int>(BranchStyle::Surface);
     state.tree_template.params.trunk_resolution = 1200;  // seconds of meshing
     start_generation(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));

@@ -190,7 +190,8 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
         "crown_fusion",     "joint_blend",      "crown_blend",     "crown_mesh",
         "crown_merge",      "drop_hidden",      "leaf_density",    "leaf_size",
         "leaf_shape",       "triangle_budget",  "crown_shape",     "crown_lump_triangles",
-        "obstacle",         "color_variation"};
+        "obstacle",         "color_variation",  "branch_style",    "leaf_style",
+        "polygon_part"};
     for (const TreeTemplate* t : builtin_templates()) {
         const auto inert = inert_params(*t);
         const Skeleton base = grow(*t);
@@ -229,13 +230,18 @@ TEST(TemplateControls, EveryGrowthSliderChangesTheSkeletonOrIsGreyed) {
 // meshes its trunk and crown for the budget; the hedge's trunk keeps its resolution at 800
 // (not below) and its crown (48) is meshed at the budget's 40.
 TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
-    const TreeTemplate willow = load_template("willow");
+    TreeTemplate willow = load_template("willow");
+    // Prisms: the game mesh meshes no trunk, and the note says what the resolution still sets.
+    EXPECT_NE(budget_resolution_note(willow.params, "trunk_resolution").find("prisms"),
+              std::string::npos);
+    willow.params.branch_style = static_cast<int>(BranchStyle::Surface);
     const std::string willow_trunk = budget_resolution_note(willow.params, "trunk_resolution");
     EXPECT_NE(willow_trunk.find("meshed at 60"), std::string::npos);
     EXPECT_NE(willow_trunk.find("drop_hidden"), std::string::npos);
     EXPECT_NE(budget_resolution_note(willow.params, "crown_resolution").find("meshed at 40"),
               std::string::npos);
-    const TreeTemplate hedge = load_template("hedge");
+    TreeTemplate hedge = load_template("hedge");
+    hedge.params.branch_style = static_cast<int>(BranchStyle::Surface);
     EXPECT_EQ(budget_resolution_note(hedge.params, "trunk_resolution"), "");
     EXPECT_NE(budget_resolution_note(hedge.params, "crown_resolution").find("meshed at 40"),
               std::string::npos);

@@ -1,0 +1,128 @@
+// Sylva octahedral impostor: the reference shader (GLSL 3.30) that draws the impostor level
+// of an export (docs/impostors.md) as one quad turned to the camera. Sylva Studio compiles
+// this file as it is, once with SYLVA_IMPOSTOR_VERTEX and once with SYLVA_IMPOSTOR_FRAGMENT
+// defined after its #version line (ui/impostor_view.cpp); the engine kits' shaders
+// (engine_kits/*/impostor_*) are ports of it, and impostor/atlas_sampler.cpp is the same
+// arithmetic on the CPU, which the fidelity tests check against the tree.
+//
+// Everything is in the model's own space (metres, Y up, right-handed: as exported): the
+// layout's center and radius, the camera position, the quad's corners.
+//   albedo atlas: sRGB colour, alpha = coverage (alpha-test at 0.5)
+//   normal atlas: rgb = object-space normal * 0.5 + 0.5, a = 0.5 + depth / (2 radius)
+// View (i, j) of N x N fills column i, row j (rows top down); its direction is the
+// hemi-octahedral decoding of (i, j) / (N - 1) * 2 - 1. The three views around the
+// camera's direction are blended; each is read where the camera's ray meets that view's
+// surface (two parallax steps on the stored depth), so they line up.
+
+uniform sampler2D impostor_albedo;  // an sRGB texture (GL_SRGB8_ALPHA8), mipmapped
+uniform sampler2D impostor_normal;  // linear (GL_RGBA8), mipmapped
+uniform float impostor_views;       // N, e.g. 8
+uniform vec3 impostor_center;       // the layout's "center"
+uniform float impostor_radius;      // the layout's "radius"
+uniform vec3 camera_position;       // the camera in the model's space
+uniform mat4 model_view_projection;
+
+// Image rows run top down in the atlas; textures uploaded row 0 first have t = 0 there.
+vec2 sylva_hemi_octahedral_encode(vec3 d) {
+    d.y = max(d.y, 0.0);
+    vec2 p = d.xz / (abs(d.x) + d.y + abs(d.z));
+    return vec2(p.x + p.y, p.x - p.y);
+}
+
+vec3 sylva_hemi_octahedral_decode(vec2 s) {
+    vec2 p = vec2(s.x + s.y, s.x - s.y) * 0.5;
+    return normalize(vec3(p.x, max(1.0 - abs(p.x) - abs(p.y), 0.0), p.y));
+}
+
+// The camera a view was captured with: right, up (direction points to the camera).
+void sylva_view_frame(vec3 direction, out vec3 right, out vec3 up) {
+    vec3 r = cross(vec3(0.0, 1.0, 0.0), direction);
+    right = dot(r, r) > 1e-12 ? normalize(r) : vec3(1.0, 0.0, 0.0);
+    up = cross(direction, right);
+}
+
+vec3 sylva_view_direction(vec2 view) {
+    return sylva_hemi_octahedral_decode(view / (impostor_views - 1.0) * 2.0 - 1.0);
+}
+
+#ifdef SYLVA_IMPOSTOR_VERTEX
+layout(location = 0) in vec3 position;  // a corner of the exported quad
+out vec3 quad_point;                    // the corner, turned to face the camera
+
+void main() {
+    // The exported quad spans center +- radius along x and y: its corner in [-1, 1]^2.
+    vec2 corner = (position.xy - impostor_center.xy) / impostor_radius;
+    vec3 right, up;
+    sylva_view_frame(normalize(camera_position - impostor_center), right, up);
+    quad_point = impostor_center + impostor_radius * (corner.x * right + corner.y * up);
+    gl_Position = model_view_projection * vec4(quad_point, 1.0);
+}
+#endif
+
+#ifdef SYLVA_IMPOSTOR_FRAGMENT
+in vec3 quad_point;
+// What the studio shows: albedo lit by the baked normal, gamma-encoded for an 8-bit
+// framebuffer as the studio's other renderers write it.
+out vec4 sylva_color;
+uniform vec3 light_direction;  // toward the light, model space, unit
+
+// One view's texel where the camera's ray through `point` meets its surface: albedo in
+// .albedo, object-space normal in .normal.
+struct SylvaTexel {
+    vec4 albedo;
+    vec3 normal;
+};
+
+SylvaTexel sylva_impostor_view(vec2 view, vec3 point, vec3 ray) {
+    vec3 direction = sylva_view_direction(view), right, up;
+    sylva_view_frame(direction, right, up);
+    vec3 from_center = point - impostor_center;
+    float facing = dot(ray, direction);  // < 0: the ray runs into the view
+    float depth = 0.0;
+    vec2 uv = vec2(0.0);
+    vec4 normal_depth = vec4(0.5);
+    for (int step = 0; step <= 2; ++step) {  // parallax: two steps onto the stored depth
+        vec3 hit = from_center + ray * ((depth - dot(from_center, direction)) / min(facing, -1e-4));
+        vec2 tile = vec2(dot(hit, right), -dot(hit, up)) / impostor_radius * 0.5 + 0.5;
+        uv = (view + clamp(tile, 0.0, 1.0)) / impostor_views;
+        normal_depth = texture(impostor_normal, uv);
+        depth = (normal_depth.a - 0.5) * 2.0 * impostor_radius;
+        if (any(lessThan(tile, vec2(0.0))) || any(greaterThan(tile, vec2(1.0))))
+            return SylvaTexel(vec4(0.0), vec3(0.0));
+    }
+    return SylvaTexel(texture(impostor_albedo, uv), normal_depth.rgb * 2.0 - 1.0);
+}
+
+// The blend of the three views around the camera's direction.
+SylvaTexel sylva_impostor(vec3 point, vec3 camera) {
+    float last = impostor_views - 1.0;
+    vec2 grid = (sylva_hemi_octahedral_encode(normalize(camera - impostor_center)) * 0.5 + 0.5) * last;
+    vec2 cell = clamp(floor(grid), vec2(0.0), vec2(last - 1.0));
+    vec2 f = clamp(grid - cell, 0.0, 1.0);
+    vec2 a, b = cell + vec2(1.0, 0.0), c = cell + vec2(0.0, 1.0);
+    vec3 w;
+    if (f.x + f.y <= 1.0) {
+        a = cell;
+        w = vec3(1.0 - f.x - f.y, f.x, f.y);
+    } else {
+        a = cell + vec2(1.0);
+        w = vec3(f.x + f.y - 1.0, 1.0 - f.y, 1.0 - f.x);
+    }
+    vec3 ray = normalize(point - camera);
+    SylvaTexel ta = sylva_impostor_view(a, point, ray);
+    SylvaTexel tb = sylva_impostor_view(b, point, ray);
+    SylvaTexel tc = sylva_impostor_view(c, point, ray);
+    SylvaTexel sum;
+    sum.albedo = w.x * ta.albedo + w.y * tb.albedo + w.z * tc.albedo;
+    vec3 n = w.x * ta.normal + w.y * tb.normal + w.z * tc.normal;
+    sum.normal = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 1.0, 0.0);
+    return sum;
+}
+
+void main() {
+    SylvaTexel t = sylva_impostor(quad_point, camera_position);
+    if (t.albedo.a < 0.5) discard;
+    float light = 0.35 + 0.65 * max(dot(t.normal, light_direction), 0.0);
+    sylva_color = vec4(pow(clamp(t.albedo.rgb * light, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
+}
+#endif

@@ -1,0 +1,107 @@
+# Sylva import script for Godot 3 (3.2 and later). Set it as the "Custom Script" of a glTF
+# (or FBX) exported with `sylva export --profile godot [--lod]` in the Import dock, with
+# this folder copied into the project (keep the three files together). On import it:
+# - finds each LOD chain: a node whose children are named `<name>_LOD<i>` for two or more i
+#   (the glb's `tree` with `tree_LOD0`..`tree_LOD3`), gives every mesh of level i the
+#   distance band [begin_i, end_i) in lod_min_distance / lod_max_distance and attaches
+#   sylva_lod.gd to the chain's node, which shows exactly that level while the camera is
+#   in its band (Godot 3's renderer ignores those two properties itself). Bands: level 0
+#   from 0 to D, level i from D * 2^(i-1) to D * 2^i, the last without end; D is 2.5 times
+#   the height of level 0, so a 10 m tree switches at 25, 50 and 100 m;
+# - gives every mesh surface (not the collision bodies) a ShaderMaterial of
+#   sylva_wind.shader with the surface's imported albedo colour, so the tree sways with
+#   the wind data in UV2 and keeps its colours and vertex tint.
+# Collision needs nothing here: Godot's importer makes the `-convcolonly` nodes StaticBody
+# nodes with a ConvexPolygonShape each, and the materials are already the tree's own
+# (their names carry the template and seed, so two trees never share one).
+tool
+extends EditorScenePostImport
+
+const LOD_DISTANCE_PER_HEIGHT = 2.5
+
+
+func post_import(scene):
+	var kit = get_script().resource_path.get_base_dir()
+	var shader = load(kit + "/sylva_wind.shader")
+	var lod_script = load(kit + "/sylva_lod.gd")
+	_setup_lods(scene, lod_script)
+	_setup_wind(scene, shader)
+	return scene
+
+
+# "tree_LOD2" -> 2; -1 for a name without the suffix.
+static func lod_index(node_name):
+	var at = node_name.rfind("_LOD")
+	if at < 0:
+		return -1
+	var digits = node_name.substr(at + 4, node_name.length() - at - 4)
+	return int(digits) if digits.is_valid_integer() else -1
+
+
+func _setup_lods(node, lod_script):
+	var levels = {}
+	for child in node.get_children():
+		var i = lod_index(child.name)
+		if i >= 0:
+			levels[i] = child
+	if levels.size() >= 2 and levels.has(0):
+		var base = LOD_DISTANCE_PER_HEIGHT * max(_height(levels[0]), 1.0)
+		for i in levels.keys():
+			var begin = 0.0 if i == 0 else base * pow(2.0, i - 1)
+			var end = 0.0 if i == levels.size() - 1 else base * pow(2.0, i)
+			for mesh in _meshes(levels[i]):
+				mesh.lod_min_distance = begin
+				mesh.lod_max_distance = end
+		node.set_script(lod_script)
+		node.lod_base_distance = base
+		node.lod_levels = levels.size()
+		return
+	for child in node.get_children():
+		_setup_lods(child, lod_script)
+
+
+func _meshes(node):
+	var out = []
+	if node is MeshInstance:
+		out.append(node)
+	for child in node.get_children():
+		out += _meshes(child)
+	return out
+
+
+# The height of the meshes under `node`, in the node's parent's space.
+func _height(node):
+	var low = INF
+	var high = -INF
+	for mesh in _meshes(node):
+		var box = mesh.get_aabb()
+		var to_parent = Transform()
+		var n = mesh
+		while n != node.get_parent():
+			to_parent = n.transform * to_parent
+			n = n.get_parent()
+		for k in range(8):
+			var y = (to_parent * box.get_endpoint(k)).y
+			low = min(low, y)
+			high = max(high, y)
+	return high - low if high > low else 0.0
+
+
+func _setup_wind(node, shader):
+	if node is StaticBody:
+		return
+	if node is MeshInstance and node.mesh:
+		for s in range(node.mesh.get_surface_count()):
+			var imported = node.get_surface_material(s)
+			if imported == null:
+				imported = node.mesh.surface_get_material(s)
+			var material = ShaderMaterial.new()
+			material.shader = shader
+			if imported is SpatialMaterial:
+				material.set_shader_param("albedo", imported.albedo_color)
+				# Also as metadata: a headless Godot (no renderer) keeps no shader parameters.
+				material.set_meta("sylva_albedo", imported.albedo_color)
+				material.resource_name = imported.resource_name
+			node.set_surface_material(s, material)
+	for child in node.get_children():
+		_setup_wind(child, shader)

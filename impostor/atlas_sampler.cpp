@@ -1,0 +1,115 @@
+#include "impostor/atlas_sampler.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace sylva {
+namespace {
+
+constexpr int kParallaxSteps = 2;
+
+struct Texel {
+    float alpha = 0.0f;
+    glm::vec3 color{0.0f};
+    glm::vec3 normal{0.0f};
+    float depth = 0.0f;  // in [0, 1] as stored; 0.5 without depth
+};
+
+// Bilinear sample of tile (i, j) at tile pixel coordinates (x, y) (pixel centres at
+// half-integers); texels outside the tile count as transparent, so no neighbour bleeds in.
+Texel sample_tile(const ImpostorAtlas& atlas, glm::ivec2 view, float x, float y,
+                  const std::array<float, 256>& linear) {
+    const int tile = atlas.tile;
+    const float fx = x - 0.5f, fy = y - 0.5f;
+    const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+    const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
+    Texel out;
+    for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+            const int px = x0 + dx, py = y0 + dy;
+            if (px < 0 || py < 0 || px >= tile || py >= tile) continue;
+            const float w = (dx ? tx : 1.0f - tx) * (dy ? ty : 1.0f - ty);
+            const std::size_t at = static_cast<std::size_t>(
+                (view.y * tile + py) * atlas.albedo.width + view.x * tile + px);
+            const std::uint8_t* a = &atlas.albedo.pixels[at * 4];
+            const std::uint8_t* n =
+                &atlas.normal.pixels[at * static_cast<std::size_t>(atlas.normal.channels)];
+            out.alpha += w * static_cast<float>(a[3]) / 255.0f;
+            out.color += w * glm::vec3(linear[a[0]], linear[a[1]], linear[a[2]]);
+            out.normal += w * (glm::vec3(n[0], n[1], n[2]) / 255.0f * 2.0f - 1.0f);
+            out.depth +=
+                w * (atlas.normal.channels == 4 ? static_cast<float>(n[3]) / 255.0f : 0.5f);
+        }
+    return out;
+}
+
+}  // namespace
+
+ViewImage render_impostor(const ImpostorAtlas& atlas, const ViewFrame& camera, int size) {
+    ViewImage image;
+    image.size = size;
+    const std::size_t pixels = static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
+    image.alpha.assign(pixels, 0.0f);
+    image.color.assign(pixels, glm::vec3(0.0f));
+    image.normal.assign(pixels, glm::vec3(0.0f));
+    image.depth.assign(pixels, 0.0f);
+    const float r = atlas.bounds.radius;
+    if (size <= 0 || !(r > 0.0f) || atlas.tile <= 0) return image;
+
+    std::array<float, 256> linear{};
+    for (int b = 0; b < 256; ++b)
+        linear[static_cast<std::size_t>(b)] = srgb_to_linear(static_cast<std::uint8_t>(b));
+    const ViewBlend blend = view_blend(camera.direction, atlas.views);
+    std::array<ViewFrame, 3> frames;
+    for (int k = 0; k < 3; ++k) {
+        const glm::ivec2 v = blend.views[static_cast<std::size_t>(k)];
+        frames[static_cast<std::size_t>(k)] = view_frame(view_direction(v.x, v.y, atlas.views));
+    }
+    const float tile = static_cast<float>(atlas.tile);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            // The pixel's centre on the quad (the camera's plane through the centre).
+            const float a =
+                ((static_cast<float>(x) + 0.5f) / static_cast<float>(size) * 2.0f - 1.0f) * r;
+            const float b =
+                (1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size) * 2.0f) * r;
+            const glm::vec3 on_quad = a * camera.right + b * camera.up;  // from the centre
+            Texel sum;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const float w = blend.weights[k];
+                if (w <= 0.0f) continue;
+                const ViewFrame& f = frames[k];
+                // Along the camera's ray to the plane the view was captured on.
+                const float facing = glm::dot(camera.direction, f.direction);
+                if (facing <= 1e-4f) continue;
+                // Parallax: the ray meets the view's surface where its depth says, found by
+                // stepping from the plane through the centre to the depth read there.
+                float depth = 0.0f;
+                Texel t;
+                for (int step = 0; step <= kParallaxSteps; ++step) {
+                    const glm::vec3 hit =
+                        on_quad -
+                        camera.direction * ((glm::dot(on_quad, f.direction) - depth) / facing);
+                    const float u = (glm::dot(hit, f.right) / r * 0.5f + 0.5f) * tile;
+                    const float v = (0.5f - glm::dot(hit, f.up) / r * 0.5f) * tile;
+                    t = sample_tile(atlas, blend.views[k], u, v, linear);
+                    if (!atlas.depth) break;
+                    depth = (t.depth - 0.5f) * 2.0f * r;
+                }
+                sum.alpha += w * t.alpha;
+                sum.color += w * t.color;
+                sum.normal += w * t.normal;
+            }
+            const std::size_t p = static_cast<std::size_t>(y * size + x);
+            image.alpha[p] = sum.alpha;
+            if (sum.alpha <= 0.0f) continue;
+            image.color[p] = sum.color;
+            const float length = glm::length(sum.normal);
+            if (length > 0.0f) image.normal[p] = sum.normal / length;
+        }
+    return image;
+}
+
+}  // namespace sylva
