@@ -77,9 +77,10 @@ std::vector<std::uint32_t> k_means(const std::vector<glm::vec3>& all, std::size_
 // surface pieces apart from each other (two curtains of a willow, two blobs of a honda)
 // split into one cluster per piece of at least kApartShare of its vertices: the hull of
 // both would bridge the gap between them. Smaller pieces stay with the cluster's largest.
-// `index` maps a mesh vertex to its place in `points` (or -1 when unused).
+// `index` maps a mesh vertex to its place in `points` (or -1 when unused); `most` caps the
+// clusters in all.
 std::vector<std::uint32_t> apart_clusters(const Mesh& crown, const std::vector<std::int64_t>& index,
-                                          std::vector<std::uint32_t> cluster) {
+                                          std::vector<std::uint32_t> cluster, std::size_t most) {
     constexpr double kApartShare = 0.1;
     DisjointSets pieces(cluster.size());
     for (const auto& t : crown.triangles)
@@ -103,23 +104,33 @@ std::vector<std::uint32_t> apart_clusters(const Mesh& crown, const std::vector<s
             (size[root] == size[best] && root < best))
             best = root;
     }
-    std::uint32_t next = *std::max_element(cluster.begin(), cluster.end()) + 1;
-    std::vector<std::int64_t> renamed(cluster.size(), -1);
+    // The pieces that become clusters of their own, largest first, up to `pieces` clusters in
+    // all: each hull takes a share of the crown's triangles.
+    std::vector<std::size_t> apart;
     for (std::size_t i = 0; i < cluster.size(); ++i) {
         const std::size_t root = pieces.find(static_cast<std::uint32_t>(i));
-        if (root == largest[cluster[i]] ||
-            static_cast<double>(size[root]) <
+        if (root == i && root != largest[cluster[i]] &&
+            static_cast<double>(size[root]) >=
                 kApartShare * static_cast<double>(in_cluster[cluster[i]]))
-            continue;
-        if (renamed[root] < 0) renamed[root] = next++;
-        cluster[i] = static_cast<std::uint32_t>(renamed[root]);
+            apart.push_back(root);
+    }
+    std::sort(apart.begin(), apart.end(), [&](std::size_t a, std::size_t b) {
+        return size[a] != size[b] ? size[a] > size[b] : a < b;
+    });
+    std::uint32_t next = *std::max_element(cluster.begin(), cluster.end()) + 1;
+    apart.resize(std::min<std::size_t>(apart.size(), most > next ? most - next : 0));
+    std::vector<std::int64_t> renamed(cluster.size(), -1);
+    for (const std::size_t root : apart) renamed[root] = next++;
+    for (std::size_t i = 0; i < cluster.size(); ++i) {
+        const std::int64_t name = renamed[pieces.find(static_cast<std::uint32_t>(i))];
+        if (name >= 0) cluster[i] = static_cast<std::uint32_t>(name);
     }
     return cluster;
 }
 
 }  // namespace
 
-Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
+Mesh crown_hulls(const Mesh& crown, std::size_t hulls, std::size_t pieces) {
     std::vector<bool> used(crown.positions.size(), false);
     for (const auto& t : crown.triangles) used[t[0]] = used[t[1]] = used[t[2]] = true;
     std::vector<glm::vec3> points;
@@ -130,7 +141,8 @@ Mesh crown_hulls(const Mesh& crown, std::size_t hulls) {
             points.push_back(crown.positions[v]);
         }
     if (points.size() < 4 || hulls == 0) return crown;
-    const std::vector<std::uint32_t> cluster = apart_clusters(crown, index, k_means(points, hulls));
+    const std::vector<std::uint32_t> cluster =
+        apart_clusters(crown, index, k_means(points, hulls), pieces);
     const std::uint32_t clusters = *std::max_element(cluster.begin(), cluster.end()) + 1;
     std::vector<Mesh> hull_meshes;
     for (std::uint32_t c = 0; c < clusters; ++c) {

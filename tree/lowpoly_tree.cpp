@@ -144,6 +144,12 @@ constexpr std::size_t kTinyCrownBudget = 100;
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
                           const TreeBudget& budget, const DecimateSettings& settings) {
     const std::size_t hull_count = crown_hull_count(budget);
+    // Clusters split where the crown parts (crown_hulls) add up to half as many hulls again
+    // while the hulls are few; past kMostHullsToSplit the clusters are small enough that few
+    // bridge a gap, and a split-off piece's small hull, reduced, folds (a spruce at 3000).
+    constexpr std::size_t kMostHullsToSplit = 32;
+    const std::size_t hull_pieces =
+        hull_count <= kMostHullsToSplit ? hull_count * 3 / 2 : hull_count;
     const bool automatic =
         budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
     // Blobs reduced to very few triangles fold into spikes as surely as blobs with handles.
@@ -153,7 +159,8 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
     // no closer: they alone.
     if (solid_budget(budget) >= kCrownHullBudget)
-        return reduce_solids(trunk, crown_hulls(hull_source, hull_count), budget, settings);
+        return reduce_solids(trunk, crown_hulls(hull_source, hull_count, hull_pieces), budget,
+                             settings);
     // Half as many hulls again and the source's samples are made on one core while the
     // other makes the hulls and starts their reduction.
     Mesh hulls, more_hulls;
@@ -161,11 +168,11 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     ReducedTree out;
     tbb::parallel_invoke(
         [&] {
-            hulls = crown_hulls(hull_source, hull_count);
+            hulls = crown_hulls(hull_source, hull_count, hull_pieces);
             out = reduce_solids(trunk, hulls, budget, settings);
         },
         [&] {
-            more_hulls = crown_hulls(hull_source, hull_count * 3 / 2);
+            more_hulls = crown_hulls(hull_source, hull_count * 3 / 2, hull_count * 3 / 2);
             from_source.emplace(hull_source);
         });
     if (out.crown.triangles.empty() || more_hulls.triangles.size() <= hulls.triangles.size())

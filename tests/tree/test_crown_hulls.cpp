@@ -61,7 +61,7 @@ void bounds(const Mesh& m, glm::vec3& lo, glm::vec3& hi) {
 }
 
 TEST(CrownHulls, TwoSeparateBlobsBecomeTwoHullsCoveringThem) {
-    const Mesh hulls = crown_hulls(two_boxes(), 2);
+    const Mesh hulls = crown_hulls(two_boxes(), 2, 2);
     expect_closed_outward(hulls, "hulls");
     const auto volumes = component_volumes(hulls);
     ASSERT_EQ(volumes.size(), 2u);
@@ -69,13 +69,24 @@ TEST(CrownHulls, TwoSeparateBlobsBecomeTwoHullsCoveringThem) {
     for (double v : volumes) EXPECT_NEAR(v, 1.0, 1e-4);
 }
 
+// One cluster over two blobs apart is split into a hull per blob where the pieces allow it;
+// held to one piece, its hull bridges the gap.
+TEST(CrownHulls, AClusterOverPiecesApartIsSplitUpToThePieces) {
+    const auto split = component_volumes(crown_hulls(two_boxes(), 1, 2));
+    ASSERT_EQ(split.size(), 2u);
+    for (double v : split) EXPECT_NEAR(v, 1.0, 1e-4);
+    const auto bridged = component_volumes(crown_hulls(two_boxes(), 1, 1));
+    ASSERT_EQ(bridged.size(), 1u);
+    EXPECT_GT(bridged[0], 2.0 + 1e-3);
+}
+
 TEST(CrownHulls, ZeroHullsOrAFlatCrownKeepsTheCrown) {
     const Mesh crown = two_boxes();
-    EXPECT_EQ(crown_hulls(crown, 0).triangles, crown.triangles);
+    EXPECT_EQ(crown_hulls(crown, 0, 0).triangles, crown.triangles);
     Mesh flat;
     flat.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     flat.triangles = {{0, 1, 2}};
-    EXPECT_EQ(crown_hulls(flat, 3).triangles, flat.triangles);
+    EXPECT_EQ(crown_hulls(flat, 3, 3).triangles, flat.triangles);
 }
 
 TEST(CrownHulls, HullsAreTheDefaultOfGameMeshesAndAnOption) {
