@@ -16,6 +16,7 @@
 #include "forest/forest.h"
 #include "forest/species_file.h"
 #include "tree/cost.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 
 namespace sylva {
@@ -26,7 +27,7 @@ constexpr int kOk = 0, kUsage = 2;
 constexpr const char* kForestHelp = R"(
 Many trees:
   sylva batch  -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N]
-               [--set KEY=VALUE]... [--budget N] [--lod] [--format glb|obj|ply] -o DIR/
+               [--set KEY=VALUE]... [--budget N] [--lod] [--format F] -o DIR/
       N variants of one template: variant i is seeded with the i-th splitmix64 number of
       S (default 1) and, with --jitter J (0 to 1, default 0.1), has branch_length,
       branch_width, angles, tapers, crown, leaf and envelope sizes scaled by up to

@@ -21,22 +21,26 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/file_set.h"
-#include "core/large_pages.h"
-#include "core/signal_cleanup.h"
+#include "core/name_list.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
+#include "platform/large_pages.h"
+#include "platform/signal_cleanup.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "app/layout_cli.h"
 #endif
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
 #include "tree/leaf_thinning.h"
+#include "tree/parameter_help.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_growth.h"
+#include "turtle/lsystem_params.h"
 
 namespace {
 
@@ -73,8 +77,7 @@ constexpr const char* kOptions = R"(
   --set KEY=VALUE  override a parameter (keys below); may be repeated
   --seed N         seed of stochastic rules and rand() (default 1)
   --steps N        derivation steps (default: the template's generations)
-  --mesher KIND    sparse (default: skips empty space), dense (every grid node), or vdb
-                   (OpenVDB narrow band + volumeToMesh)
+  --mesher KIND    @MESHERS@
   --adaptivity A   vdb mesher only: 0 (uniform, default) to 1 (merge flat regions)
   --budget N       trunk + crown reduced to N triangles (quadric decimation, stays closed);
                    0 keeps every triangle; default: the template's triangle_budget (800)
@@ -86,11 +89,8 @@ constexpr const char* kOptions = R"(
                    carries at most 800 leaf triangles more), every leaf with --budget 0.
                    Leaves are thinned, not reduced: an even, seeded subset of whole leaves
                    is kept, each grown (up to 2x) so the crown looks as dense
-  --crown-shape S  how a reduced crown is drawn: auto (below 400 triangles a crown whose
-                   blobs touch in rings becomes a few convex hulls), blobs (its own
-                   surface, reduced) or hulls (always hulls); default: the template's
-                   crown_shape (auto in every built-in template)
-  --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
+  --crown-shape S  how a reduced crown is drawn; default: the template's crown_shape
+@CROWN_SHAPES@  --lod            LOD0-LOD3 with budgets N, N/2, N/4, N/8 (leaves halve alike): one .glb
                    with a node per level, or OUT_LOD0.obj ... (names game engines pick up)
   --impostor       append far levels baked from LOD0 (docs/impostors.md): an octahedral
                    impostor (one quad, albedo + normal/depth atlas of 8 x 8 views, a
@@ -103,11 +103,10 @@ constexpr const char* kOptions = R"(
   --impostor-size PX, --impostor-views N, --impostor-quads Q
                    atlas side (default 1024), N x N views (default 8, 2 to 32),
                    billboard quads (default 3, or 2)
-  --format F       obj, glb, ply or fbx (default: from the extension of OUT)
+  --format F       @FORMATS@ (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals
-  --profile P      generic (default), unity, unreal or godot: collision names, the wind
-                   channel, OBJ/PLY units (README "Engine profiles")
-  --engine-kit DIR also write the profile's engine import kit (Godot, Unity, Unreal
+  --profile P      collision names, the wind channel, OBJ/PLY units (docs/engines.md):
+@PROFILES@  --engine-kit DIR also write the profile's engine import kit (Godot, Unity, Unreal
                    scripts and shaders; all of them for generic) into DIR (docs/engines.md)
   --collision on|off
                    convex collision hulls (trunk, crown pieces); default: on for unity,
@@ -140,8 +139,31 @@ constexpr const char* kOptions = R"(
 
 Exit codes: 0 ok, 2 usage, 3 invalid input, 4 I/O error.
 
-Parameters:
 )";
+
+// kOptions with the names of the registries' entries (meshers, crown shapes, formats) put in.
+std::string options_help() {
+    std::string text = kOptions;
+    auto put = [&](std::string_view mark, const std::string& with) {
+        text.replace(text.find(mark), mark.size(), with);
+    };
+    std::string meshers;
+    for (const MesherInfo& m : sylva::meshers())
+        meshers += (meshers.empty() ? "" : "\n                   ") + std::string(m.name) + ": " +
+                   std::string(m.help);
+    put("@MESHERS@", meshers);
+    std::string shapes;
+    for (const CrownShapeInfo& c : crown_shapes())
+        shapes += "                   " + std::string(c.name) + ": " + std::string(c.help) + "\n";
+    put("@CROWN_SHAPES@", shapes);
+    put("@FORMATS@", format_names());
+    std::string profiles;
+    for (const ProfileInfo& p : engine_profiles())
+        profiles +=
+            "                   " + std::string(p.name) + ": " + std::string(p.summary) + "\n";
+    put("@PROFILES@", profiles);
+    return text;
+}
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -178,10 +200,10 @@ T parse_integer(const std::string& flag, const std::string& text) {
 // a budget past it (1e19) overflowed later arithmetic and acted like 1.
 std::size_t parse_budget(const std::string& flag, const std::string& text) {
     const std::size_t budget = parse_integer<std::size_t>(flag, text);
-    for (const ParamInfo& info : param_infos())
-        if (info.key == "triangle_budget" && static_cast<double>(budget) > info.max)
-            throw UsageError(flag + " must be 0 to " +
-                             std::to_string(static_cast<std::size_t>(info.max)) + ", not " + text);
+    const double max = find_param("triangle_budget")->max;
+    if (static_cast<double>(budget) > max)
+        throw UsageError(flag + " must be 0 to " + std::to_string(static_cast<std::size_t>(max)) +
+                         ", not " + text);
     return budget;
 }
 
@@ -213,7 +235,8 @@ Options parse_options(int argc, char** argv) {
             std::string name = value();
             std::optional<Mesher> mesher = mesher_from_name(name);
             if (!mesher)
-                throw UsageError("--mesher expects dense, sparse or vdb, not '" + name + "'");
+                throw UsageError("--mesher expects " + name_list(mesher_names()) + ", not '" +
+                                 name + "'");
             o.mesh.mesher = *mesher;
         } else if (arg == "--adaptivity") {
             std::string text = value();
@@ -232,14 +255,11 @@ Options parse_options(int argc, char** argv) {
             o.budget_leaves = parse_budget(arg, value());
         } else if (arg == "--crown-shape") {
             const std::string name = value();
-            if (name == "auto")
-                o.crown_shape = CrownShape::Automatic;
-            else if (name == "blobs")
-                o.crown_shape = CrownShape::Blobs;
-            else if (name == "hulls")
-                o.crown_shape = CrownShape::Hulls;
-            else
-                throw UsageError("--crown-shape expects auto, blobs or hulls, not '" + name + "'");
+            const CrownShapeInfo* shape = find_crown_shape(name);
+            if (!shape)
+                throw UsageError("--crown-shape expects " + name_list(crown_shape_names()) +
+                                 ", not '" + name + "'");
+            o.crown_shape = shape->shape;
         } else if (arg == "--lod") {
             o.lod = true;
         } else if (arg.rfind("--impostor", 0) == 0) {
@@ -311,23 +331,22 @@ TreeTemplate configured_template(const Options& o) {
     TreeTemplate tree = load_template(o.tree);
     for (const auto& [key, value] : o.sets) set_param(tree.params, key, value);
     if (o.seed) tree.params.seed = *o.seed;
-    if (o.steps) tree.params.generations = *o.steps;
+    if (o.steps) tree.params.blocks.edit<LSystemParams>().generations = *o.steps;
     tree.colors = tree_colors(tree);  // colour variation: per seed
     return tree;
 }
 
 constexpr const char* kRaiseLimits = "raise the limits with --max-memory MB / --max-seconds S";
 
-void print_parameters(std::FILE* to) {
-    for (const ParamInfo& p : param_infos())
-        std::fprintf(to, "  %-17s %s (%g to %g)\n", std::string(p.key).c_str(),
-                     std::string(p.help).c_str(), p.min, p.max);
+// The flags, then the growth methods and parameters from the registry (tree/parameter_help.h).
+void print_options(std::FILE* to) {
+    std::fputs(options_help().c_str(), to);
+    std::fputs(parameter_help().c_str(), to);
 }
 
 void print_help(std::FILE* to) {
     std::fputs(kHelp, to);
-    std::fputs(kOptions, to);
-    print_parameters(to);
+    print_options(to);
     print_forest_help(to);
 }
 
@@ -337,8 +356,7 @@ bool print_command_help(const std::string& command, std::FILE* to) {
     if (command == "batch" || command == "forest") {
         print_forest_command_help(command, to);
         std::fputs("\nTree flags, as export takes them:", to);
-        std::fputs(kOptions, to);
-        print_parameters(to);
+        print_options(to);
         return true;
     }
     const std::string text = kHelp, head = "  sylva " + command;
@@ -355,8 +373,7 @@ bool print_command_help(const std::string& command, std::FILE* to) {
     }
     std::fputs(usage.c_str(), to);
     if (command == "templates") return true;
-    std::fputs(kOptions, to);
-    print_parameters(to);
+    print_options(to);
     return true;
 }
 
@@ -392,12 +409,17 @@ void print_parts(const std::vector<NamedMesh>& parts, const std::vector<std::str
 }
 
 int run_export(const Options& o) {
-    if (o.output.empty()) throw UsageError("export needs -o OUT.obj|OUT.glb|OUT.ply");
+    if (o.output.empty()) {
+        std::string outs;
+        for (std::string_view extension : format_extensions())
+            outs += (outs.empty() ? "OUT" : "|OUT") + std::string(extension);
+        throw UsageError("export needs -o " + outs);
+    }
     const ExportFormat* by_extension = format_from_extension(o.output);
     const ExportFormat* format = o.format ? o.format : by_extension;
     if (!format)
-        throw UsageError("cannot tell the format of '" + o.output +
-                         "': use .obj, .glb, .ply or .fbx, or --format");
+        throw UsageError("cannot tell the format of '" + o.output + "': use " +
+                         name_list(format_extensions()) + ", or --format");
     // PLY bytes in a .glb open in no engine: an extension of another format is a mistake.
     if (by_extension && by_extension != format)
         throw UsageError("--format " + std::string(format->name) + " does not match '" + o.output +
@@ -553,7 +575,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) use_large_pages();  // core/large_pages.h
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) use_large_pages();  // platform/large_pages.h
     // SIGINT/SIGTERM during a write remove the export's temporaries before the process ends.
     install_signal_cleanup();
     try {

@@ -25,6 +25,7 @@
 #include "export/export_tree.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace {
 
@@ -96,7 +97,7 @@ void report(const std::string& name, const Span& span, const std::function<void(
 
 void run_case(const Case& c) {
     TreeTemplate t = load_template(c.template_name);
-    if (c.generations > 0) t.params.generations = c.generations;
+    if (c.generations > 0) t.params.blocks.edit<LSystemParams>().generations = c.generations;
     MeshOptions options;
     options.budget = c.budget;
     auto generate = [&](CancelFlag cancel) {

@@ -1,7 +1,7 @@
 // Space colonization to a finished skeleton (targets: 10,000 points <= 20 ms,
 // 100,000 points <= 200 ms), the grid against the brute-force nearest-node reference in
 // the same run. Prints the times, the ratio, and whether both grew the same tree.
-//   build/bench/sylva-bench-colonization [repeats]
+//   build/bench/sylva-bench-colonization [--markdown] [repeats]
 // With --cost, the cost model instead (colonization/colonization_cost.h): per crown and
 // point count, the estimate before the run against the counted work and the run's thread
 // CPU time (best of three), and their ratios; --large adds a million points.
@@ -11,8 +11,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <string>
 #include <vector>
 
+#include "bench/common.h"
 #include "colonization/attraction_points.h"
 #include "colonization/branch_shaping.h"
 #include "colonization/colonization_cost.h"
@@ -142,7 +144,9 @@ int cost_table(bool large) {
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "--cost") == 0)
         return cost_table(argc > 2 && std::strcmp(argv[2], "--large") == 0);
-    const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool markdown = bench::take_flag(args, "--markdown");
+    const int repeats = args.empty() ? 5 : std::max(1, std::atoi(args[0].c_str()));
     // An elm-sized crown: 8 m wide, 6 m tall, on a 3 m trunk.
     Envelope envelope;
     envelope.shape = EnvelopeShape::Ellipsoid;
@@ -154,8 +158,8 @@ int main(int argc, char** argv) {
     settings.step_size = 0.2f;
     settings.trunk_height = 3.0f;
     settings.max_iterations = 1000;
-    std::printf("%8s %10s %10s %8s %6s %8s %12s %12s %8s\n", "points", "nodes", "segments", "left",
-                "iters", "grid ms", "brute ms", "ratio", "same");
+    bench::Table table({"points", "nodes", "segments", "left", "iterations", "grid ms",
+                        "brute force ms", "ratio", "same tree"});
     for (int count : {10000, 100000}) {
         double best = 1e30;
         Run grid;
@@ -167,9 +171,11 @@ int main(int argc, char** argv) {
         reference.search = NearestSearch::BruteForce;
         const Run brute = run(envelope, count, reference);  // once: it is slow
         const bool same = brute.nodes == grid.nodes && brute.remaining == grid.remaining;
-        std::printf("%8d %10zu %10zu %8zu %6d %8.1f %12.1f %11.1fx %8s\n", count, grid.nodes,
-                    grid.segments, grid.remaining, grid.iterations, best, brute.ms, brute.ms / best,
-                    same ? "yes" : "NO");
+        table.row({std::to_string(count), std::to_string(grid.nodes), std::to_string(grid.segments),
+                   std::to_string(grid.remaining), std::to_string(grid.iterations),
+                   bench::format("%.1f", best), bench::format("%.1f", brute.ms),
+                   bench::format("%.1fx", brute.ms / best), same ? "yes" : "NO"});
     }
+    table.print(markdown);
     return 0;
 }

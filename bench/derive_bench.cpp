@@ -2,14 +2,17 @@
 // a parametric one (Honda's monopodial tree, ABOP Fig. 2.6), and two of word modules (ABOP
 // Fig. 1.26's plant as the book prints it; an L-Py style parametric apex grammar), one
 // thread: by the wall clock, and by the thread's CPU time (what the derivation itself costs
-// when other processes share the cores). Usage: sylva-bench-derive [repetitions]
+// when other processes share the cores).
+// Usage: sylva-bench-derive [--markdown] [repetitions]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <string>
+#include <vector>
 
+#include "bench/common.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_parser.h"
 
@@ -44,7 +47,9 @@ double thread_seconds() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool markdown = bench::take_flag(args, "--markdown");
+    const int repetitions = args.empty() ? 5 : std::max(1, std::atoi(args[0].c_str()));
     const Case cases[] = {
         {"D0L  F -> F[+F]F[-F]F (ABOP 1.24a)", "axiom: F\nF -> F[+F]F[-F]F\n", 9},
         {"parametric Honda (ABOP 2.6)", R"(#define r1 0.9
@@ -73,9 +78,8 @@ Internode(l) -> Internode(l * 1.1)
 )",
          18},
     };
-    std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
-    std::printf("%-38s %6s %12s %12s %12s %12s\n", "grammar", "steps", "final size", "written",
-                "M modules/s", "(CPU time)");
+    if (!markdown) std::printf("derivation throughput, 1 thread, best of %d runs\n", repetitions);
+    bench::Table table({"grammar", "steps", "final size", "written", "M modules/s", "(CPU time)"});
     for (const Case& c : cases) {
         LSystem system = parse_lsystem(c.grammar);
         std::size_t written = modules_written(system, c.steps);
@@ -94,9 +98,10 @@ Internode(l) -> Internode(l * 1.1)
             best = std::min(best, seconds);
         }
         // One derive of n steps writes the words of steps 1..n: `written` modules.
-        std::printf("%-38s %6d %12zu %12zu %12.1f %12.1f\n", c.name, c.steps, size, written,
-                    static_cast<double>(written) / best / 1e6,
-                    static_cast<double>(written) / best_cpu / 1e6);
+        table.row({c.name, std::to_string(c.steps), std::to_string(size), std::to_string(written),
+                   bench::format("%.1f", static_cast<double>(written) / best / 1e6),
+                   bench::format("%.1f", static_cast<double>(written) / best_cpu / 1e6)});
     }
+    table.print(markdown);
     return 0;
 }

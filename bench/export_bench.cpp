@@ -44,10 +44,10 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
+#include "bench/common.h"
+#include "core/mesh_checks.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
-#include "marching/mesh_checks.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
@@ -97,17 +97,11 @@ double fastest_meshopt(const Tree& tree, std::size_t budget, Mesh& trunk, Mesh& 
     return fastest;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The studio's heap (core/large_pages.h): its exports, like these, follow each other in
-    // one process. SYLVA_NO_LARGE_PAGES=1 measures without.
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
+    // Its exports, like the studio's, follow each other in one process.
+    bench::use_studio_heap();
     std::vector<std::string> names(argv + 1, argv + argc);
     const bool stages = std::erase(names, "--stages") > 0;
     if (names.empty())
@@ -218,12 +212,14 @@ int main(int argc, char** argv) {
             "the raw mesh alone / meshopt_simplify on it: median %.2fx, %.2f-%.2fx\n"
             "export / meshopt_simplify on the full-detail mesh (%zu-%zu triangles): median %.2fx, "
             "%.2f-%.2fx\n\n",
-            median(exports), *std::max_element(exports.begin(), exports.end()), median(ratios),
-            median(firsts), *std::max_element(firsts.begin(), firsts.end()), median(halves),
-            *std::max_element(halves.begin(), halves.end()), median(alone),
+            bench::median(exports), *std::max_element(exports.begin(), exports.end()),
+            bench::median(ratios), bench::median(firsts),
+            *std::max_element(firsts.begin(), firsts.end()), bench::median(halves),
+            *std::max_element(halves.begin(), halves.end()), bench::median(alone),
             *std::min_element(alone.begin(), alone.end()),
             *std::max_element(alone.begin(), alone.end()), fewest_full, most_full,
-            median(against_full), *std::min_element(against_full.begin(), against_full.end()),
+            bench::median(against_full),
+            *std::min_element(against_full.begin(), against_full.end()),
             *std::max_element(against_full.begin(), against_full.end()));
     }
     std::filesystem::remove(out);

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
+#include "bench/common.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "quality/folds.h"
@@ -56,11 +56,6 @@ std::vector<std::size_t> parse_budgets(const std::string& list) {
         start = comma + 1;
     }
     return out;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 // "trunk: 3 pieces (1 soup), 2 degenerate, pairs 4-17 4-18 ..."
@@ -138,8 +133,7 @@ struct Costs {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The studio's heap (core/large_pages.h), as the other benchmarks.
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
+    bench::use_studio_heap();  // as the other benchmarks
     std::vector<std::size_t> budgets = {50, 200, 800, 3000};
     bool lod = false, detail = false;
     std::string images;
@@ -290,12 +284,12 @@ int main(int argc, char** argv) {
             std::printf("%s %s %.2f%%", i ? "," : "", folds[i].second.c_str(), folds[i].first);
         std::vector<double> fold_values;
         for (const auto& f : folds) fold_values.push_back(f.first);
-        std::printf("; median %.2f%%\n", median(fold_values));
+        std::printf("; median %.2f%%\n", bench::median(fold_values));
         if (worst_iou)
             std::printf("  silhouette iou: min %.3f (%s%s), median %.3f\n", worst_iou->iou,
                         worst_iou->name.c_str(),
                         lod ? (" LOD" + std::to_string(worst_iou->level)).c_str() : "",
-                        median(ious));
+                        bench::median(ious));
     }
     const double n = static_cast<double>(std::max<std::size_t>(costs.rows, 1));
     std::printf(

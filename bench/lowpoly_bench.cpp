@@ -30,12 +30,12 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh_checks.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
-#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
 

@@ -6,7 +6,8 @@
 //   vdb       OpenVDB narrow band + tools::volumeToMesh
 // Peak memory is measured in a forked child per configuration (ru_maxrss).
 //
-// Usage: sylva-bench-mesh [--quick]      (--quick: resolutions up to 100, one repetition)
+// Usage: sylva-bench-mesh [--quick] [--markdown]
+//   --quick: resolutions up to 100, one repetition; --markdown: the table as Markdown
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <sys/resource.h>
@@ -24,8 +25,9 @@
 #include <thread>
 #include <vector>
 
+#include "bench/common.h"
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
-#include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "sdf/capped_cone.h"
 #include "sdf/sphere_field.h"
@@ -174,7 +176,9 @@ std::vector<Part> tree_parts(const TreeFields& fields) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool quick = bench::take_flag(args, "--quick");
+    const bool markdown = bench::take_flag(args, "--markdown");
     const int repetitions = quick ? 1 : 3;
     std::vector<int> resolutions = {25, 50, 75, 100, 125, 150, 200, 300, 400};
     if (quick) resolutions = {25, 50, 100};
@@ -182,13 +186,13 @@ int main(int argc, char** argv) {
     TreeTemplate spruce = load_template("seed_spruce");
     Skeleton skeleton = grow(spruce);
     std::printf(
-        "Seed 001 spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "
+        "Heuer's spruce (appendix B.1): %zu segments, %zu tips; %u hardware threads; "
         "times best of %d, seconds\n\n",
         skeleton.segments.size(), tips(skeleton).size(),
         std::max(1u, std::thread::hardware_concurrency()), repetitions);
-    std::printf("%-5s %4s | %8s %8s | %8s %8s %8s | %9s %9s %7s | %8s %8s | %8s %8s | %6s %6s\n",
-                "part", "res", "seed s", "seed tri", "baseline", "dense", "sparse", "triangles",
-                "evals", "ev/tri", "vdb", "vdb tri", "x base", "x seed", "MB", "closed");
+    bench::Table table({"part", "res", "thesis s", "thesis tri", "baseline", "dense", "sparse",
+                        "triangles", "evals", "ev/tri", "vdb", "vdb tri", "x base", "x thesis",
+                        "MB", "closed"});
 
     double total_200 = 0;
     for (int resolution : resolutions) {
@@ -217,19 +221,20 @@ int main(int argc, char** argv) {
                 std::snprintf(base_s, sizeof base_s, "%.3f", base);
                 std::snprintf(x_base, sizeof x_base, "%.0f", base / sparse.seconds);
             }
-            std::printf(
-                "%-5s %4d | %8s %8s | %8s %8.4f %8.4f | %9zu %9zu %7.1f | %8.4f %8zu | "
-                "%8s %8s | %6.0f %6s\n",
-                part.name, resolution, seed_s, seed_tri, base_s, dense.seconds, sparse.seconds,
-                sparse.triangles, sparse.evaluations,
-                double(sparse.evaluations) / double(std::max<size_t>(1, sparse.triangles)),
-                vdb.seconds, vdb.triangles, x_base, x_seed, mb,
-                dense.closed && sparse.closed && vdb.closed ? "yes" : "NO");
+            table.row({part.name, std::to_string(resolution), seed_s, seed_tri, base_s,
+                       bench::format("%.4f", dense.seconds), bench::format("%.4f", sparse.seconds),
+                       std::to_string(sparse.triangles), std::to_string(sparse.evaluations),
+                       bench::format("%.1f", double(sparse.evaluations) /
+                                                 double(std::max<size_t>(1, sparse.triangles))),
+                       bench::format("%.4f", vdb.seconds), std::to_string(vdb.triangles), x_base,
+                       x_seed, bench::format("%.0f", mb),
+                       dense.closed && sparse.closed && vdb.closed ? "yes" : "NO"});
         }
     }
+    table.print(markdown);
     if (!quick)
         std::printf(
-            "\nresolution 200, trunk + crown, sparse: %.1f ms (target < 100 ms; seed 001: "
+            "\nresolution 200, trunk + crown, sparse: %.1f ms (target < 100 ms; Heuer: "
             "25.7 s on 16 threads)\n",
             total_200 * 1000);
 
@@ -243,8 +248,9 @@ int main(int argc, char** argv) {
     std::printf("default tree, resolution 64, trunk + crown, sparse: %.1f ms (target < 10 ms)\n",
                 total * 1000);
     std::printf(
-        "\nbaseline = seed's method on this machine; x base / x seed = baseline or seed "
-        "time over Sylva's sparse time; ev/tri = sparse field evaluations per triangle;\n"
+        "\nthesis = Heuer's table 6.1 (MCA_opt, 16 threads); baseline = the thesis's method on "
+        "this machine;\nx base / x thesis = baseline or thesis time over Sylva's sparse time; "
+        "ev/tri = sparse field evaluations per triangle;\n"
         "MB = peak resident memory of a process meshing that part with the sparse mesher.\n");
     return 0;
 }

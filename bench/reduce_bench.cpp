@@ -7,7 +7,7 @@
 // Columns per budget: ms = best wall time, cpu = best thread CPU time, tris = trunk + crown
 // after, cuts = handles cut. Then the median and worst wall time per budget.
 //
-// Usage: sylva-bench-reduce [--repeat N] [TEMPLATE...]
+// Usage: sylva-bench-reduce [--markdown] [--repeat N] [TEMPLATE...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/large_pages.h"
+#include "bench/common.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "tree/pipeline.h"
@@ -32,23 +32,20 @@ double thread_cpu_ms() {
     return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The studio's heap (core/large_pages.h): its exports, like these, follow each other in
-    // one process. SYLVA_NO_LARGE_PAGES=1 measures without.
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) keep_freed_memory();
+    // Its exports, like the studio's, follow each other in one process.
+    bench::use_studio_heap();
     int repeat = 3;
     std::vector<std::string> names;
+    bool markdown = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--repeat" && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
+        else if (arg == "--markdown")
+            markdown = true;
         else
             names.push_back(arg);
     }
@@ -56,15 +53,17 @@ int main(int argc, char** argv) {
         for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
     const std::size_t budgets[] = {200, 800, 3000};
 
-    std::printf("reduction (finish_tree), best of %d; ms = wall, cpu = thread CPU\n", repeat);
-    std::printf("%-11s", "template");
+    if (!markdown)
+        std::printf("reduction (finish_tree), best of %d; ms = wall, cpu = thread CPU\n", repeat);
+    std::vector<std::string> header = {"template"};
     for (std::size_t b : budgets)
-        std::printf(" | %4zu: %6s %6s %5s %4s", b, "ms", "cpu", "tris", "cuts");
-    std::printf("\n");
+        for (const char* column : {"ms", "cpu", "tris", "cuts"})
+            header.push_back(std::to_string(b) + " " + column);
+    bench::Table table(header);
     std::vector<std::vector<double>> walls(std::size(budgets));
     for (const std::string& name : names) {
         const TreeTemplate tmpl = load_template(name);
-        std::printf("%-11s", name.c_str());
+        std::vector<std::string> cells = {name};
         for (std::size_t k = 0; k < std::size(budgets); ++k) {
             FinishSettings finish;
             finish.budget.total = budgets[k];
@@ -82,15 +81,19 @@ int main(int argc, char** argv) {
                 best_cpu = std::min(best_cpu, thread_cpu_ms() - cpu);
             }
             const ReducedTree& level = finished.levels.at(0);
-            std::printf(" | %4s  %6.1f %6.1f %5zu %4d", "", best_wall, best_cpu, level.triangles,
-                        level.handles_cut);
+            cells.insert(cells.end(),
+                         {bench::format("%.1f", best_wall), bench::format("%.1f", best_cpu),
+                          std::to_string(level.triangles), std::to_string(level.handles_cut)});
             walls[k].push_back(best_wall);
         }
-        std::printf("\n");
-        std::fflush(stdout);
+        table.row(std::move(cells));
     }
+    table.print(markdown);
+    std::printf("\n");
+    bench::Table summary({"budget", "median ms", "worst ms"});
     for (std::size_t k = 0; k < std::size(budgets); ++k)
-        std::printf("budget %zu: median %.1f ms, worst %.1f ms\n", budgets[k], median(walls[k]),
-                    *std::max_element(walls[k].begin(), walls[k].end()));
+        summary.row({std::to_string(budgets[k]), bench::format("%.1f", bench::median(walls[k])),
+                     bench::format("%.1f", *std::max_element(walls[k].begin(), walls[k].end()))});
+    summary.print(markdown);
     return 0;
 }

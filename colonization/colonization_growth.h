@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "colonization/attraction_points.h"
+#include "colonization/colonization_params.h"
 #include "colonization/envelope.h"
 #include "colonization/obstacle.h"
 #include "colonization/space_colonization.h"
@@ -20,11 +21,13 @@ extern const GrowthMethod colonization_growth;
 // parameters set them. Throws InputError when kill_distance exceeds influence_radius.
 // template_envelope is the simple solid (envelope = "template" is resolved in grow, which
 // asks GrowthContext::template_crown for it).
-Envelope template_envelope(const TreeParams& params);
-Obstacle template_obstacle(const TreeParams& params);
+Envelope template_envelope(const ColonizationParams& params);
+Obstacle template_obstacle(const ColonizationParams& params);
 // `roots` points on a circle of radius root_spread on the ground (y = 0), the first on +x;
 // one root stands at the origin.
-std::vector<glm::vec3> template_roots(const TreeParams& params);
+std::vector<glm::vec3> template_roots(const ColonizationParams& params);
+// The shared parameters give the pipe radii's noise: tropism_variation, bend_frequency and
+// the seed.
 ColonizationSettings colonization_settings(const TreeParams& params);
 
 // Why max_no_grow cannot change this template's colonization, or empty when it can: the

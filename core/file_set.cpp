@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "core/errors.h"
-#include "core/signal_cleanup.h"
+#include "platform/signal_cleanup.h"
 
 namespace sylva {
 

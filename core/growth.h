@@ -1,7 +1,8 @@
 // The seam between a template and its skeleton: a growth method (L-system + turtle, space
 // colonization, ...) turns a template into a Skeleton, which every later stage
 // (fields, meshing, leaves, low poly, export) shares. Each method lives in its own folder
-// and is registered with one line in tree/growth.cpp.
+// with its parameters' table and is registered with one line in tree/growth.cpp; help text,
+// --set, template files and the studio find its parameters there.
 #pragma once
 
 #include <functional>
@@ -60,12 +61,32 @@ struct GrowthContext {
     GrowthLimits limits = {};  // none by default
 };
 
+// A parameter a template leaves unread, and why ("every F in the rules gives its own
+// length"): the studio greys it out and shows the reason.
+struct UnreadParam {
+    std::string key;
+    std::string reason;
+};
+
+class ParamTable;
+
 struct GrowthMethod {
     std::string_view name;         // a template's `growth = "..."`
     std::string_view description;  // one line, for --help and the studio
     // Throws InputError (GrammarError for a grammar) on bad input, naming the template's
     // file and line where it has one; Cancelled when the context's flag is set.
     Skeleton (*grow)(const TreeTemplate& tree, const GrowthContext& context);
+    // The method's own parameters (core/param_table.h), kept in TreeParams::blocks; nullptr
+    // for a method with none.
+    const ParamTable& (*params)() = nullptr;
+    // Whether its templates carry a grammar (a template file must then have one).
+    bool uses_grammar = false;
+    // The shared parameters this method never reads for `tree`, and those of its own that
+    // the tree's other choices make moot, each with the reason; nullptr when it reads every
+    // one. The parameters of other methods need no mention. May grow the tree (cache the
+    // answer); throws what grow throws.
+    std::vector<UnreadParam> (*unread)(const TreeTemplate& tree,
+                                       const GrowthContext& context) = nullptr;
     // The growth's cost from the template's parameters alone, cheaply (no growth): a rough
     // guide for tree/cost.h's estimate_cost. nullptr: the method has none (tree/cost.h
     // knows the L-system's).

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/signal_cleanup.h"
+#include "platform/signal_cleanup.h"
 
 namespace sylva {
 

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "core/name_list.h"
 #include "export/fbx_writer.h"
 #include "export/glb_writer.h"
 #include "export/obj_writer.h"
@@ -32,11 +33,8 @@ std::string lower(std::string_view text) {
 const ExportFormat& resolve(const std::filesystem::path& path, const ExportFormat* format) {
     if (format) return *format;
     if (const ExportFormat* by_extension = format_from_extension(path)) return *by_extension;
-    std::string known;
-    for (const ExportFormat* f : kFormats)
-        known += (known.empty() ? "" : ", ") + std::string(f->extension);
     throw InputError("cannot tell the format of '" + path.string() + "' from its extension '" +
-                     path.extension().string() + "': use " + known);
+                     path.extension().string() + "': use " + name_list(format_extensions()));
 }
 
 }  // namespace
@@ -63,6 +61,15 @@ std::filesystem::path texture_file_name(const std::filesystem::path& path, std::
 
 std::span<const ExportFormat* const> export_formats() {
     return kFormats;
+}
+
+std::span<const std::string_view> format_extensions() {
+    static const std::vector<std::string_view> extensions = [] {
+        std::vector<std::string_view> out;
+        for (const ExportFormat* f : kFormats) out.push_back(f->extension);
+        return out;
+    }();
+    return extensions;
 }
 
 const ExportFormat* format_from_extension(const std::filesystem::path& path) {
@@ -106,11 +113,12 @@ std::vector<std::filesystem::path> write_lod_chain(const std::filesystem::path& 
 }
 
 std::string format_names() {
-    std::string names;
-    const std::size_t n = std::size(kFormats);
-    for (std::size_t i = 0; i < n; ++i)
-        names += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + std::string(kFormats[i]->name);
-    return names;
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const ExportFormat* f : kFormats) out.push_back(f->name);
+        return out;
+    }();
+    return name_list(names);
 }
 
 }  // namespace sylva

@@ -16,6 +16,8 @@ namespace sylva {
 
 // Every format: obj, glb, ply, fbx.
 std::span<const ExportFormat* const> export_formats();
+// Their extensions (".obj"), in the same order, for help and messages.
+std::span<const std::string_view> format_extensions();
 
 // By extension, any letter case (".OBJ" is obj); nullptr for none of them.
 const ExportFormat* format_from_extension(const std::filesystem::path& path);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 
 namespace sylva {

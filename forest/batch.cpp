@@ -12,10 +12,11 @@
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/output_folder.h"
-#include "core/signal_cleanup.h"
 #include "export/export.h"
 #include "export/glb_writer.h"
 #include "forest/variation.h"
+#include "platform/signal_cleanup.h"
+#include "tree/parameters.h"
 
 namespace sylva {
 namespace {

@@ -5,7 +5,7 @@
 //
 // All or nothing per shard: the trees are generated first (in parallel, oneTBB) and kept in
 // memory, then every file of the shard is staged and moved into place in one FileSet under
-// a SignalDeferral, so SIGINT/SIGTERM (core/signal_cleanup.h) leave either no new file or
+// a SignalDeferral, so SIGINT/SIGTERM (platform/signal_cleanup.h) leave either no new file or
 // the whole shard.
 #pragma once
 

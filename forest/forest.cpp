@@ -23,6 +23,7 @@
 #include "core/stopwatch.h"
 #include "forest/poisson_disk.h"
 #include "forest/variation.h"
+#include "tree/parameters.h"
 
 namespace sylva::forest {
 namespace {

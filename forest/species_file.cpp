@@ -6,6 +6,7 @@
 #include "core/data_paths.h"
 #include "core/errors.h"
 #include "core/input_file.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 
 namespace sylva::forest {

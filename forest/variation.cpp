@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/random.h"
+#include "tree/parameters.h"
 
 namespace sylva {
 namespace {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "core/tree_params.h"
 #include "export/skeleton_json.h"
 #include "fuzz_guard.h"
+#include "tree/parameters.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Fuzzes the template loader: parse a template file; a template it accepts must write back
 // (template_file_text) to a text it reads again to the same grammar and parameters.
-#include "core/tree_params.h"
 #include "fuzz_guard.h"
+#include "tree/parameters.h"
 #include "tree/template_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -11,10 +11,10 @@
 #include <numeric>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/handle_cutting.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/quadric_collapse.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {
@@ -424,10 +424,6 @@ struct Lanes {
     std::vector<std::size_t> part_of;  // the part of each
 };
 
-// Below this a part is reduced in a few milliseconds: splitting it would not pay (the
-// pipeline meshes a trunk in pieces from about this size, kGroupAtLeast in tree/pipeline.cpp).
-constexpr std::size_t kSplitAtLeast = 8000;
-
 Lanes lanes_for(std::span<const Mesh* const> parts) {
     std::size_t total = 0;
     for (const Mesh* m : parts) total += m->triangles.size();
@@ -435,7 +431,7 @@ Lanes lanes_for(std::span<const Mesh* const> parts) {
     for (std::size_t k = 0; k < parts.size(); ++k) {
         const Mesh& part = *parts[k];
         const std::size_t n = part.triangles.size();
-        if (lanes.split.empty() && n >= kSplitAtLeast && 2 * n > total) {
+        if (lanes.split.empty() && n >= kLaneSplitTriangles && 2 * n > total) {
             std::size_t components = 0;
             std::vector<std::uint32_t> label = component_of_triangles(part, components);
             std::vector<std::size_t> size(components, 0);

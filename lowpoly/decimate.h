@@ -30,6 +30,12 @@ namespace sylva {
 // The fewest foot vertices a piece keeps (DecimateSettings::foot_height): a hexagon.
 inline constexpr std::size_t kMinFootVertices = 6;
 
+// A part with at least this many triangles (and more than half of all) is reduced in two
+// lanes of its connected components, one per core; below it a part takes a few milliseconds
+// and splitting would not pay. A caller that meshes a part in pieces for the lanes (the
+// pipeline's trunk) needs no pieces below it.
+inline constexpr std::size_t kLaneSplitTriangles = 8000;
+
 struct DecimateSettings {
     // Triangle budget over all the parts reduced together. They share it: one priority
     // queue of collapses ordered by quadric error decides where the triangles go, so a
@@ -102,7 +108,7 @@ struct DecimateResult {
     std::size_t triangles = 0;   // over all parts
     bool within_budget = false;  // triangles <= max_triangles
     // How often a reduction was redone with fewer collapses because a part failed
-    // check_topology (marching/mesh_checks.h). 0 in every case seen so far: the link
+    // check_topology (core/mesh_checks.h). 0 in every case seen so far: the link
     // condition and the guards keep the manifold; the back-off is the safety net.
     int backoffs = 0;
     int handles_cut = 0;  // see DecimateSettings::cut_handles

@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh_checks.h"
 #include "lowpoly/merge_meshes.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 

@@ -15,7 +15,7 @@ namespace sylva {
 Mesh merge_meshes(std::span<const Mesh* const> meshes);
 
 // Each triangle's connected component (triangles joined through shared vertices), numbered
-// by first triangle as component_volumes() (marching/mesh_checks.h) orders them; `count`
+// by first triangle as component_volumes() (core/mesh_checks.h) orders them; `count`
 // gets the number of components.
 std::vector<std::uint32_t> component_of_triangles(const Mesh& mesh, std::size_t& count);
 

@@ -11,21 +11,22 @@
 namespace sylva {
 namespace {
 
-struct MesherEntry {
-    Mesher mesher;
-    std::string_view name;
-    Mesh (*run)(const BatchField&, const Box&, const MeshSettings&);
-};
-
-// One line per mesher. The names are what the CLI's --mesher takes.
+// One line per mesher, the default first. The names are what the CLI's --mesher takes.
 constexpr std::array kMeshers{
-    MesherEntry{Mesher::Dense, "dense", marching_cubes},
-    MesherEntry{Mesher::Sparse, "sparse", sparse_marching_cubes},
-    MesherEntry{Mesher::Vdb, "vdb", vdb_mesh},
+    MesherInfo{Mesher::Sparse, "sparse", "skips the blocks that hold no surface (the default)",
+               sparse_marching_cubes},
+    MesherInfo{Mesher::Dense, "dense", "evaluates every grid node", marching_cubes},
+    MesherInfo{Mesher::Vdb, "vdb", "OpenVDB narrow band + volumeToMesh", vdb_mesh},
 };
 
-const MesherEntry* find(Mesher mesher) {
-    for (const MesherEntry& entry : kMeshers) {
+constexpr auto kNames = [] {
+    std::array<std::string_view, kMeshers.size()> names{};
+    for (std::size_t i = 0; i < kMeshers.size(); ++i) names[i] = kMeshers[i].name;
+    return names;
+}();
+
+const MesherInfo* find(Mesher mesher) {
+    for (const MesherInfo& entry : kMeshers) {
         if (entry.mesher == mesher) return &entry;
     }
     return nullptr;
@@ -34,7 +35,7 @@ const MesherEntry* find(Mesher mesher) {
 }  // namespace
 
 Mesh mesh(const BatchField& field, const Box& box, const MeshSettings& settings) {
-    const MesherEntry* entry = find(settings.mesher);
+    const MesherInfo* entry = find(settings.mesher);
     if (!entry) {
         throw InputError("mesh: no mesher has the value " +
                          std::to_string(static_cast<int>(settings.mesher)));
@@ -42,15 +43,23 @@ Mesh mesh(const BatchField& field, const Box& box, const MeshSettings& settings)
     return entry->run(field, box, settings);
 }
 
+std::span<const MesherInfo> meshers() {
+    return kMeshers;
+}
+
+std::span<const std::string_view> mesher_names() {
+    return kNames;
+}
+
 std::optional<Mesher> mesher_from_name(std::string_view name) {
-    for (const MesherEntry& entry : kMeshers) {
+    for (const MesherInfo& entry : kMeshers) {
         if (entry.name == name) return entry.mesher;
     }
     return std::nullopt;
 }
 
 std::string_view mesher_name(Mesher mesher) {
-    const MesherEntry* entry = find(mesher);
+    const MesherInfo* entry = find(mesher);
     return entry ? entry->name : std::string_view();
 }
 

@@ -82,7 +82,19 @@ struct MeshSettings {
 // Mesher value that names no mesher.
 Mesh mesh(const BatchField& field, const Box& box, const MeshSettings& settings);
 
-// "dense", "sparse" or "vdb"; nullopt for any other name.
+// One mesher of the registry: its value, the name --mesher takes and one line of help.
+struct MesherInfo {
+    Mesher mesher;
+    std::string_view name;
+    std::string_view help;
+    Mesh (*run)(const BatchField&, const Box&, const MeshSettings&);
+};
+
+// Every mesher, the default (MeshSettings{}.mesher) first, and their names in that order.
+std::span<const MesherInfo> meshers();
+std::span<const std::string_view> mesher_names();
+
+// "sparse", "dense" or "vdb"; nullopt for any other name.
 std::optional<Mesher> mesher_from_name(std::string_view name);
 
 // The name mesher_from_name() takes; empty for a value that names no mesher.

@@ -11,6 +11,7 @@
 #include "tree/pipeline.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_growth.h"
+#include "turtle/lsystem_params.h"
 #include "turtle/lsystem_parser.h"
 
 namespace sylva {
@@ -57,7 +58,7 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
     if (tree.growth == lsystem_growth.name) {
         try {
             const LSystem system = parse_lsystem(tree.grammar, param_constants(tree.params));
-            const WordGrowth growth = word_growth(system, tree.params.generations);
+            const WordGrowth growth = word_growth(system, lsystem_params(tree.params).generations);
             cost.modules = growth.low_modules;
             cost.segments = growth.low_segments;
         } catch (const InputError&) {

@@ -150,11 +150,12 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     constexpr std::size_t kMostHullsToSplit = 32;
     const std::size_t hull_pieces =
         hull_count <= kMostHullsToSplit ? hull_count * 3 / 2 : hull_count;
-    const bool automatic =
-        budget.crown_shape.value_or(CrownShape::Automatic) == CrownShape::Automatic;
+    const bool only_with_handles =
+        crown_shape_info(budget.crown_shape.value_or(CrownShape::Automatic)).hulls ==
+        CrownHulls::WithHandles;
     // Blobs reduced to very few triangles fold into spikes as surely as blobs with handles.
     const bool tiny = solid_budget(budget) < kTinyCrownBudget && trunk.triangles.empty();
-    if (hull_count == 0 || (automatic && !tiny && genus(hull_source) == 0))
+    if (hull_count == 0 || (only_with_handles && !tiny && genus(hull_source) == 0))
         return reduce_solids(trunk, crown, budget, settings);
     // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
     // no closer: they alone.
@@ -334,9 +335,9 @@ std::size_t leaf_budget(const TreeBudget& budget) {
 
 std::size_t crown_hull_count(const TreeBudget& budget) {
     const std::size_t total = solid_budget(budget);
-    const CrownShape shape = budget.crown_shape.value_or(CrownShape::Automatic);
-    const bool hulls = shape == CrownShape::Automatic ? total > 0 : shape == CrownShape::Hulls;
-    if (!hulls) return 0;
+    const CrownHulls rule =
+        crown_shape_info(budget.crown_shape.value_or(CrownShape::Automatic)).hulls;
+    if (rule == CrownHulls::Never || (rule == CrownHulls::WithHandles && total == 0)) return 0;
     const std::size_t per =
         std::max<std::size_t>(1, budget.lump_triangles.value_or(kTrianglesPerHull));
     return std::max<std::size_t>(1, (total > 0 ? total : kCrownHullBudget) / per);

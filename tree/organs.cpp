@@ -146,7 +146,7 @@ OrganMesh tree_organs(const Skeleton& skeleton, const TreeParams& params) {
                              "' (known: " + known_surfaces() + ")");
         add_surface(out, organ, *surface);
     }
-    if (static_cast<PolygonPart>(params.polygon_part) == PolygonPart::Organs)
+    if (params.polygon_part == PolygonPart::Organs)
         for (std::size_t k = 0; k < skeleton.polygons.size(); ++k)
             if (skeleton.polygons[k].size() >= 3)
                 add_polygon(out, skeleton.polygons[k], polygon_color(skeleton, k));

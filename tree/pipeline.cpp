@@ -19,6 +19,7 @@
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "core/tree_age.h"
+#include "lowpoly/decimate.h"
 #include "lowpoly/merge_meshes.h"
 #include "marching/mesher.h"
 #include "sdf/cone_field.h"
@@ -136,7 +137,7 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
     float crown_cell = fit_to_cells(fields.crown_box, fixed_cell, p.crown_resolution);
     balls = merge_coincident_balls(std::move(balls), kMergeToleranceInCells * crown_cell);
     float margin = kFieldMarginInCells * crown_cell + 4.0f * fusion;
-    if (static_cast<CrownBlend>(p.crown_blend) == CrownBlend::Pasko) {
+    if (p.crown_blend == CrownBlend::Pasko) {
         // Equation 2.13's alpha: 1 is the hard union; the strongest fusion (0.1) gives 0.
         float alpha = std::clamp(1.0f - 10.0f * fusion, 0.0f, 1.0f);
         fields.crown.emplace(std::move(balls), alpha, margin, SphereBlend::PaskoSavchenko);
@@ -151,7 +152,7 @@ void add_crown_field(TreeFields& fields, std::vector<Ball> balls, const TreePara
 // the other's, 0.6 times as thick as its sphere (and at least a cell, so the grid sees it).
 std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
                                            const TreeParams& p, const Box& box) {
-    if (budget == 0 || p.crown_merge == 0) return {};
+    if (budget == 0 || !p.crown_merge) return {};
     const std::vector<Ball>& balls = crown.balls();
     if (count_crown_pieces(balls, 0.0f) * kTrianglesPerCrownPiece <= budget / 2) return {};
     const std::size_t max_pieces = std::max<std::size_t>(1, budget / 2 / kTrianglesPerMergedPiece);
@@ -237,9 +238,11 @@ std::vector<std::uint8_t> trunk_groups(const Skeleton& skeleton,
         total += own[i];
     }
     // (ra + rb) L is a cone side's area over pi; marching cubes makes 5-9 triangles per
-    // square cell of it (on the built-in templates), so this is about 8,000 triangles: below,
-    // the reduction would not split the trunk (kSplitAtLeast in lowpoly/decimate.cpp).
-    constexpr double kGroupAtLeast = 1000.0;  // square cells
+    // square cell of it (on the built-in templates), about 8: a trunk of fewer square cells
+    // than this makes fewer triangles than the reduction splits into lanes.
+    constexpr double kTrianglesPerSquareCell = 8.0;
+    constexpr double kGroupAtLeast =
+        static_cast<double>(kLaneSplitTriangles) / kTrianglesPerSquareCell;  // square cells
     // A joint blend rounds every joint: pieces would lose the fillets where they meet.
     if (total < kGroupAtLeast * cell * cell || joint_blend > 0.0f) return group;
     // A piece starts where a branch leaves its parent, its base inside the parent's end,
@@ -370,8 +373,7 @@ int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget) {
         resolution = capped(resolution, std::sqrt(static_cast<double>(budget) /
                                                   static_cast<double>(kTrunkDetailBudget)) *
                                             resolution);
-    const bool hidden =
-        params.drop_hidden != 0 && params.crown_mesh != 0 && params.sphere_diameter > 0.0;
+    const bool hidden = params.drop_hidden && params.crown_mesh && params.sphere_diameter > 0.0;
     // With the hidden branches left out, these cells keep the mean error about that of the
     // template's resolution.
     if (hidden) resolution = capped(resolution, 1.5 * share_cells(budget));  // 60 at 800
@@ -486,7 +488,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
         LeafSettings leaves;
         leaves.density = p.leaf_density;
         leaves.size = p.leaf_size;
-        leaves.shape = static_cast<LeafShape>(p.leaf_shape);
+        leaves.shape = p.leaf_shape;
         leaves.seed = p.seed;
         leaves.cancel = cancel;
         const SphereField& crown = *fields.crown;
@@ -495,7 +497,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
         // shell one leaf deep, so the crown wears its leaves instead of hiding them (and the
         // hidden ones cost no triangles). The shell needs a distance bound (not Pasko's blend).
         const float shell = static_cast<float>(p.leaf_size);
-        if (p.crown_mesh != 0 && crown.is_distance_bound() && shell > 0.0f)
+        if (p.crown_mesh && crown.is_distance_bound() && shell > 0.0f)
             out = scatter_leaves(
                 [&crown, shell](const glm::vec3& q) {
                     return std::abs(crown(q) + 0.5f * shell) - 0.5f * shell;
@@ -505,8 +507,7 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
             out = scatter_leaves([&crown](const glm::vec3& q) { return crown(q); },
                                  fields.crown_box, leaves);
     }
-    if (static_cast<PolygonPart>(p.polygon_part) == PolygonPart::Leaves)
-        add_polygon_leaves(out, skeleton.polygons);
+    if (p.polygon_part == PolygonPart::Leaves) add_polygon_leaves(out, skeleton.polygons);
     return out;
 }
 
@@ -548,10 +549,10 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     growth.progress = options.growth_progress;
     growth.limits = options.growth_limits;
     out.skeleton = grow(tree, growth, &mature);
-    out.crown_shape = static_cast<CrownShape>(tree.params.crown_shape);
+    out.crown_shape = tree.params.crown_shape;
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
-    out.leaf_style = static_cast<LeafStyle>(tree.params.leaf_style);
-    out.leaf_shape = static_cast<LeafShape>(tree.params.leaf_shape);
+    out.leaf_style = tree.params.leaf_style;
+    out.leaf_shape = tree.params.leaf_shape;
     TreeParams p = tree.params;
     p.crown_resolution = crown_resolution_for_budget(p.crown_resolution, options.budget);
     p.trunk_resolution = trunk_resolution_for_budget(p, options.budget);
@@ -561,12 +562,12 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     out.organs = tree_organs(out.skeleton, p);  // small; an unknown organ fails before meshing
     throw_if_cancelled(options.cancel);         // each stage below starts only when still wanted
     Stopwatch clock;
-    const bool crown_wanted = p.crown_mesh != 0;
+    const bool crown_wanted = p.crown_mesh;
     // A game mesh's trunk leaves out the branches the crown hides (drop_hidden) and comes in
     // groups (trunk_groups): its fields are built once the crown's says which segments it
     // draws, not twice.
     const bool game_mesh = options.budget > 0;
-    const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden != 0;
+    const bool drop_hidden = crown_wanted && game_mesh && p.drop_hidden;
     // A game mesh's branches as prisms need no trunk field at all, only the segments.
     const bool prisms = game_mesh && branch_style(p) == BranchStyle::Prisms;
     TreeFields fields = tree_fields(out.skeleton, p, cells, options.cancel,

@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 
 namespace sylva {
 namespace {
@@ -85,8 +86,11 @@ class Reader {
                 continue;
             }
             try {
+                const ParamInfo* info = find_param(key.str());
                 if (value.is_string())
                     set_param(params, key.str(), *value.value<std::string_view>());
+                else if (value.is_boolean() && info && info->flag)
+                    set_param(params, key.str(), *value.value<bool>() ? 1.0 : 0.0);
                 else if (value.is_number()) {
                     // An integer beyond 2^53 has no exact double: say so instead of rounding.
                     const std::optional<double> number = value.value<double>();
@@ -291,17 +295,14 @@ TreeTemplate parse_template_file(std::string_view text, const std::string& sourc
     tree.description = read.string(doc, "description", false);
     tree.source = source;
     if (std::string growth = read.string(doc, "growth", false); !growth.empty()) {
-        if (!find_growth_method(growth)) {
-            std::string known;
-            for (const GrowthMethod* m : growth_methods())
-                known += (known.empty() ? "" : ", ") + std::string(m->name);
-            read.fail(doc.get("growth"),
-                      "'growth' must be one of " + known + ", not '" + growth + "'");
-        }
+        if (!find_growth_method(growth))
+            read.fail(doc.get("growth"), "'growth' must be one of " + growth_method_names() +
+                                             ", not '" + growth + "'");
         tree.growth = growth;
     }
-    // Only the L-system needs a grammar; other growth methods ignore one.
-    tree.grammar = read.string(doc, "grammar", tree.growth == "lsystem");
+    // Only a method that reads a grammar (the L-system) needs one; others ignore one.
+    const GrowthMethod* method = find_growth_method(tree.growth);
+    tree.grammar = read.string(doc, "grammar", method && method->uses_grammar);
     if (doc.get("grammar")) tree.grammar_line = grammar_first_line(text, doc.get("grammar"));
     tree.mode = static_cast<TurtleMode>(read.named(doc, "turtle", kModes, int(TurtleMode::Abop)));
     tree.width_model =
@@ -337,7 +338,7 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
     out << (comments.header.empty() ? std::string("# Sylva tree template\n") : comments.header);
     put("", "name", quoted(tree.name));
     put("", "description", quoted(tree.description));
-    if (tree.growth != "lsystem") put("", "growth", quoted(tree.growth));
+    if (tree.growth != TreeTemplate{}.growth) put("", "growth", quoted(tree.growth));
     put("", "turtle", "\"" + std::string(name_of(kModes, int(tree.mode))) + "\"");
     put("", "widths", "\"" + std::string(name_of(kWidths, int(tree.width_model))) + "\"");
     // Written so it reads back byte for byte: the closing quotes follow the grammar's last
@@ -349,7 +350,8 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
         std::none_of(grammar.begin(), grammar.end(), [](char c) {
             return (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == '\x7f';
         });
-    if (grammar.empty() && tree.growth != "lsystem") {
+    const GrowthMethod* method = find_growth_method(tree.growth);
+    if (grammar.empty() && method && !method->uses_grammar) {
         // A growth method without a grammar (colonization) writes none.
     } else if (literal) {
         put("", "grammar", "'''\n" + grammar + "'''");
@@ -374,8 +376,12 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
     if (auto above = comments.above.find("[params]"); above != comments.above.end())
         out << above->second;
     out << "[params]\n";
+    // The shared parameters and the growth method's own; another method's only where they
+    // differ from the default (set before the growth was switched), so none is lost.
     for (const ParamInfo& info : param_infos()) {
         const double value = *get_param(tree.params, info.key);
+        if (!info.owner.empty() && info.owner != tree.growth && value == info.default_value)
+            continue;
         if (!info.choices.empty())
             put("params", info.key, quoted(param_text(tree.params, info)));
         else if (info.integer)

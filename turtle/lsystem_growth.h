@@ -13,7 +13,8 @@ namespace sylva {
 
 extern const GrowthMethod lsystem_growth;
 
-// Every parameter of docs/parameters.md, by its key: the constants the grammar's expressions see.
+// The shared parameters and the L-system's own (lsystem_params.h), by key: the constants the
+// grammar's expressions see.
 Constants param_constants(const TreeParams& params);
 
 // The turtle as the template's parameters and modes set it.

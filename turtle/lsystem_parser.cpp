@@ -178,7 +178,8 @@ class Parser {
             }
             size_t start = static_cast<size_t>(body.data() - line.text.data());
             if (section == Section::SeedAxiom) {
-                if (have_axiom) line.fail("a second axiom; seed 001's format has one", start);
+                if (have_axiom)
+                    line.fail("a second axiom; the thesis's format (Heuer 2022) has one", start);
                 result_.axiom = parse_productions(line, start, line.text.size(), {});
                 if (result_.axiom.empty()) line.fail("the axiom is empty", start);
                 result_.axiom_line = line.number;

@@ -1,5 +1,5 @@
 // The "forest" view toggle: a small square of forest planted with the shown template
-// (ui/forest_preview_plan.h), made on a worker at a low budget and drawn in place of the
+// (ui/state/forest_preview_plan.h), made on a worker at a low budget and drawn in place of the
 // single tree once ready. The tree stays on screen meanwhile; a new template cancels a
 // running job and starts another; turning it off returns to the tree.
 #pragma once
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ui/mesh_renderer.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

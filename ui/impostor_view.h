@@ -13,7 +13,7 @@
 
 #include "impostor/impostor_bake.h"
 #include "ui/gl_program.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

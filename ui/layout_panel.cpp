@@ -16,7 +16,7 @@
 #include "layout/geometry.h"
 #include "layout/positions.h"
 #include "tree/cost.h"
-#include "ui/forest_preview_plan.h"
+#include "ui/state/forest_preview_plan.h"
 
 namespace sylva::studio {
 

@@ -18,7 +18,7 @@
 #include "layout/variations.h"
 #include "ui/file_dialog.h"
 #include "ui/panels.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

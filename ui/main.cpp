@@ -5,13 +5,13 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/input_file.h"
-#include "core/large_pages.h"
+#include "platform/large_pages.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/backdrop.h"
-#include "ui/colonization_view.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#include "ui/state/colonization_view.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "ui/layout_panel.h"
 #endif
@@ -19,16 +19,16 @@
 #include "ui/impostor_view.h"
 #include "ui/line_renderer.h"
 #include "ui/mesh_renderer.h"
-#include "ui/orbit_camera.h"
 #include "ui/organ_view.h"
 #include "ui/panels.h"
-#include "ui/release_bench.h"
-#include "ui/scale_figure.h"
 #include "ui/screenshot.h"
-#include "ui/studio_options.h"
-#include "ui/studio_state.h"
+#include "ui/state/orbit_camera.h"
+#include "ui/state/release_bench.h"
+#include "ui/state/scale_figure.h"
+#include "ui/state/studio_options.h"
+#include "ui/state/studio_state.h"
+#include "ui/state/wind_view.h"
 #include "ui/variants_strip.h"
-#include "ui/wind_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -113,7 +113,7 @@ struct Viewport {
     static constexpr int kNothing = -2;
     LineRenderer envelope, points, replay;
     int points_step = kNothing, replay_step = kNothing;
-    WindView wind;          // the wind toggle's parts (ui/wind_view.h)
+    WindView wind;          // the wind toggle's parts (ui/state/wind_view.h)
     ImpostorView impostor;  // the LOD slider's impostor slot (ui/impostor_view.h)
 };
 
@@ -634,7 +634,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) sylva::keep_freed_memory();  // core/large_pages.h
+    if (!std::getenv("SYLVA_NO_LARGE_PAGES")) sylva::keep_freed_memory();  // platform/large_pages.h
     StudioOptions options;
     try {
         options = parse_studio_options(argc, argv);

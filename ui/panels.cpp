@@ -7,19 +7,22 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <random>
 #include <string>
 
+#include "core/name_list.h"
 #include "export/export.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
-#include "ui/colonization_view.h"
 #include "ui/file_dialog.h"
 #include "ui/forest_preview.h"
 #include "ui/impostor_view.h"
 #include "ui/rules_warnings.h"
-#include "ui/template_controls.h"
+#include "ui/state/colonization_view.h"
+#include "ui/state/template_controls.h"
 
 namespace sylva::studio {
 namespace {
@@ -110,6 +113,13 @@ void actions_row(StudioState& state) {
     tooltip("keyboard shortcuts (F1)");
 }
 
+// Whether the template's growth method reads its grammar (the rules editor and the #define
+// sliders act on it).
+bool reads_grammar(const TreeTemplate& t) {
+    const GrowthMethod* method = find_growth_method(t.growth);
+    return !method || method->uses_grammar;
+}
+
 // The growth method that makes the skeleton; the rest of the pipeline is shared.
 void growth_combo(StudioState& state) {
     const std::string& current = state.tree_template.growth;
@@ -180,8 +190,8 @@ void template_section(StudioState& state) {
     message_line(state.file_message, state.file_failed);
 }
 
-// The template's own knobs: its #define constants that carry a range (ui/template_controls.h),
-// its colours, and the way back to it as it was opened.
+// The template's own knobs: its #define constants that carry a range
+// (ui/state/template_controls.h), its colours, and the way back to it as it was opened.
 void this_tree_section(StudioState& state) {
     section("This tree");
     TreeTemplate& t = state.tree_template;
@@ -206,7 +216,7 @@ void this_tree_section(StudioState& state) {
                               c.line, c.min, c.max);
         if (changed && value != c.value) set_grammar_constant(t.grammar, c.name, value);
     }
-    if (constants.empty() && !grows_by_colonization(t)) {
+    if (constants.empty() && reads_grammar(t)) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
             "No constants with a range in the rules. A #define with \"# [min, max] help\" "
@@ -257,7 +267,7 @@ bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& r
         }
         return changed;
     }
-    if (info.integer && info.min == 0 && info.max == 1) {
+    if (info.flag) {
         bool on = value != 0.0;
         bool changed = ImGui::Checkbox(key.c_str(), &on);
         value = on ? 1.0 : 0.0;
@@ -277,20 +287,11 @@ bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& r
     return changed;
 }
 
-// One parameter's widget with its help and range as a tooltip.
-// The age slider and the noise controls, shown above the other parameters.
-bool is_variation_key(std::string_view key) {
-    for (std::string_view k : {"age", "bend", "bend_frequency", "jitter", "width_variation",
-                               "tropism_variation", "color_variation"})
-        if (key == k) return true;
-    return false;
-}
-
 void parameter_section(StudioState& state) {
     section("Parameters");
     TreeTemplate& t = state.tree_template;
     enum_combo("turtle", t.mode, {"abop", "lptg"},
-               "abop: ABOP's H, L, U turtle; lptg: seed 001's elevation / azimuth turtle");
+               "abop: ABOP's H, L, U turtle; lptg: Heuer's elevation / azimuth turtle");
     enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
                "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
                "pipe: Murray's pipe model from tip_width");
@@ -303,12 +304,14 @@ void parameter_section(StudioState& state) {
     tooltip("a new random seed");
     // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
     // (crown_merge and drop_hidden act in the full-detail view too: it is meshed for the
-    // template's budget, as the game mesh is.)
-    const auto inert = inert_params(t);
-    auto row = [&](const ParamInfo& info) {
+    // template's budget, as the game mesh is.) The rows come by group from the registry.
+    std::optional<ParamGroup> group;
+    for (const ParameterRow& row : parameter_rows(t)) {
+        const ParamInfo& info = *row.info;
+        if (group && *group != info.group) ImGui::Separator();
+        group = info.group;
         double value = *get_param(params, info.key);
-        const auto unread = inert.find(info.key);
-        const bool disabled = unread != inert.end();
+        const bool disabled = !row.unread.empty();
         ImGui::BeginDisabled(disabled);
         const double own = *get_param(state.original.params, info.key);
         const SliderRange range = slider_range(info.key, std::max(own, value));
@@ -319,7 +322,7 @@ void parameter_section(StudioState& state) {
             help += budget_resolution_note(params, info.key);
             if (disabled)
                 ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
-                                  unread->second.c_str());
+                                  row.unread.c_str());
             else if (info.choices.empty())
                 ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(), info.min,
                                   info.max);
@@ -327,13 +330,7 @@ void parameter_section(StudioState& state) {
                 ImGui::SetTooltip("%s", help.c_str());
         }
         if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
-    };
-    // The age slider and the noise controls first, the other parameters below.
-    for (const ParamInfo& info : param_infos())
-        if (is_variation_key(info.key)) row(info);
-    ImGui::Separator();
-    for (const ParamInfo& info : param_infos())
-        if (!is_variation_key(info.key)) row(info);
+    }
 }
 
 // The confirmation an expensive edit asks for before it runs (generations 12 on the oak),
@@ -427,13 +424,13 @@ void cost_notice(StudioState& state) {
 
 void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     section("Rules");
-    if (grows_by_colonization(state.tree_template)) {
+    if (!reads_grammar(state.tree_template)) {
         // No grammar to edit: the editor would only invite edits that change nothing.
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled(
-            "Space colonization grows without rules: the envelope, the attraction points and "
-            "the colonization parameters on the left shape the tree. Switch growth to "
-            "\"lsystem\" to edit a grammar.");
+        const std::string text = "Growth method " + state.tree_template.growth +
+                                 " grows without rules: its parameters on the left shape the "
+                                 "tree. Switch growth to \"lsystem\" to edit a grammar.";
+        ImGui::TextDisabled("%s", text.c_str());
         ImGui::PopTextWrapPos();
         wrapped_text(state.error, true);
         if (!state.error.empty())
@@ -564,7 +561,7 @@ void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
     ImGui::InputText("path", &e.path);
-    tooltip("the extension picks the format: .obj (+ .mtl), .glb, .ply or .fbx");
+    tooltip(("the extension picks the format: " + name_list(format_extensions())).c_str());
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())

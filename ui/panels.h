@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ui/rules_editor.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

@@ -12,7 +12,7 @@
 
 #include "ui/gl.h"
 #include "ui/panels.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 

@@ -16,43 +16,19 @@
 #include <thread>
 #include <vector>
 
+#include "tests/helpers.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int code = -1;
-    std::string output;  // stdout and stderr together
-};
+using Result = sylva::test::CommandResult;
 
 Result run(const std::string& args) {
-    std::string command = std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
-    Result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return sylva::test::run_command(std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args);
 }
 
-class Cli : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_cli_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::vector<std::string> listing() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_))
-            names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    fs::path dir_;
-};
+using Cli = sylva::test::TempFolderTest;
 
 TEST_F(Cli, ExportWritesAClosedObjAndSaysWhere) {
     Result r = run("export -o " + path("tree.obj"));

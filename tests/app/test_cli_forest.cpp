@@ -14,47 +14,21 @@
 #include <thread>
 #include <vector>
 
+#include "tests/helpers.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int code = -1;
-    std::string output;
-};
+using sylva::test::read_file;
+using Result = sylva::test::CommandResult;
 
 // `seconds` > 0: killed after that long (a hang fails the test instead of stalling it).
 Result run(const std::string& args, int seconds = 0) {
-    const std::string timeout =
-        seconds > 0 ? "timeout -s KILL " + std::to_string(seconds) + " " : std::string();
-    const std::string command =
-        timeout + std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
-    Result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return sylva::test::run_command(std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args, seconds);
 }
 
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class CliForest : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_cli_forest_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    fs::path dir_;
-};
+using CliForest = sylva::test::TempFolderTest;
 
 TEST_F(CliForest, BatchUsageErrors) {
     EXPECT_EQ(run("batch -t spruce -o " + path("b")).code, 2);  // no --count
@@ -75,7 +49,8 @@ TEST_F(CliForest, BatchShardWritesItsShare) {
     EXPECT_TRUE(fs::exists(path("b/spruce_0001.mtl")));
     EXPECT_TRUE(fs::exists(path("b/spruce_0003.obj")));
     EXPECT_FALSE(fs::exists(path("b/spruce_0000.obj")));
-    EXPECT_NE(slurp(path("b/manifest_2of2.json")).find("\"spruce_0003.obj\""), std::string::npos);
+    EXPECT_NE(read_file(path("b/manifest_2of2.json")).find("\"spruce_0003.obj\""),
+              std::string::npos);
 }
 
 TEST_F(CliForest, ForestWritesSceneAndPlacements) {
@@ -85,7 +60,7 @@ TEST_F(CliForest, ForestWritesSceneAndPlacements) {
             path("f.glb"));
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_TRUE(fs::exists(path("f.glb")));
-    const std::string csv = slurp(path("f.placements.csv"));
+    const std::string csv = read_file(path("f.placements.csv"));
     EXPECT_EQ(csv.rfind("index,species,variant,x,y,z,yaw_degrees,scale,age,class\n", 0), 0u);
     EXPECT_NE(csv.find(",pine,pine_v0,"), std::string::npos);
     EXPECT_TRUE(fs::exists(path("f.placements.json")));
@@ -105,7 +80,7 @@ TEST_F(CliForest, ForestPlantsALayoutPlan) {
                          "--variants 1 --budget 150 --row-spacing 5 -o " +
                          path("farm.glb"));
     ASSERT_EQ(r.code, 0) << r.output;
-    const std::string csv = slurp(path("farm.placements.csv"));
+    const std::string csv = read_file(path("farm.placements.csv"));
     EXPECT_NE(csv.find(",spruce,spruce_v0,"), std::string::npos);
     EXPECT_NE(csv.find(",birch,birch_orchard_v0,"), std::string::npos);
     EXPECT_NE(csv.find(",orchard\n"), std::string::npos);

@@ -40,8 +40,9 @@ TreeTemplate colonization_template() {
     TreeTemplate t;
     t.name = "test";
     t.growth = "colonization";
-    t.params.attraction_points = 1500;
-    t.params.trunk_height = 1.5;
+    ColonizationParams& c = t.params.blocks.edit<ColonizationParams>();
+    c.attraction_points = 1500;
+    c.trunk_height = 1.5;
     return t;
 }
 
@@ -102,19 +103,17 @@ TEST(Envelope, TiltMovesTheTopSideways) {
 TEST(Obstacle, NoPointInItAndNoNodeGrowsIntoIt) {
     for (ObstacleShape shape : {ObstacleShape::Sphere, ObstacleShape::Box}) {
         TreeTemplate t = colonization_template();
-        t.params.obstacle = static_cast<int>(shape);
-        t.params.obstacle_x = 1.2;
-        t.params.obstacle_y = 5.0;
-        t.params.obstacle_size_x = 2.5;
-        t.params.obstacle_size_y = 2.0;
-        t.params.obstacle_size_z = 6.0;
-        const Obstacle obstacle = template_obstacle(t.params);
+        ColonizationParams& c = t.params.blocks.edit<ColonizationParams>();
+        c.obstacle = shape;
+        c.obstacle_center = {1.2, 5.0, 0.0};
+        c.obstacle_size = {2.5, 2.0, 6.0};
+        const Obstacle obstacle = template_obstacle(c);
         EXPECT_TRUE(inside(obstacle, {1.2f, 5.0f, 0.0f}));
         EXPECT_FALSE(inside(obstacle, {1.2f, 6.1f, 0.0f}));
         const ColonizationSettings settings = colonization_settings(t.params);
         ASSERT_TRUE(settings.blocked);
 
-        const Envelope envelope = template_envelope(t.params);
+        const Envelope envelope = template_envelope(colonization_params(t.params));
         const Region region{bounds(envelope), [&](const glm::vec3& p) {
                                 return inside(envelope, p) && !inside(obstacle, p);
                             }};
@@ -130,7 +129,7 @@ TEST(Obstacle, NoPointInItAndNoNodeGrowsIntoIt) {
         EXPECT_GT(tips(skeleton).size(), 10u);
         for (const Segment& s : skeleton.segments) EXPECT_FALSE(inside(obstacle, s.b));
         // Without it the crown grows there: the test bites.
-        t.params.obstacle = 0;
+        t.params.blocks.edit<ColonizationParams>().obstacle = ObstacleShape::None;
         const Skeleton free = colonization_growth.grow(t, {});
         EXPECT_TRUE(std::any_of(free.segments.begin(), free.segments.end(),
                                 [&](const Segment& s) { return inside(obstacle, s.b); }));
@@ -147,9 +146,10 @@ TEST(Obstacle, NoPointInItAndNoNodeGrowsIntoIt) {
 TEST(Roots, NRootsGrowNTrees) {
     for (int count : {2, 3, 5}) {
         TreeTemplate t = colonization_template();
-        t.params.roots = count;
-        t.params.root_spread = 1.5;
-        const std::vector<glm::vec3> roots = template_roots(t.params);
+        ColonizationParams& c = t.params.blocks.edit<ColonizationParams>();
+        c.roots = count;
+        c.root_spread = 1.5;
+        const std::vector<glm::vec3> roots = template_roots(c);
         ASSERT_EQ(roots.size(), size_t(count));
         for (const glm::vec3& r : roots) {
             EXPECT_NEAR(std::hypot(r.x, r.z), 1.5f, 1e-5f);
@@ -179,14 +179,14 @@ TEST(Roots, NRootsGrowNTrees) {
         for (int n : segments_per_tree) EXPECT_GT(n, 3);  // every trunk reached the crown
     }
     // One root stands at the origin whatever the spread.
-    TreeParams p;
+    ColonizationParams p;
     p.root_spread = 3.0;
     EXPECT_EQ(template_roots(p), std::vector<glm::vec3>{glm::vec3(0.0f)});
 }
 
 TEST(Envelope, ATemplatesCrownNeedsTheTemplateLibrary) {
     TreeTemplate t = colonization_template();
-    t.params.envelope = kEnvelopeTemplate;
+    t.params.blocks.edit<ColonizationParams>().envelope = EnvelopeChoice::Template;
     EXPECT_THROW(colonization_growth.grow(t, {}), InputError);
     // Given a crown, the method fills it.
     GrowthContext context;
@@ -196,7 +196,7 @@ TEST(Envelope, ATemplatesCrownNeedsTheTemplateLibrary) {
         return Region{{{-3.5f, 2.0f, -2.0f}, {3.0f, 6.5f, 2.0f}},
                       [](const glm::vec3& p) { return two_balls(p) < 0.0f; }};
     };
-    t.params.envelope_template = 1;
+    t.params.blocks.edit<ColonizationParams>().envelope_template = 1;
     const Skeleton skeleton = colonization_growth.grow(t, context);
     EXPECT_EQ(asked, envelope_template_names()[1]);
     EXPECT_GT(tips(skeleton).size(), 10u);

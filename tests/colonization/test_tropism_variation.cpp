@@ -15,8 +15,8 @@ namespace sylva {
 namespace {
 
 ColonizationGraph grow(const TreeParams& p) {
-    const auto points =
-        attraction_points(template_envelope(p), 1500, PointDistribution::Uniform, 3);
+    const auto points = attraction_points(template_envelope(colonization_params(p)), 1500,
+                                          PointDistribution::Uniform, 3);
     return colonize(points, glm::vec3(0.0f), colonization_settings(p));
 }
 

@@ -13,36 +13,19 @@
 
 #include "core/errors.h"
 #include "core/file_set.h"
+#include "tests/helpers.h"
 
 namespace sylva {
 namespace {
 
 namespace fs = std::filesystem;
 
-class FileSetTest : public ::testing::Test {
+class FileSetTest : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_file_set_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::vector<std::string> listing() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_))
-            names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    static std::string slurp(const fs::path& path) {
-        std::ifstream in(path);
-        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    }
+    static std::string slurp(const fs::path& path) { return test::read_file(path); }
     static auto text(const std::string& content) {
         return [content](std::ostream& out) { out << content; };
     }
-
-    fs::path dir_;
 };
 
 TEST_F(FileSetTest, CommitMovesEveryFileInPlaceAndLeavesNoStaging) {

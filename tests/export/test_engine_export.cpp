@@ -16,11 +16,12 @@
 #include <vector>
 
 #include "core/convex_hull.h"
+#include "core/mesh_checks.h"
 #include "export/collision.h"
 #include "export/export_tree.h"
 #include "export/part_attributes.h"
 #include "export/wind_motion.h"
-#include "marching/mesh_checks.h"
+#include "tests/helpers.h"
 #include "tree/template_library.h"
 
 namespace sylva {
@@ -59,14 +60,8 @@ struct Exported {
     std::vector<const tinygltf::Node*> parts, collision;
 };
 
-class EngineExport : public ::testing::Test {
+class EngineExport : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_engine_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     Exported export_glb(const std::string& name, EngineProfile profile, bool lod,
                         const EngineSettings& engine = {}) {
         const TreeTemplate tmpl = load_template(name);
@@ -98,7 +93,6 @@ class EngineExport : public ::testing::Test {
         return out;
     }
 
-    fs::path dir_;
     Tree tree_;
     FinishedTree finished_;
 };

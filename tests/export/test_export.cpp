@@ -25,6 +25,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "export/export.h"
 #include "export/export_tree.h"
 #include "export/glb_writer.h"
@@ -32,7 +33,7 @@
 #include "export/obj_writer.h"
 #include "export/ply_writer.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
+#include "tests/helpers.h"
 #include "tree/leaf_thinning.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
@@ -72,22 +73,7 @@ const SmallTree& small_tree() {
     return t;
 }
 
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// Runs a command and returns what it printed (stdout and stderr) and its exit status.
-std::pair<std::string, int> run(const std::string& command) {
-    std::string output;
-    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return {"popen failed", -1};
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    return {output, ::pclose(pipe)};
-}
+using test::read_file;
 
 // What `assimp info --raw` (no post-processing: no vertex welding, no instancing)
 // reports: meshes (name, vertices, faces), material names, nodes with the mesh they hold.
@@ -114,7 +100,7 @@ struct AssimpInfo {
 };
 
 AssimpInfo assimp_info(const fs::path& path) {
-    auto [output, status] = run("assimp info '" + path.string() + "' --raw");
+    const auto [status, output] = test::run_command("assimp info '" + path.string() + "' --raw");
     AssimpInfo info;
     info.raw = output;
     EXPECT_EQ(status, 0) << "is assimp-utils installed? " << output;
@@ -374,7 +360,7 @@ TEST(ExportPly, HeaderAndBinaryBodyMatch) {
     const auto parts = t.parts();
     const fs::path path = temp_dir() / "tree.ply";
     write_model(path, parts);
-    const std::string bytes = slurp(path);
+    const std::string bytes = read_file(path);
     const std::size_t end = bytes.find("end_header\n");
     ASSERT_NE(end, std::string::npos);
     const std::string header = bytes.substr(0, end);
@@ -435,7 +421,7 @@ TEST(ExportFormat, FollowsTheExtension) {
     }
     // An explicit format wins over the extension.
     write_model(dir / "tree.bin", parts, {}, &glb_format);
-    EXPECT_EQ(slurp(dir / "tree.bin").substr(0, 4), "glTF");
+    EXPECT_EQ(read_file(dir / "tree.bin").substr(0, 4), "glTF");
     fs::remove_all(dir);
 }
 
@@ -507,8 +493,8 @@ TEST(ExportAllOrNothing, AnObjThatFailsOnAFullDiskKeepsTheOldObjAndMtl) {
     ASSERT_EQ(::waitpid(child, &status, 0), child);
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 4) << "the OBJ cannot fit";
-    EXPECT_EQ(slurp(dir / "tree.obj"), "old obj\n");
-    EXPECT_EQ(slurp(dir / "tree.mtl"), "old mtl\n");
+    EXPECT_EQ(read_file(dir / "tree.obj"), "old obj\n");
+    EXPECT_EQ(read_file(dir / "tree.mtl"), "old mtl\n");
     EXPECT_EQ(listing(dir), (std::vector<std::string>{"tree.mtl", "tree.obj"}));
     fs::remove_all(dir.parent_path());
 }

@@ -9,9 +9,9 @@
 #include <glm/vec2.hpp>
 #include <limits>
 
+#include "core/mesh_checks.h"
 #include "export/export_tree.h"
 #include "lowpoly/merge_meshes.h"
-#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/template_library.h"
 
@@ -174,7 +174,7 @@ TEST(TreeReduction, TheCrownIsMeshedAsFineAsItsBudgetCanShow) {
 // Hausdorff distance under 22% of the height).
 TEST(TreeReduction, ASmallBudgetMeshesTheTrunkAsCoarseAsItCanShow) {
     TreeTemplate bush = load_template("bush");
-    bush.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+    bush.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 0), bush.params.trunk_resolution);
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 800), bush.params.trunk_resolution);
     EXPECT_EQ(trunk_resolution_for_budget(bush.params, 3000), bush.params.trunk_resolution);

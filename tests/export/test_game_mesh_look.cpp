@@ -47,7 +47,7 @@ TEST(GameMeshLook, CrownsNeitherCrossNorFoldAtEveryBudgetAndLevel) {
 // The fir's trunk, reduced without the guard, folds through itself at 800.
 TEST(GameMeshLook, TheGuardKeepsATrunkApartThatWouldCross) {
     TreeTemplate fir = load_template("fir");
-    fir.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+    fir.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     const ReducedTree loose = game_mesh(fir, 800, false, false).levels.front();
     const ReducedTree kept = game_mesh(fir, 800, false).levels.front();
     EXPECT_GT(self_intersecting_pairs(loose.trunk), 0u);

@@ -5,7 +5,6 @@
 // profile writes beside the wind in COLOR_1).
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
-#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
@@ -16,6 +15,7 @@
 
 #include "export/export_tree.h"
 #include "export/index_colors.h"
+#include "tests/helpers.h"
 #include "tree/template_library.h"
 
 namespace sylva {
@@ -45,14 +45,8 @@ bool near_palette(const glm::vec3& c, const std::vector<glm::vec3>& palette) {
     return false;
 }
 
-class IndexColors : public ::testing::Test {
+class IndexColors : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_index_colors_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // `name` exported at a small budget (and LOD levels) to `file`.
     std::vector<fs::path> write(const std::string& name, const std::string& file,
                                 bool lod = false) {
@@ -78,7 +72,6 @@ class IndexColors : public ::testing::Test {
         return model;
     }
 
-    fs::path dir_;
     TreeTemplate tmpl_;
     Tree tree_;
     FinishedTree finished_;

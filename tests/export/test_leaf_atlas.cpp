@@ -4,7 +4,6 @@
 // texture beside its .mtl.
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -14,6 +13,7 @@
 
 #include "export/export_tree.h"
 #include "export/leaf_atlas.h"
+#include "tests/helpers.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
@@ -22,17 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class LeafAtlas : public ::testing::Test {
+class LeafAtlas : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_leaf_atlas_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     void export_oak(const std::string& name) {
         TreeTemplate t = load_template("oak");
-        t.params.leaf_style = static_cast<int>(LeafStyle::Textured);
+        t.params.leaf_style = LeafStyle::Textured;
         FinishSettings finish;
         finish.budget.total = 800;
         MeshOptions mesh;
@@ -40,8 +34,6 @@ class LeafAtlas : public ::testing::Test {
         const Tree tree = generate_tree(t, mesh);
         write_tree(dir_ / name, tree, finish_tree(tree, finish), t.colors);
     }
-
-    fs::path dir_;
 };
 
 TEST_F(LeafAtlas, AGlbDrawsTheCardsAlphaTestedOnAnEmbeddedTextureOfLeaves) {

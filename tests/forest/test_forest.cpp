@@ -18,6 +18,8 @@
 #include "forest/ground.h"
 #include "forest/poisson_disk.h"
 #include "forest/species_file.h"
+#include "tests/helpers.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
 
 namespace {
@@ -25,13 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace sylva;
 using namespace sylva::forest;
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 double min_pair_distance(const std::vector<glm::dvec2>& points) {
     double d = 1e30;
@@ -162,7 +157,7 @@ TEST(SpeciesFile, TemplatesWeightsAndOverrides) {
     EXPECT_EQ(species[0].tree.name, "oak");
     EXPECT_EQ(species[0].weight, 2.0);
     EXPECT_EQ(species[0].tree.params.leaf_density, 40.0);
-    EXPECT_EQ(species[0].tree.params.leaf_shape, static_cast<int>(LeafShape::Needle));
+    EXPECT_EQ(species[0].tree.params.leaf_shape, LeafShape::Needle);
     EXPECT_EQ(species[1].weight, 1.0);
     try {
         parse_species_json(R"({"species": [{"template": "oak"}, {"template": "birch",
@@ -305,15 +300,7 @@ TEST(ForestPlan, DensityAndTreeCount) {
     EXPECT_THROW(plan_forest(s), InputError);
 }
 
-class ForestScene : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_forest_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using ForestScene = test::TempFolderTest;
 
 tinygltf::Model load(const fs::path& path) {
     tinygltf::Model model;
@@ -326,7 +313,7 @@ tinygltf::Model load(const fs::path& path) {
 // Every CSV row after the header, split at commas.
 std::vector<std::vector<std::string>> csv_rows(const fs::path& path) {
     std::vector<std::vector<std::string>> rows;
-    std::istringstream in(read(path));
+    std::istringstream in(test::read_file(path));
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "index,species,variant,x,y,z,yaw_degrees,scale,age,class");
@@ -369,7 +356,7 @@ TEST_F(ForestScene, SceneMatchesThePlacementListAndRepeats) {
     }
     // The JSON list says the same.
     const nlohmann::json doc =
-        nlohmann::json::parse(read(placements_json_path(dir_ / "forest.glb")));
+        nlohmann::json::parse(test::read_file(placements_json_path(dir_ / "forest.glb")));
     EXPECT_EQ(doc["placements"].size(), rows.size());
     EXPECT_EQ(doc["variants"].size(), 4u);
 
@@ -377,7 +364,7 @@ TEST_F(ForestScene, SceneMatchesThePlacementListAndRepeats) {
     fs::create_directories(dir_ / "again");
     plant_forest(s, dir_ / "again" / "forest.glb");
     for (const char* name : {"forest.glb", "forest.placements.csv", "forest.placements.json"})
-        EXPECT_EQ(read(dir_ / name), read(dir_ / "again" / name)) << name;
+        EXPECT_EQ(test::read_file(dir_ / name), test::read_file(dir_ / "again" / name)) << name;
 }
 
 TEST_F(ForestScene, GpuInstancingCarriesEveryTree) {

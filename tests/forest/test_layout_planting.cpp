@@ -17,6 +17,7 @@
 #include "forest/forest.h"
 #include "forest/ground.h"
 #include "forest/orchard.h"
+#include "tests/helpers.h"
 #include "tree/template_library.h"
 
 namespace {
@@ -24,13 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace sylva;
 using namespace sylva::forest;
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // The checked-in plan, turned 30 degrees (so rows are not axis-aligned) and scaled to meters.
 Ground farm_plan() {
@@ -184,12 +178,13 @@ class LayoutScene : public ::testing::Test {
 TEST_F(LayoutScene, PlacementListsRecordClassesAndRepeat) {
     const ForestSettings s = farm_settings();
     const ForestResult result = plant_forest(s, dir_ / "farm.glb");
-    const nlohmann::json doc = nlohmann::json::parse(read(placements_json_path(dir_ / "farm.glb")));
+    const nlohmann::json doc =
+        nlohmann::json::parse(test::read_file(placements_json_path(dir_ / "farm.glb")));
     ASSERT_EQ(doc["placements"].size(), result.plan.placements.size());
     for (std::size_t i = 0; i < result.plan.placements.size(); ++i)
         EXPECT_EQ(doc["placements"][i]["class"], result.plan.placements[i].cls);
     EXPECT_EQ(doc["species"][1]["class"], "orchard");
-    std::istringstream csv(read(placements_csv_path(dir_ / "farm.glb")));
+    std::istringstream csv(test::read_file(placements_csv_path(dir_ / "farm.glb")));
     std::string line;
     std::getline(csv, line);
     std::size_t rows = 0;
@@ -202,7 +197,7 @@ TEST_F(LayoutScene, PlacementListsRecordClassesAndRepeat) {
 
     plant_forest(s, dir_ / "again" / "farm.glb");
     for (const char* name : {"farm.glb", "farm.placements.csv", "farm.placements.json"})
-        EXPECT_EQ(read(dir_ / name), read(dir_ / "again" / name)) << name;
+        EXPECT_EQ(test::read_file(dir_ / name), test::read_file(dir_ / "again" / name)) << name;
 }
 
 // An orchard spacing of 1e-9 m walked 1e+20 lattice points (sylva forest --layout PLAN

@@ -3,20 +3,16 @@
 // layout in the node's extras), an OBJ chain with its PNGs and .mtl beside it, the sidecar
 // JSON, the same bytes twice, and the CLI's flags.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <tiny_gltf.h>
-#include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/color_variation.h"
 #include "export/export_tree.h"
+#include "tests/helpers.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
@@ -25,19 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_file;
 
-class ImpostorExport : public ::testing::Test {
+class ImpostorExport : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylva_impostor_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // The default template's game tree exported to `name` with `kind`.
     std::vector<fs::path> export_tree(const std::string& name, ImpostorKind kind, bool lod) {
         TreeTemplate t = load_template("default");
@@ -54,8 +41,6 @@ class ImpostorExport : public ::testing::Test {
         options.impostor.size = 256;  // small: the layout, not the look, is tested here
         return write_tree(dir_ / name, tree, finished, t.colors, options);
     }
-
-    fs::path dir_;
 };
 
 TEST_F(ImpostorExport, AGlbCarriesBothFarLevelsWithEmbeddedTextures) {
@@ -104,7 +89,7 @@ TEST_F(ImpostorExport, AGlbCarriesBothFarLevelsWithEmbeddedTextures) {
         EXPECT_EQ(o.Get("albedo").Get("image").Get<std::string>(), "impostor_albedo");
     }
     // The sidecar names the glb's images.
-    const nlohmann::json layout = nlohmann::json::parse(slurp(dir_ / "tree_impostor.json"));
+    const nlohmann::json layout = nlohmann::json::parse(read_file(dir_ / "tree_impostor.json"));
     EXPECT_EQ(layout["format"], "sylva-impostor");
     EXPECT_EQ(layout["octahedral"]["normal"]["image"], "impostor_normal");
     EXPECT_EQ(layout["billboard"]["quads"], 3);
@@ -119,40 +104,28 @@ TEST_F(ImpostorExport, AnObjChainWritesThePngsBesideIt) {
           "tree_impostor.json"})
         EXPECT_TRUE(fs::exists(dir_ / name)) << name;
     EXPECT_FALSE(fs::exists(dir_ / "tree_LOD6.obj"));
-    const std::string mtl = slurp(dir_ / "tree.mtl");
+    const std::string mtl = read_file(dir_ / "tree.mtl");
     EXPECT_NE(mtl.find("newmtl impostor\n"), std::string::npos) << mtl;
     EXPECT_NE(mtl.find("map_Kd tree_impostor_albedo.png"), std::string::npos) << mtl;
     EXPECT_NE(mtl.find("map_d tree_billboard_albedo.png"), std::string::npos) << mtl;
     EXPECT_NE(mtl.find("norm tree_impostor_normal.png"), std::string::npos) << mtl;
-    const std::string lod5 = slurp(dir_ / "tree_LOD5.obj");
+    const std::string lod5 = read_file(dir_ / "tree_LOD5.obj");
     EXPECT_NE(lod5.find("usemtl impostor"), std::string::npos);
     EXPECT_NE(lod5.find("vt "), std::string::npos);
-    const nlohmann::json layout = nlohmann::json::parse(slurp(dir_ / "tree_impostor.json"));
+    const nlohmann::json layout = nlohmann::json::parse(read_file(dir_ / "tree_impostor.json"));
     EXPECT_EQ(layout["octahedral"]["albedo"]["image"], "tree_impostor_albedo.png");
     // A PNG is a PNG.
-    EXPECT_EQ(slurp(dir_ / "tree_impostor_albedo.png").substr(1, 3), "PNG");
+    EXPECT_EQ(read_file(dir_ / "tree_impostor_albedo.png").substr(1, 3), "PNG");
 }
 
 TEST_F(ImpostorExport, TheSameTreeExportsTheSameBytes) {
     export_tree("a.glb", ImpostorKind::Octahedral, true);
     export_tree("b.glb", ImpostorKind::Octahedral, true);
-    EXPECT_EQ(slurp(dir_ / "a.glb"), slurp(dir_ / "b.glb"));
+    EXPECT_EQ(read_file(dir_ / "a.glb"), read_file(dir_ / "b.glb"));
 }
 
-struct CliRun {
-    int code = -1;
-    std::string output;
-};
-
-CliRun sylva(const std::string& args) {
-    const std::string command = std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args + " 2>&1";
-    CliRun r;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+test::CommandResult sylva(const std::string& args) {
+    return test::run_command(std::string(SYLVA_BINARY_DIR) + "/app/sylva " + args);
 }
 
 TEST_F(ImpostorExport, TheCliRefusesPlyAndBadValues) {
@@ -161,7 +134,7 @@ TEST_F(ImpostorExport, TheCliRefusesPlyAndBadValues) {
     EXPECT_EQ(sylva("export --impostor-kind round" + out + ".glb").code, 2);
     EXPECT_EQ(sylva("export --impostor-views 1" + out + ".glb").code, 2);
     EXPECT_EQ(sylva("export --impostor-quads 5" + out + ".glb").code, 2);
-    const CliRun ok =
+    const test::CommandResult ok =
         sylva("export --impostor --impostor-size 128 --impostor-views 4" + out + ".glb");
     EXPECT_EQ(ok.code, 0) << ok.output;
     EXPECT_NE(ok.output.find("LOD1: octahedral impostor, 4 x 4 views of 32 px"), std::string::npos)

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

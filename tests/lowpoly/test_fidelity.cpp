@@ -8,12 +8,12 @@
 #include <stdexcept>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/merge_meshes.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

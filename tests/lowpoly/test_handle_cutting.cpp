@@ -4,10 +4,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "core/mesh_checks.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/handle_cutting.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 
 namespace sylva {
 namespace {

@@ -7,8 +7,8 @@
 #include <glm/trigonometric.hpp>
 #include <numbers>
 
+#include "core/mesh_checks.h"
 #include "lowpoly/prism_tube.h"
-#include "marching/mesh_checks.h"
 #include "quality/self_intersections.h"
 
 namespace sylva {

@@ -9,12 +9,12 @@
 #include <initializer_list>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/decimate.h"
 #include "lowpoly/fidelity.h"
 #include "lowpoly/handle_cutting.h"
 #include "lowpoly/quadric_collapse.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 #include "quality/folds.h"
 #include "quality/self_intersections.h"
 #include "tests/quality/shapes.h"

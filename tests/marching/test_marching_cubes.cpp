@@ -15,10 +15,10 @@
 #include <thread>
 #include <vector>
 
-#include "closed_manifold.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
+#include "tests/helpers.h"
 
 namespace sylva {
 namespace {
@@ -140,7 +140,7 @@ TEST(MarchingCubes, SphereIsClosedAtSeveralResolutions) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         const MeshSettings s = settings(resolution);
         const Mesh mesh = marching_cubes(field, cube(1.0f), s);
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         expect_inside(mesh, cube(1.0f), 0.0f);
         if (resolution >= 3) {
             EXPECT_GT(enclosed_volume(mesh), 0.0);
@@ -187,7 +187,7 @@ TEST(MarchingCubes, EvaluatesEachGridNodeOnce) {
     EXPECT_EQ(run.evaluations, run.grid_nodes);
     // 16 + 4 cells along x, ceil(1.7 / 0.125) + 4 along y, 8 + 4 along z.
     EXPECT_EQ(run.grid_nodes, std::size_t(21 * 19 * 13));
-    expect_closed_manifold(run.mesh);
+    test::expect_closed_manifold(run.mesh);
 }
 
 TEST(MarchingCubes, BatchFieldEvaluatesEachNodeOnceAcrossThreads) {
@@ -207,7 +207,7 @@ TEST(MarchingCubes, BatchFieldEvaluatesEachNodeOnceAcrossThreads) {
         MeshingStats stats;
         s.stats = &stats;
         const Mesh mesh = marching_cubes(field, box, s);
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         const std::size_t evaluated = points.size();
         std::sort(points.begin(), points.end());
         EXPECT_EQ(std::unique(points.begin(), points.end()) - points.begin(),
@@ -229,7 +229,7 @@ TEST(MarchingCubes, ScalarFieldRunsOnTheCallingThread) {
     };
     MeshSettings s = settings(64);
     s.threads = 2;
-    expect_closed_manifold(marching_cubes(field, cube(1.0f), s));
+    test::expect_closed_manifold(marching_cubes(field, cube(1.0f), s));
     EXPECT_EQ(elsewhere, 0u);
 }
 
@@ -267,7 +267,7 @@ TEST(MarchingCubes, NonCubicBoxKeepsCubicCellsAndStaysInsideTheGrid) {
     };
     const MeshSettings s = settings(64);
     const Mesh mesh = marching_cubes(capsule, box, s);
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     expect_inside(mesh, box, 0.0f);
     const double expected = kPi * 4.0 + 4.0 / 3.0 * kPi;
     EXPECT_NEAR(enclosed_volume(mesh), expected, 0.02 * expected);
@@ -285,7 +285,7 @@ TEST(MarchingCubes, TorusIsClosedAtCoarseAndFineResolutions) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         const RecordedRun run = run_recorded(torus, box, settings(resolution));
         ambiguous += run.ambiguous_faces;
-        expect_closed_manifold(run.mesh);
+        test::expect_closed_manifold(run.mesh);
         if (resolution >= 64) {
             const double volume = 2.0 * kPi * kPi * major * minor * minor;
             EXPECT_NEAR(enclosed_volume(run.mesh), volume, 0.03 * volume);
@@ -310,7 +310,7 @@ TEST(MarchingCubes, SpheresTouchingAtASaddleStayClosed) {
                          std::to_string(resolution));
             const RecordedRun run = run_recorded(field, box, settings(resolution));
             ambiguous += run.ambiguous_faces;
-            expect_closed_manifold(run.mesh);
+            test::expect_closed_manifold(run.mesh);
             EXPECT_GT(enclosed_volume(run.mesh), 0.0);
         }
     }
@@ -328,7 +328,7 @@ TEST(MarchingCubes, GyroidWithManyAmbiguousFacesIsClosed) {
         };
         const RecordedRun run = run_recorded(gyroid, cube(1.0f), settings(24));
         EXPECT_GT(run.ambiguous_faces, 20u);
-        expect_closed_manifold(run.mesh);
+        test::expect_closed_manifold(run.mesh);
         EXPECT_GT(enclosed_volume(run.mesh), 0.0);
     }
 }
@@ -347,7 +347,7 @@ TEST(MarchingCubes, CloudOfSmallRandomSpheresIsClosed) {
     };
     const RecordedRun run = run_recorded(cloud, cube(1.1f), settings(22));
     EXPECT_GT(run.ambiguous_faces, 0u);
-    expect_closed_manifold(run.mesh);
+    test::expect_closed_manifold(run.mesh);
     EXPECT_GT(run.mesh.triangles.size(), 0u);
 }
 
@@ -368,7 +368,7 @@ TEST(MarchingCubes, IntegerNoiseWithExactTiesIsClosed) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         const RecordedRun run = run_recorded(noise, cube(1.0f), settings(resolution, 1));
         EXPECT_GT(run.ambiguous_faces, 0u);
-        expect_closed_manifold(run.mesh);
+        test::expect_closed_manifold(run.mesh);
         expect_inside_grid(run.mesh, cube(1.0f), settings(resolution, 1));
     }
 }
@@ -390,7 +390,7 @@ TEST(MarchingCubes, RandomNodeValuesExerciseEveryCaseAndStayClosed) {
         };
         const Box box{glm::vec3(0.0f), glm::vec3(24.0f)};
         const Mesh mesh = marching_cubes(noise, box, settings(24, 0));
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         EXPECT_GT(enclosed_volume(mesh), 0.0);
         // Vertices off every grid line are the centres of loops that could not be fanned.
         std::size_t centres = 0;
@@ -412,7 +412,7 @@ TEST(MarchingCubes, SineNoiseAtManyScalesIsClosed) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         const Box box{glm::vec3(-1.0f, -0.6f, -0.9f), glm::vec3(1.3f, 0.8f, 0.7f)};
         const Mesh mesh = marching_cubes(sines, box, settings(resolution, 0));
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         expect_inside_grid(mesh, box, settings(resolution, 0));
     }
 }
@@ -441,7 +441,7 @@ TEST(MarchingCubes, NonFiniteRegionCutsTheSurfaceButKeepsItClosed) {
         return glm::length(p) - 1.0f;
     };
     const Mesh mesh = marching_cubes(field, cube(1.0f), settings(32));
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     float max_x = -1.0f;
     for (const auto& p : mesh.positions) max_x = std::max(max_x, p.x);
     EXPECT_LT(max_x, 0.3f + 1.0f / 16.0f + 1e-5f);
@@ -452,7 +452,7 @@ TEST(MarchingCubes, FieldStillNegativeAtTheBorderIsCappedHalfACellInside) {
     // cell, with its edges and corners chamfered where the border cells cut them.
     const MeshSettings s = settings(16, 2);
     const Mesh mesh = marching_cubes([](const glm::vec3&) { return -1.0f; }, cube(1.0f), s);
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     const double h = 2.0 / 16.0;
     const double l = 2.0 + 2.0 * 2.0 * h - 2.0 * h;
     const double r = 0.5 * h;
@@ -471,7 +471,7 @@ TEST(MarchingCubes, SphereBiggerThanTheBoxIsClippedAndClosed) {
         SCOPED_TRACE("padding " + std::to_string(padding));
         const MeshSettings s = settings(24, padding);
         const Mesh mesh = marching_cubes(sphere(glm::vec3(0.0f), 1.5f), box, s);
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         expect_inside_grid(mesh, box, s);
         const double volume = enclosed_volume(mesh);
         EXPECT_GT(volume, 0.0);
@@ -487,7 +487,7 @@ TEST(MarchingCubes, HollowSolidHasInwardFacingInnerWall) {
     const MeshSettings s = settings(48, 2);
     const ScalarField hole = [](const glm::vec3& p) { return 0.7f - glm::length(p); };
     const Mesh mesh = marching_cubes(hole, cube(1.0f), s);
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     const double h = 2.0 / 48.0;
     const double side = 2.0 + 4.0 * h - h;
     const double expected = side * side * side - 4.0 / 3.0 * kPi * 0.7 * 0.7 * 0.7;
@@ -497,7 +497,7 @@ TEST(MarchingCubes, HollowSolidHasInwardFacingInnerWall) {
 TEST(MarchingCubes, FlatBoxStillGetsPaddingCells) {
     const Box box{glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(1.0f, 1.0f, 0.0f)};
     const Mesh mesh = marching_cubes(sphere(glm::vec3(0.0f), 0.2f), box, settings(20, 3));
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     EXPECT_FALSE(mesh.triangles.empty());
 }
 

@@ -19,12 +19,12 @@
 #include <string>
 #include <vector>
 
-#include "closed_manifold.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 #include "sdf/capped_cone.h"
+#include "tests/helpers.h"
 
 namespace sylva {
 namespace {
@@ -196,7 +196,7 @@ TEST(SparseMarchingCubes, EqualsDenseWhereTheFieldIsInsideAtTheBorder) {
                                              cube(1.0f), settings(70));
     expect_same_mesh(solid, marching_cubes(batch([](const glm::vec3&) { return -1.0f; }),
                                            cube(1.0f), settings(70)));
-    expect_closed_manifold(solid);
+    test::expect_closed_manifold(solid);
 }
 
 TEST(SparseMarchingCubes, IsClosedAtManyResolutions) {
@@ -207,7 +207,7 @@ TEST(SparseMarchingCubes, IsClosedAtManyResolutions) {
         const float h = 2.0f / float(resolution);
 
         const Mesh ball = sparse_marching_cubes(sphere(glm::vec3(0.1f), 0.9f), cube(1.0f), s);
-        expect_closed_manifold(ball);
+        test::expect_closed_manifold(ball);
         expect_inside_grid(ball, cube(1.0f), s);
         if (resolution >= 40) {
             const double volume = 4.0 / 3.0 * 3.14159265358979 * 0.9 * 0.9 * 0.9;
@@ -215,11 +215,11 @@ TEST(SparseMarchingCubes, IsClosedAtManyResolutions) {
         }
 
         const Mesh ring = sparse_marching_cubes(torus(0.7f, 0.12f), torus_box, s);
-        expect_closed_manifold(ring);
+        test::expect_closed_manifold(ring);
         expect_inside_grid(ring, torus_box, s);
 
         const Mesh branches = sparse_marching_cubes(cone_cloud(11u, 60, 8.0f * h), cube(1.0f), s);
-        expect_closed_manifold(branches);
+        test::expect_closed_manifold(branches);
         expect_inside_grid(branches, cube(1.0f), s);
         EXPECT_FALSE(branches.triangles.empty());
     }

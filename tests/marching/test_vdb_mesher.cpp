@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "closed_manifold.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
 #include "marching/marching_cubes.h"
-#include "marching/mesh_checks.h"
 #include "marching/vdb_mesher.h"
+#include "tests/helpers.h"
 
 namespace sylva {
 namespace {
@@ -81,7 +81,7 @@ TEST(VdbMesher, SphereIsClosedOutwardManifold) {
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         const Mesh mesh = vdb_mesh(batch(sphere({}, 1.0f)), cube(1.0f), settings(resolution));
         ASSERT_FALSE(mesh.triangles.empty());
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         // Counter-clockwise seen from outside: the divergence theorem gives a positive volume.
         EXPECT_GT(enclosed_volume(mesh), 0.0);
     }
@@ -122,7 +122,7 @@ TEST(VdbMesher, AdaptivityGivesFewerTrianglesAndStaysClosed) {
     const Mesh uniform = vdb_mesh(field, cube(1.0f), settings(64));
     const Mesh merged = vdb_mesh(field, cube(1.0f), adaptive(settings(64), 0.5));
     EXPECT_LT(merged.triangles.size(), uniform.triangles.size() / 10);
-    expect_closed_manifold(merged);
+    test::expect_closed_manifold(merged);
     EXPECT_NEAR(enclosed_volume(merged), 4.0 / 3.0 * kPi, 0.05 * 4.0 / 3.0 * kPi);
 }
 
@@ -131,11 +131,11 @@ TEST(VdbMesher, TorusIsClosedWithItsVolume) {
     const Box box{{-1.0f, -1.0f, -0.3f}, {1.0f, 1.0f, 0.3f}};
     const double volume = 2.0 * kPi * kPi * major * minor * minor;
     const Mesh uniform = vdb_mesh(batch(torus(major, minor)), box, settings(100));
-    expect_closed_manifold(uniform);
+    test::expect_closed_manifold(uniform);
     EXPECT_NEAR(enclosed_volume(uniform), volume, 0.03 * volume);
 
     const Mesh merged = vdb_mesh(batch(torus(major, minor)), box, adaptive(settings(100), 0.5));
-    expect_closed_manifold(merged);
+    test::expect_closed_manifold(merged);
     EXPECT_LT(merged.triangles.size(), uniform.triangles.size() / 10);
     // The tube is 12 cells across: merged cells cut 8% of its volume.
     EXPECT_NEAR(enclosed_volume(merged), volume, 0.12 * volume);
@@ -148,12 +148,12 @@ TEST(VdbMesher, UnionOfSpheresIsClosedAndAgreesWithMarchingCubes) {
     const Box box{{-1.2f, -0.7f, -0.7f}, {1.2f, 0.7f, 1.0f}};
     const Mesh mc = marching_cubes(field, box, settings(80));
     const Mesh vdb = vdb_mesh(batch(field), box, settings(80));
-    expect_closed_manifold(vdb);
+    test::expect_closed_manifold(vdb);
     EXPECT_NEAR(enclosed_volume(vdb), enclosed_volume(mc), 0.02 * enclosed_volume(mc));
     EXPECT_NEAR(surface_area(vdb), surface_area(mc), 0.02 * surface_area(mc));
 
     const Mesh merged = vdb_mesh(batch(field), box, adaptive(settings(80), 0.5));
-    expect_closed_manifold(merged);
+    test::expect_closed_manifold(merged);
     EXPECT_LT(merged.triangles.size(), vdb.triangles.size());
     EXPECT_NEAR(enclosed_volume(merged), enclosed_volume(mc), 0.12 * enclosed_volume(mc));
 }
@@ -168,11 +168,11 @@ TEST(VdbMesher, SamplesAtZeroGiveNoDegenerateTriangles) {
     // A speck around one node, far from a large sphere: a tiny closed component.
     const Mesh speck =
         vdb_mesh(batch(unite(sphere({0.3f, 0.3f, 0.3f}, 0.5f), sphere(node, 1e-6f))), box, s);
-    expect_closed_manifold(speck);
+    test::expect_closed_manifold(speck);
     // A sphere through whole rows of nodes: exact zeros all over its surface.
     const glm::vec3 centre(grid.node(50, 50, 50));
     const Mesh through = vdb_mesh(batch(sphere(centre, float(40 * grid.h))), box, s);
-    expect_closed_manifold(through);
+    test::expect_closed_manifold(through);
 }
 
 // Two spheres whose gap is below a cell: the sign pattern has ambiguous faces and cubes.
@@ -184,7 +184,7 @@ TEST(VdbMesher, NearlyTouchingSpheresStayManifold) {
             unite(sphere({-r - gap / 2, 0.0f, 0.0f}, r), sphere({r + gap / 2, 0.013f, 0.007f}, r));
         const Mesh mesh =
             vdb_mesh(batch(field), {{-1.1f, -0.6f, -0.6f}, {1.1f, 0.6f, 0.6f}}, settings(40));
-        expect_closed_manifold(mesh);
+        test::expect_closed_manifold(mesh);
         EXPECT_GT(enclosed_volume(mesh), 0.0);
     }
 }
@@ -195,14 +195,14 @@ TEST(VdbMesher, ClippedFieldIsCappedAtTheGridBorder) {
         std::fill(values.begin(), values.end(), -1.0f);
     };
     const Mesh all_inside = vdb_mesh(negative, cube(1.0f), settings(20));
-    expect_closed_manifold(all_inside);
+    test::expect_closed_manifold(all_inside);
     EXPECT_GT(enclosed_volume(all_inside), 0.0);
 
     // A sphere larger than the grid: clipped on every side, still closed.
     const Box box = cube(1.0f);
     const auto s = settings(30, 1);
     const Mesh clipped = vdb_mesh(batch(sphere({}, 1.4f)), box, s);
-    expect_closed_manifold(clipped);
+    test::expect_closed_manifold(clipped);
     const Grid grid = make_grid(box, s);
     for (const auto& p : clipped.positions) {
         for (int a = 0; a < 3; ++a) {
@@ -218,7 +218,7 @@ TEST(VdbMesher, NonFiniteSamplesCountAsOutside) {
         return p.x > 0.5f ? std::numeric_limits<float>::quiet_NaN() : base(p);
     };
     const Mesh mesh = vdb_mesh(batch(field), cube(1.0f), settings(40));
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     for (const auto& p : mesh.positions) EXPECT_LT(p.x, 0.6f);
 }
 
@@ -239,7 +239,7 @@ TEST(VdbMesher, SkipsBlocksFarFromTheSurfaceAndCountsEvaluations) {
     auto s = settings(150);
     s.stats = &stats;
     const Mesh mesh = vdb_mesh(counted, cube(1.0f), s);
-    expect_closed_manifold(mesh);
+    test::expect_closed_manifold(mesh);
     EXPECT_EQ(stats.evaluations, calls.load());
     EXPECT_GT(stats.blocks_meshed, 0u);
     EXPECT_LT(stats.blocks_meshed, stats.blocks_total);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "quality/self_intersections.h"
 #include "tree/branch_prisms.h"
 #include "tree/pipeline.h"

@@ -4,12 +4,14 @@
 
 #include <string>
 
+#include "colonization/colonization_params.h"
 #include "core/errors.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -17,7 +19,7 @@ namespace {
 TreeTemplate grammar(const std::string& text, int generations) {
     TreeTemplate t = default_template();
     t.grammar = text;
-    t.params.generations = generations;
+    t.params.blocks.edit<LSystemParams>().generations = generations;
     return t;
 }
 
@@ -92,8 +94,8 @@ TEST(Cost, CountsOfOneAreSingular) {
 // Resolutions of 1500 and more take gigabytes and minutes: over the default limits.
 TEST(Cost, HighResolutionsAreOverTheDefaultLimits) {
     TreeTemplate t = default_template();
-    t.params.drop_hidden = 0;  // a trunk meshed at its own resolution, not for the budget
-    t.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+    t.params.drop_hidden = false;  // a trunk meshed at its own resolution, not for the budget
+    t.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     for (int resolution : {1500, 2000}) {
         t.params.trunk_resolution = resolution;
         const Cost cost = estimate_cost(t, 800);
@@ -122,7 +124,7 @@ TEST(Cost, EveryBuiltInTemplateIsWithinTheDefaultLimits) {
 // the branches the crown hides are left out (drop_hidden, the template's own setting).
 TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     TreeTemplate t = load_template("ternary");
-    t.params.branch_style = static_cast<int>(BranchStyle::Surface);
+    t.params.branch_style = BranchStyle::Surface;
     MeshOptions options;
     options.budget = 800;
     const Tree usual = generate_tree(t, options);
@@ -133,13 +135,13 @@ TEST(Cost, TheReductionIsEstimatedFromTheMeshesHandles) {
     EXPECT_TRUE(within(usual_cost, one_second)) << cost_text(usual_cost);
     EXPECT_EQ(estimate_reduction_cost(usual, 0).seconds, 0.0);
 
-    t.params.generations = 8;
-    ASSERT_NE(t.params.drop_hidden, 0);
+    t.params.blocks.edit<LSystemParams>().generations = 8;
+    ASSERT_TRUE(t.params.drop_hidden);
     const Tree hidden = generate_tree(t, options);
     const Cost hidden_cost = estimate_reduction_cost(hidden, 800);
     EXPECT_TRUE(within(hidden_cost, one_second)) << cost_text(hidden_cost);
 
-    t.params.drop_hidden = 0;
+    t.params.drop_hidden = false;
     // A finer trunk grid than the template's 80 cells (which bind only above 1,422
     // triangles with drop_hidden): more handles.
     t.params.trunk_resolution = 96;
@@ -184,8 +186,9 @@ TEST(Cost, ColonizationIsEstimatedFromItsPointsAndNodes) {
     TreeTemplate t = load_template("elm");
     const Cost usual = estimate_cost(t, 800);
     EXPECT_LT(usual.seconds, 1.0) << cost_text(usual);
-    t.params.attraction_points = 1'000'000;
-    t.params.kill_distance = 0.001;
+    ColonizationParams& colonization = t.params.blocks.edit<ColonizationParams>();
+    colonization.attraction_points = 1'000'000;
+    colonization.kill_distance = 0.001;
     const Cost cost = estimate_cost(t, 800);
     EXPECT_GT(cost.seconds, 10.0) << cost_text(cost);
     EXPECT_GT(cost.segments, 1000.0) << cost_text(cost);
@@ -202,8 +205,9 @@ TEST(Cost, ColonizationIsEstimatedFromItsPointsAndNodes) {
 // soon after passing them and says which and how to raise them.
 TEST(Cost, AGrowthStopsAtItsLimitsWhateverTheEstimateSaid) {
     TreeTemplate t = load_template("elm");
-    t.params.attraction_points = 5000;
-    t.params.kill_distance = 0.01;
+    ColonizationParams& colonization = t.params.blocks.edit<ColonizationParams>();
+    colonization.attraction_points = 5000;
+    colonization.kill_distance = 0.01;
     GrowthContext context;
     context.limits = growth_limits({2e9, 0.01}, "raise --max-seconds");
     try {

@@ -15,10 +15,11 @@
 #include <vector>
 
 #include "core/disjoint_sets.h"
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "tree/crown_hulls.h"
 #include "tree/crown_merge.h"
 #include "tree/lowpoly_tree.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 

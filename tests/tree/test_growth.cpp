@@ -5,6 +5,7 @@
 #include <atomic>
 #include <string>
 
+#include "colonization/colonization_params.h"
 #include "core/cancel.h"
 #include "core/errors.h"
 #include "tree/growth.h"
@@ -51,7 +52,8 @@ TEST(Growth, ColonizationTemplatesNeedNoGrammarAndGrowOneTree) {
     // Seeded: the same template grows the same skeleton.
     EXPECT_EQ(grow(t, {}).segments.back().b, s.segments.back().b);
     TreeTemplate bad = t;
-    bad.params.kill_distance = bad.params.influence_radius + 1.0;
+    bad.params.blocks.edit<ColonizationParams>().kill_distance =
+        colonization_params(bad.params).influence_radius + 1.0;
     EXPECT_THROW(grow(bad, {}), InputError);
 }
 

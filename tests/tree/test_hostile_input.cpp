@@ -5,12 +5,13 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/inner_shells.h"
-#include "marching/mesh_checks.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/pipeline.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -108,7 +109,7 @@ TEST(HostileBudget, AVeryFineTrunkGridStillReduces) {
 TEST(HostileGrammar, NearCoincidentCopiesGiveOneClosedTree) {
     TreeTemplate t = default_template();
     t.grammar = "axiom: !(0.1)F\nF -> [+(0.01)F][-(0.01)F][&(0.01)F][^(0.01)F]\n";
-    t.params.generations = 6;
+    t.params.blocks.edit<LSystemParams>().generations = 6;
     MeshOptions options;
     options.budget = 800;
     const Tree tree = generate_tree(t, options);

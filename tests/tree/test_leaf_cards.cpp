@@ -19,7 +19,7 @@ namespace {
 
 Tree game_tree(const std::string& name, std::size_t budget, LeafStyle style = LeafStyle::Cards) {
     TreeTemplate t = load_template(name);
-    t.params.leaf_style = static_cast<int>(style);
+    t.params.leaf_style = style;
     MeshOptions options;
     options.budget = budget;
     return generate_tree(t, options);

@@ -11,8 +11,8 @@
 #include <numbers>
 #include <set>
 
+#include "core/mesh_checks.h"
 #include "core/random.h"
-#include "marching/mesh_checks.h"
 #include "tree/growth.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
@@ -182,14 +182,14 @@ TEST(Leaves, EveryShapeAndTheCapHold) {
 
 TEST(Leaves, LeavesOnlyModeAndPaskoCrown) {
     TreeTemplate t = load_template("seed_spruce");
-    t.params.crown_mesh = 0;
+    t.params.crown_mesh = false;
     t.params.leaf_density = 500;
     Tree leaves_only = generate_tree(t);
     EXPECT_TRUE(leaves_only.crown.triangles.empty());
     EXPECT_GT(leaves_only.leaves.triangles.size(), 0u);
 
-    t.params.crown_mesh = 1;
-    t.params.crown_blend = static_cast<int>(CrownBlend::Pasko);
+    t.params.crown_mesh = true;
+    t.params.crown_blend = CrownBlend::Pasko;
     t.params.crown_fusion = 0.05;
     Tree pasko = generate_tree(t);
     EXPECT_GT(pasko.crown.triangles.size(), 0u);

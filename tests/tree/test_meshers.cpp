@@ -8,8 +8,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/mesh_checks.h"
 #include "marching/grid.h"
-#include "marching/mesh_checks.h"
 #include "marching/mesher.h"
 #include "tree/growth.h"
 #include "tree/pipeline.h"

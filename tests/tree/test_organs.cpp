@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/errors.h"
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "tree/organ_surfaces.h"
 #include "tree/organs.h"
 #include "tree/pipeline.h"
@@ -95,7 +95,7 @@ TEST(Organs, SurfacesTakeTheTurtlesFrameFruitHangs) {
 
 TEST(Organs, PolygonsJoinWithTheirColourWhenAskedAndUnknownSurfacesFail) {
     TreeParams params;
-    params.polygon_part = static_cast<int>(PolygonPart::Organs);
+    params.polygon_part = PolygonPart::Organs;
     const OrganMesh organs = tree_organs(skeleton_with_organs(), params);
     ASSERT_EQ(organs.organs(), 3u);
     EXPECT_EQ(organs.polygon, (std::vector<std::uint8_t>{0, 0, 1}));
@@ -133,7 +133,7 @@ OrganMesh many_organs() {
         s.polygon_colors.push_back(i);
     }
     TreeParams params;
-    params.polygon_part = static_cast<int>(PolygonPart::Organs);
+    params.polygon_part = PolygonPart::Organs;
     return tree_organs(s, params);
 }
 

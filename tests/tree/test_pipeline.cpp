@@ -14,10 +14,12 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/mesh_checks.h"
 #include "export/obj_writer.h"
-#include "marching/mesh_checks.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
+#include "turtle/lsystem_params.h"
 
 namespace sylva {
 namespace {
@@ -135,12 +137,12 @@ TEST(Pipeline, TheMeshHugsTheSkeleton) {
 // triangles for the reduction). Checked to fail when branches under 1.5 cells are dropped.
 TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
     TreeTemplate willow = load_template("willow");
-    ASSERT_EQ(willow.params.drop_hidden, 1);
-    willow.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+    ASSERT_TRUE(willow.params.drop_hidden);
+    willow.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree kept = generate_tree(willow, game);
-    willow.params.drop_hidden = 0;
+    willow.params.drop_hidden = false;
     const Tree full = generate_tree(willow, game);
     EXPECT_GT(kept.hidden_segments, 0u);
     EXPECT_LT(kept.trunk.triangles.size(), 0.85 * full.trunk.triangles.size());
@@ -176,7 +178,7 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
 // parent. Checked to fail when a group's segments are left out (its branches are lost).
 TEST(Pipeline, AGameMeshTrunkComesInPiecesWithTheSameSurface) {
     TreeTemplate bush = load_template("bush");
-    bush.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+    bush.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
     MeshOptions game;
     game.budget = 800;
     const Tree pieces = generate_tree(bush, game);
@@ -227,10 +229,10 @@ TEST(Pipeline, SameInputsGiveTheSameBytes) {
 
 TEST(Pipeline, ParametersChangeTheTree) {
     TreeTemplate t = default_template();
-    t.params.generations = 3;
+    t.params.blocks.edit<LSystemParams>().generations = 3;
     t.params.trunk_resolution = 32;
     Tree small = generate_tree(t);
-    t.params.generations = 4;
+    t.params.blocks.edit<LSystemParams>().generations = 4;
     Tree bigger = generate_tree(t);
     EXPECT_GT(bigger.skeleton.segments.size(), small.skeleton.segments.size());
 }
@@ -257,7 +259,7 @@ TEST(Params, BadValuesAreRejectedNamingKeyAndRange) {
     EXPECT_THROW(set_param(p, "generations", "2.5"), InputError);
     EXPECT_THROW(set_param(p, "no_such_key", "1"), InputError);
     set_param(p, "trunk_taper", "0.5");
-    EXPECT_EQ(p.trunk_taper, 0.5);
+    EXPECT_EQ(lsystem_params(p).trunk_taper, 0.5);
     EXPECT_EQ(*get_param(p, "trunk_taper"), 0.5);
 }
 

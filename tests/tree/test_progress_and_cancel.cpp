@@ -22,6 +22,7 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "turtle/derivation.h"
+#include "turtle/lsystem_params.h"
 #include "turtle/lsystem_parser.h"
 
 namespace sylva {
@@ -78,7 +79,7 @@ TEST(GrowthProgress, EveryGrowthMethodRisesToOne) {
 
 TEST(GrowthProgress, ThePipelineHandsItOn) {
     TreeTemplate t = load_template("ternary");
-    t.params.generations = 5;
+    t.params.blocks.edit<LSystemParams>().generations = 5;
     std::vector<float> fractions;
     MeshOptions options;
     options.growth_progress = [&](float f) { fractions.push_back(f); };
@@ -97,7 +98,7 @@ TEST(MeshingProgress, RisesToOneWhileTrunkPiecesAndCrownAreMeshedBesideEachOther
         options.budget = budget;
         options.progress = [&](float f) { fractions.push_back(f); };
         TreeTemplate t = load_template("ternary");
-        if (budget == 3000) t.params.branch_style = static_cast<int>(BranchStyle::Surface);
+        if (budget == 3000) t.params.branch_style = BranchStyle::Surface;
         const Tree tree = generate_tree(t, options);
         ASSERT_FALSE(tree.crown.triangles.empty());
         SCOPED_TRACE(budget);
@@ -137,8 +138,8 @@ double seconds_to_cancel(const std::function<void(CancelFlag)>& work) {
 const Tree& crossing_tree() {
     static const Tree tree = [] {
         TreeTemplate t = load_template("ternary");
-        t.params.generations = 7;
-        t.params.branch_style = static_cast<int>(BranchStyle::Surface);  // meshed, not drawn
+        t.params.blocks.edit<LSystemParams>().generations = 7;
+        t.params.branch_style = BranchStyle::Surface;  // meshed, not drawn
         MeshOptions options;
         options.budget = 800;
         return generate_tree(t, options);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "tree/parameters.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 

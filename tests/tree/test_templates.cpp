@@ -6,8 +6,9 @@
 #include <map>
 #include <set>
 
-#include "marching/mesh_checks.h"
+#include "core/mesh_checks.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 

@@ -12,6 +12,7 @@
 #include "derive_text.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_growth.h"
+#include "turtle/lsystem_params.h"
 #include "turtle/lsystem_parser.h"
 #include "turtle/turtle.h"
 
@@ -98,9 +99,9 @@ TEST(Organs, AWordWithoutTildeDrawsNothing) {
 
 TEST(Tropism, TheVectorIsATemplateParameterAndZeroMeansDown) {
     TreeTemplate tree;
-    tree.params.tropism = 0.3;
+    tree.params.blocks.edit<LSystemParams>().tropism = 0.3;
     EXPECT_EQ(turtle_settings(tree).tropism, glm::dvec3(0, -1, 0));
-    tree.params.tropism_vector_x = 1.0;
+    tree.params.tropism_vector.x = 1.0;
     EXPECT_EQ(turtle_settings(tree).tropism, glm::dvec3(1, 0, 0));
     // Bent towards +x: a vertical stem leans to +x.
     TurtleSettings settings = turtle_settings(tree);

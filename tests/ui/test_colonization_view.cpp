@@ -13,8 +13,8 @@
 #include "colonization/colonization_growth.h"
 #include "tree/growth.h"
 #include "tree/template_library.h"
-#include "ui/colonization_view.h"
-#include "ui/studio_state.h"
+#include "ui/state/colonization_view.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -90,28 +90,28 @@ TEST(ColonizationView, EnvelopeWireLiesOnTheBoundary) {
 TEST(ColonizationView, TemplateEnvelopeWireFollowsItsParameters) {
     TreeTemplate elm = load_template("elm");
     const std::vector<glm::vec3> wire = template_envelope_wire(elm);
-    const Envelope e = template_envelope(elm.params);
+    const Envelope e = template_envelope(colonization_params(elm.params));
     const glm::vec3 c = centre(e);
     for (const glm::vec3& p : wire) EXPECT_TRUE(inside(e, c + 0.999f * (p - c)));
-    elm.params.envelope_size_x *= 2.0;
+    elm.params.blocks.edit<ColonizationParams>().envelope_size.x *= 2.0;
     EXPECT_NE(template_envelope_wire(elm), wire);
 }
 
 // The skeleton colonization_growth makes from `points`: its own steps after placement.
 Skeleton grow_from(const std::vector<glm::vec3>& points, const TreeParams& p) {
     ColonizationGraph graph = colonize(points, glm::vec3(0.0f), colonization_settings(p));
-    draw_successors_together(graph, static_cast<float>(p.angle_smoothing));
-    reduce_curves(graph, static_cast<float>(p.curve_reduction));
+    draw_successors_together(graph, static_cast<float>(colonization_params(p).angle_smoothing));
+    reduce_curves(graph, static_cast<float>(colonization_params(p).curve_reduction));
     return to_skeleton(graph, static_cast<float>(0.5 * p.tip_width),
                        static_cast<float>(p.pipe_exponent));
 }
 
 TEST(ColonizationView, PointsShownAreTheGrowthsPoints) {
     TreeTemplate elm = load_template("elm");
-    elm.params.attraction_points = 500;  // small and quick
+    elm.params.blocks.edit<ColonizationParams>().attraction_points = 500;  // small and quick
     const std::vector<glm::vec3> shown = template_attraction_points(elm);
     ASSERT_EQ(shown.size(), 500u);
-    const Envelope e = template_envelope(elm.params);
+    const Envelope e = template_envelope(colonization_params(elm.params));
     for (const glm::vec3& p : shown) EXPECT_TRUE(inside(e, p));
     // Grown from the points shown, the tree is the growth method's own, point for point.
     const Skeleton expected = grow(elm);

@@ -1,4 +1,4 @@
-// The forest preview's planting (ui/forest_preview_plan.h): the square the studio shows is
+// The forest preview's planting (ui/state/forest_preview_plan.h): the square the studio shows is
 // planted inside its bounds, with K variants of the edited template, the same for a seed.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 
 #include "core/cancel.h"
 #include "tree/template_library.h"
-#include "ui/forest_preview_plan.h"
-#include "ui/studio_options.h"
+#include "ui/state/forest_preview_plan.h"
+#include "ui/state/studio_options.h"
 
 namespace sylva::studio {
 namespace {

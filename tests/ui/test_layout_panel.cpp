@@ -8,28 +8,13 @@
 #include <chrono>
 #include <thread>
 
-#include "ui/forest_preview_plan.h"
+#include "tests/ui/headless_imgui.h"
 #include "ui/layout_panel.h"
 #include "ui/panels.h"
+#include "ui/state/forest_preview_plan.h"
 
 namespace sylva::studio {
 namespace {
-
-struct HeadlessImGui {
-    HeadlessImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280.0f, 800.0f);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    }
-    ~HeadlessImGui() { ImGui::DestroyContext(); }
-    HeadlessImGui(const HeadlessImGui&) = delete;
-    HeadlessImGui& operator=(const HeadlessImGui&) = delete;
-};
 
 TEST(LayoutPanel, GrowsOnAWorkerAndPlantsAVariation) {
     HeadlessImGui imgui;

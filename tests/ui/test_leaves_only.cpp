@@ -5,9 +5,11 @@
 
 #include <string>
 
+#include "tree/parameters.h"
 #include "tree/template_library.h"
-#include "ui/leaves_only.h"
-#include "ui/studio_state.h"
+#include "turtle/lsystem_params.h"
+#include "ui/state/leaves_only.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -30,7 +32,8 @@ TEST(LeavesOnly, OnlyLeafParametersMakeALeafEdit) {
     TreeTemplate edit = oak;
     edit.params.leaf_density *= 2.0;
     edit.params.leaf_size *= 1.5;
-    edit.params.leaf_shape = (oak.params.leaf_shape + 1) % 4;
+    edit.params.leaf_shape =
+        static_cast<LeafShape>((static_cast<int>(oak.params.leaf_shape) + 1) % 4);
     edit.colors.leaves = {1.0f, 0.0f, 0.0f};
     EXPECT_TRUE(leaves_only_edit(oak, edit));
     EXPECT_TRUE(leaves_only_edit(oak, oak));
@@ -49,15 +52,17 @@ TEST(LeavesOnly, OnlyLeafParametersMakeALeafEdit) {
 
 TEST(LeavesOnly, NewLeavesAreThePipelinesOwn) {
     for (const char* name : {"oak", "willow", "elm", "bush"}) {
-        for (const int crown_mesh : {1, 0}) {
+        for (const bool crown_mesh : {true, false}) {
             TreeTemplate before = coarse(name);
             before.params.crown_mesh = crown_mesh;
-            if (std::string(name) == "willow") before.params.generations = 7;
+            if (std::string(name) == "willow")
+                before.params.blocks.edit<LSystemParams>().generations = 7;
             const Tree shown = generate_tree(before, options_for(before));
             TreeTemplate edit = before;
             edit.params.leaf_density = before.params.leaf_density * 1.7 + 10.0;
             edit.params.leaf_size *= 0.8;
-            edit.params.leaf_shape = (before.params.leaf_shape + 1) % 4;
+            edit.params.leaf_shape =
+                static_cast<LeafShape>((static_cast<int>(before.params.leaf_shape) + 1) % 4);
             ASSERT_TRUE(leaves_only_edit(before, edit));
             const std::optional<Tree> quick = with_new_leaves(shown, edit);
             ASSERT_TRUE(quick) << name;

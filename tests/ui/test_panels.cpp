@@ -10,11 +10,12 @@
 #include <chrono>
 #include <thread>
 
+#include "tests/ui/headless_imgui.h"
 #include "tests/ui/wait_for_generations.h"
 #include "tree/template_file.h"
 #include "ui/panels.h"
 #include "ui/rules_editor.h"
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -28,22 +29,6 @@ F -> FF
 [params]
 generations = 14
 )";
-
-struct HeadlessImGui {
-    HeadlessImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280.0f, 800.0f);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    }
-    ~HeadlessImGui() { ImGui::DestroyContext(); }
-    HeadlessImGui(const HeadlessImGui&) = delete;
-    HeadlessImGui& operator=(const HeadlessImGui&) = delete;
-};
 
 // One studio frame, the panels in main.cpp's order. Returns whether the cost dialog is open.
 bool frame(StudioState& state, RulesEditorState& editor) {

@@ -9,8 +9,9 @@
 #include <thread>
 
 #include "tree/template_library.h"
-#include "ui/release_bench.h"
-#include "ui/studio_options.h"
+#include "turtle/lsystem_params.h"
+#include "ui/state/release_bench.h"
+#include "ui/state/studio_options.h"
 
 namespace sylva::studio {
 namespace {
@@ -38,7 +39,7 @@ TEST(ReleaseBench, DragsHoldsLetsGoAndWaitsForTheGameMeshOfTheLastValue) {
     state.tree_template = state.committed = load_template("default");
     state.tree_template.params.trunk_resolution = 24;
     state.tree_template.params.crown_resolution = 16;
-    state.tree_template.params.generations = 3;
+    state.tree_template.params.blocks.edit<LSystemParams>().generations = 3;
     state.tree_template.params.triangle_budget = 300;
     state.view.low_poly = true;
     ReleaseBench bench = parse_release_bench("tropism=0.3");
@@ -56,7 +57,8 @@ TEST(ReleaseBench, DragsHoldsLetsGoAndWaitsForTheGameMeshOfTheLastValue) {
     std::vector<double> held_values;
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (!frame() && std::chrono::steady_clock::now() < end) {
-        if (state.dragging) held_values.push_back(state.tree_template.params.tropism);
+        if (state.dragging)
+            held_values.push_back(lsystem_params(state.tree_template.params).tropism);
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     ASSERT_EQ(bench.phase, ReleaseBench::Done);
@@ -67,7 +69,7 @@ TEST(ReleaseBench, DragsHoldsLetsGoAndWaitsForTheGameMeshOfTheLastValue) {
     EXPECT_FALSE(state.dragging);
     ASSERT_TRUE(state.tree && state.tree->reduced());
     EXPECT_FALSE(state.tree->draft);
-    EXPECT_EQ(state.shown_template.params.tropism, 0.3);
+    EXPECT_EQ(lsystem_params(state.shown_template.params).tropism, 0.3);
     EXPECT_GE(bench.release_ms, 0.0);
     EXPECT_NE(release_bench_report(bench, state).find("release -> game mesh on screen"),
               std::string::npos);

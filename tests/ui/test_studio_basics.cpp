@@ -14,7 +14,8 @@
 #include "tree/cost.h"
 #include "tree/template_file.h"
 #include "tree/template_library.h"
-#include "ui/studio_state.h"
+#include "turtle/lsystem_params.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -47,7 +48,7 @@ TEST(StudioBasics, AnExpensiveEditAsksFirst) {
     const double cheap_modules = state.estimate.modules;
     EXPECT_GT(cheap_modules, 0);
 
-    state.tree_template.params.generations = 12;
+    state.tree_template.params.blocks.edit<LSystemParams>().generations = 12;
     start_generation(state);
     EXPECT_FALSE(state.job.has_value());  // nothing started
     EXPECT_FALSE(state.cost_warning.empty());
@@ -97,7 +98,7 @@ TEST(StudioBasics, ResetGoesBackToTheTemplateAndUndoBringsTheEditBack) {
 TEST(StudioBasics, ColoursRecolourTheShownTreeWithoutANewOne) {
     StudioState state;
     TreeTemplate t = load_template("oak");
-    t.params.generations = 3;
+    t.params.blocks.edit<LSystemParams>().generations = 3;
     t.params.trunk_resolution = 24;
     t.params.crown_resolution = 16;
     load_template_into(state, t);

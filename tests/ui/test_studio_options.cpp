@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "ui/studio_options.h"
+#include "ui/state/studio_options.h"
 
 namespace sylva::studio {
 namespace {

@@ -15,7 +15,8 @@
 
 #include "tests/ui/wait_for_generations.h"
 #include "tree/template_library.h"
-#include "ui/studio_state.h"
+#include "turtle/lsystem_params.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 namespace {
@@ -27,8 +28,8 @@ TreeTemplate small_tree() {
     TreeTemplate t = load_template("default");
     t.params.trunk_resolution = 24;
     t.params.crown_resolution = 16;
-    t.params.generations = 3;
-    t.params.drop_hidden = 0;  // the trunk meshed at its resolution, which tests below raise
+    t.params.blocks.edit<LSystemParams>().generations = 3;
+    t.params.drop_hidden = false;  // the trunk meshed at its resolution, which tests below raise
     return t;
 }
 
@@ -190,7 +191,7 @@ TEST(StudioState, ASliderHeldStillShowsADraftThenItsGameMesh) {
     ASSERT_TRUE(state.tree && state.tree->reduced());
     state.tree_changed = false;                         // main has uploaded it
     state.tree_template.params.trunk_resolution = 120;  // a reduction long enough to see a draft
-    state.tree_template.params.tropism += 0.1;
+    state.tree_template.params.blocks.edit<LSystemParams>().tropism += 0.1;
     set_dragging(state, true);
     ASSERT_TRUE(edit_pending(state));
     start_generation(state);
@@ -237,7 +238,7 @@ TEST(StudioState, AMovingSliderEndsOnTheGameMeshOfItsLastValue) {
     // mesh, and a job that reduces is dropped for the newer value.
     std::size_t most_workers = 0;
     for (int step = 1; step <= 5; ++step) {
-        state.tree_template.params.tropism = 0.05 * step;
+        state.tree_template.params.blocks.edit<LSystemParams>().tropism = 0.05 * step;
         poll_jobs(state);
         if (edit_pending(state)) start_generation(state);
         most_workers = std::max(most_workers, state.stale.size() + (state.job ? 1 : 0));
@@ -252,7 +253,7 @@ TEST(StudioState, AMovingSliderEndsOnTheGameMeshOfItsLastValue) {
     EXPECT_LE(most_workers, 3u);
     ASSERT_TRUE(state.tree && state.tree->reduced());
     EXPECT_FALSE(state.tree->draft);
-    EXPECT_EQ(state.shown_template.params.tropism, 0.25);
+    EXPECT_EQ(lsystem_params(state.shown_template.params).tropism, 0.25);
     EXPECT_FALSE(edit_pending(state));
     ASSERT_TRUE(wait_for_generations(state));
 }
@@ -290,7 +291,8 @@ TEST(StudioState, LettingGoStartsTheLastValueAtOnce) {
     start_generation(state);
     ASSERT_TRUE(state.job);
     const JobProgress* first = state.job->progress.get();
-    state.tree_template.params.tropism += 0.2;  // the slider moves on while it meshes
+    state.tree_template.params.blocks.edit<LSystemParams>().tropism +=
+        0.2;  // the slider moves on while it meshes
     start_generation(state);
     ASSERT_EQ(state.job->progress.get(), first);
     EXPECT_TRUE(state.generate_wanted);
@@ -301,12 +303,14 @@ TEST(StudioState, LettingGoStartsTheLastValueAtOnce) {
     ASSERT_TRUE(state.job);
     EXPECT_NE(state.job->progress.get(), first);
     EXPECT_FALSE(state.job->progress->draft);
-    EXPECT_EQ(state.job->tree_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_EQ(lsystem_params(state.job->tree_template.params).tropism,
+              lsystem_params(state.tree_template.params).tropism);
     EXPECT_TRUE(first->cancel);
     EXPECT_TRUE(state.released_at);
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_TRUE(state.tree->reduced());
-    EXPECT_EQ(state.shown_template.params.tropism, state.tree_template.params.tropism);
+    EXPECT_EQ(lsystem_params(state.shown_template.params).tropism,
+              lsystem_params(state.tree_template.params).tropism);
     EXPECT_GT(state.release_ms, 0.0);
 }
 
@@ -347,7 +351,7 @@ TEST(StudioState, ALeafEditKeepsTheReductionAndThinsTheNewLeaves) {
     // The crown shape (a reduction setting of the template): the same meshes, reduced
     // again, to what an export of the template writes (hulls: the small tree's crown has
     // no handle, so the automatic choice was its own surface).
-    state.tree_template.params.crown_shape = static_cast<int>(CrownShape::Hulls);
+    state.tree_template.params.crown_shape = CrownShape::Hulls;
     start_generation(state);
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_FALSE(state.tree->reduction_reused);
@@ -359,7 +363,7 @@ TEST(StudioState, ALeafEditKeepsTheReductionAndThinsTheNewLeaves) {
                           state.tree->finished.levels[0].crown));
 
     // A shape edit meshes another trunk: reduced again.
-    state.tree_template.params.tropism += 0.2;
+    state.tree_template.params.blocks.edit<LSystemParams>().tropism += 0.2;
     start_generation(state);
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_FALSE(state.tree->reduction_reused);
@@ -411,9 +415,9 @@ TEST(StudioState, ABrokenRuleKeepsTheLastGoodTreeAndNamesTheLine) {
 
 TEST(StudioState, ANewerEditCancelsTheStaleJobWithoutBlocking) {
     StudioState state = state_with(load_template("default"));
-    state.tree_template.params.drop_hidden = 0;  // else the trunk is meshed for the budget
-    state.tree_template.params.branch_style =    // else it is drawn, not meshed
-        static_cast<int>(BranchStyle::Surface);
+    state.tree_template.params.drop_hidden = false;  // else the trunk is meshed for the budget
+    state.tree_template.params.branch_style =        // else it is drawn, not meshed
+        BranchStyle::Surface;
     state.tree_template.params.trunk_resolution = 1200;  // seconds of meshing
     start_generation(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let it start meshing
@@ -441,9 +445,9 @@ TEST(StudioState, ACancelledJobWakesTheUiOnlyWhenANewerJobWaitsForIt) {
     std::atomic<int> cancelled_wakes{0}, newer_wakes{0};
     StudioState state = state_with(load_template("default"));
     state.wake = [&cancelled_wakes] { ++cancelled_wakes; };
-    state.tree_template.params.drop_hidden = 0;  // else the trunk is meshed for the budget
-    state.tree_template.params.branch_style =    // else it is drawn, not meshed
-        static_cast<int>(BranchStyle::Surface);
+    state.tree_template.params.drop_hidden = false;  // else the trunk is meshed for the budget
+    state.tree_template.params.branch_style =        // else it is drawn, not meshed
+        BranchStyle::Surface;
     state.tree_template.params.trunk_resolution = 1200;  // seconds of meshing
     start_generation(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -479,8 +483,8 @@ TEST(StudioState, ACancelledJobWakesTheUiOnlyWhenANewerJobWaitsForIt) {
 
 TEST(StudioState, UndoAndRedoStepThroughCommittedEdits) {
     StudioState state = state_with(small_tree());
-    const double first = state.tree_template.params.tropism;
-    state.tree_template.params.tropism = 0.5;
+    const double first = lsystem_params(state.tree_template.params).tropism;
+    state.tree_template.params.blocks.edit<LSystemParams>().tropism = 0.5;
     EXPECT_TRUE(commit_edit(state));
     EXPECT_FALSE(commit_edit(state));  // nothing new
     state.tree_template.grammar += "\n# a comment\n";
@@ -489,16 +493,16 @@ TEST(StudioState, UndoAndRedoStepThroughCommittedEdits) {
 
     undo(state);
     EXPECT_EQ(state.tree_template.grammar, small_tree().grammar);
-    EXPECT_EQ(state.tree_template.params.tropism, 0.5);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism, 0.5);
     undo(state);
-    EXPECT_EQ(state.tree_template.params.tropism, first);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism, first);
     EXPECT_TRUE(state.undo.empty());
     undo(state);  // nothing left: no change
-    EXPECT_EQ(state.tree_template.params.tropism, first);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism, first);
 
     redo(state);
     redo(state);
-    EXPECT_EQ(state.tree_template.params.tropism, 0.5);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism, 0.5);
     EXPECT_NE(state.tree_template.grammar, small_tree().grammar);
     EXPECT_TRUE(state.redo.empty());
 
@@ -513,11 +517,13 @@ TEST(StudioState, UndoAndRedoStepThroughCommittedEdits) {
 
 TEST(StudioState, UndoCommitsAnEditInProgressFirst) {
     StudioState state = state_with(small_tree());
-    state.tree_template.params.tropism = 0.4;  // not committed yet (a drag in progress)
+    state.tree_template.params.blocks.edit<LSystemParams>().tropism =
+        0.4;  // not committed yet (a drag in progress)
     undo(state);
-    EXPECT_EQ(state.tree_template.params.tropism, small_tree().params.tropism);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism,
+              lsystem_params(small_tree().params).tropism);
     redo(state);
-    EXPECT_EQ(state.tree_template.params.tropism, 0.4);
+    EXPECT_EQ(lsystem_params(state.tree_template.params).tropism, 0.4);
     cancel_generations(state);
     wait_for_generations(state);
 }

@@ -7,10 +7,11 @@
 #include <cmath>
 #include <string>
 
-#include "core/tree_params.h"
+#include "colonization/colonization_params.h"
 #include "tree/growth.h"
+#include "tree/parameters.h"
 #include "tree/template_library.h"
-#include "ui/template_controls.h"
+#include "ui/state/template_controls.h"
 
 namespace sylva::studio {
 namespace {
@@ -115,9 +116,9 @@ TEST(TemplateControls, MaxNoGrowIsGreyedWhereTheGrowthGivesItNothingToDo) {
 // for its release instead of ending (the maple's last stall is 8 passes from the end).
 TEST(TemplateControls, MaxNoGrowActsOnAStallInTheLastPass) {
     TreeTemplate maple = load_template("maple");
-    maple.params.max_no_grow = 0;
+    maple.params.blocks.edit<ColonizationParams>().max_no_grow = 0;
     const Skeleton never = grow(maple);
-    maple.params.max_no_grow = 8;
+    maple.params.blocks.edit<ColonizationParams>().max_no_grow = 8;
     EXPECT_NE(grow(maple).segments.size(), never.segments.size());
 }
 
@@ -234,14 +235,14 @@ TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
     // Prisms: the game mesh meshes no trunk, and the note says what the resolution still sets.
     EXPECT_NE(budget_resolution_note(willow.params, "trunk_resolution").find("prisms"),
               std::string::npos);
-    willow.params.branch_style = static_cast<int>(BranchStyle::Surface);
+    willow.params.branch_style = BranchStyle::Surface;
     const std::string willow_trunk = budget_resolution_note(willow.params, "trunk_resolution");
     EXPECT_NE(willow_trunk.find("meshed at 60"), std::string::npos);
     EXPECT_NE(willow_trunk.find("drop_hidden"), std::string::npos);
     EXPECT_NE(budget_resolution_note(willow.params, "crown_resolution").find("meshed at 40"),
               std::string::npos);
     TreeTemplate hedge = load_template("hedge");
-    hedge.params.branch_style = static_cast<int>(BranchStyle::Surface);
+    hedge.params.branch_style = BranchStyle::Surface;
     EXPECT_EQ(budget_resolution_note(hedge.params, "trunk_resolution"), "");
     EXPECT_NE(budget_resolution_note(hedge.params, "crown_resolution").find("meshed at 40"),
               std::string::npos);

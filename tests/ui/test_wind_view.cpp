@@ -8,8 +8,8 @@
 
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
-#include "ui/studio_options.h"
-#include "ui/wind_view.h"
+#include "ui/state/studio_options.h"
+#include "ui/state/wind_view.h"
 
 namespace sylva::studio {
 namespace {

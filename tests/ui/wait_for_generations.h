@@ -5,7 +5,7 @@
 #include <chrono>
 #include <thread>
 
-#include "ui/studio_state.h"
+#include "ui/state/studio_state.h"
 
 namespace sylva::studio {
 
