@@ -131,7 +131,6 @@ TEST(HostileGrammar, NearCoincidentCopiesGiveOneClosedTree) {
 TEST(HostileGrammar, ACrownAtTheEndOfAThreeKilometreBranchIsClosedAndReduced) {
     TreeTemplate t = default_template();
     t.grammar = "axiom: &(45)F(3000)\n";
-    t.params.generations = 0;
     MeshOptions options;
     options.budget = 800;
     const Tree tree = generate_tree(t, options);
@@ -149,7 +148,6 @@ TEST(HostileGrammar, ACrownAtTheEndOfAThreeKilometreBranchIsClosedAndReduced) {
 TEST(HostileGrammar, ACrownTooSmallForItsGridIsLeftOutWithANote) {
     TreeTemplate t = default_template();
     t.grammar = "axiom: F(1)[+(90)F(3000)]F(1)\n";
-    t.params.generations = 0;
     const Tree tree = generate_tree(t, MeshOptions{});
     EXPECT_TRUE(tree.crown.triangles.empty());
     ASSERT_EQ(tree.notes.size(), 1u);
