@@ -11,13 +11,16 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/seed.h"
 #include "export/export.h"
 #include "forest/batch.h"
 #include "forest/forest.h"
 #include "forest/species_file.h"
+#include "forest/variation.h"
 #include "tree/cost.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
+#include "tree/template_setting.h"
 
 namespace sylva {
 namespace {
@@ -26,12 +29,15 @@ constexpr int kOk = 0, kUsage = 2;
 
 constexpr const char* kForestHelp = R"(
 Many trees:
-  sylva batch  -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N]
+  sylva batch  -t NAME|FILE --count N [--seed S] [--jitter J] [--jitter NAME=J]...
+               [--shard I/N]
                [--set KEY=VALUE]... [--budget N] [--lod] [--format F] -o DIR/
-      N variants of one template: variant i is seeded with the i-th splitmix64 number of
-      S (default 1) and, with --jitter J (0 to 1, default 0.1), has branch_length,
-      branch_width, angles, tapers, crown, leaf and envelope sizes scaled by up to
-      +-J (within their ranges). Writes DIR/<template>_<i>.<ext> and DIR/manifest.json
+      N variants of one template: variant i is seeded with the top 53 bits of the i-th
+      splitmix64 number of S (default 1) and, with --jitter J (0 to 1, default 0.1), has
+      branch_length, branch_width, angles, tapers, crown, leaf and envelope sizes scaled
+      by up to +-J (within their ranges). --jitter NAME=J (repeatable) also scales a
+      #define of the template's rules (held to its `# [lo, hi]` comment's range, whole
+      numbers when the range is) or another parameter by up to +-J. Writes DIR/<template>_<i>.<ext> and DIR/manifest.json
       (file, seed, jittered parameters, triangles per item). --shard I/N writes only the
       items whose index modulo N is I-1, and manifest_<I>of<N>.json: run 1/N..N/N on any
       machines (GNU parallel, a Slurm array) and their files together are the whole batch.
@@ -96,6 +102,7 @@ struct TreeFlags {
     std::string output;
     std::uint64_t seed = 1;
     double jitter = 0.1;
+    std::vector<KeyJitter> key_jitter;  // --jitter NAME=J
 
     // True when `arg` was one of them.
     bool parse(const std::string& arg, const std::function<std::string()>& value) {
@@ -106,10 +113,26 @@ struct TreeFlags {
                 throw UsageError("--set expects KEY=VALUE, not '" + kv + "'");
             sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
         } else if (arg == "--seed") {
-            seed = parse_number<std::uint64_t>(arg, value());
+            const std::string text = value();
+            const std::optional<std::uint64_t> parsed = parse_seed(text);
+            if (!parsed)
+                throw UsageError(arg + " expects a seed from " + seed_range_text() + ", not '" +
+                                 text + "'");
+            seed = *parsed;
         } else if (arg == "--jitter") {
-            jitter = parse_number<double>(arg, value());
-            if (!(jitter >= 0.0 && jitter <= 1.0)) throw UsageError("--jitter must be 0 to 1");
+            // J, or NAME=J: a #define or parameter varied by up to +-J besides the usual set.
+            const std::string text = value();
+            const std::size_t eq = text.find('=');
+            const double amount =
+                parse_number<double>(arg, eq == std::string::npos ? text : text.substr(eq + 1));
+            if (!(amount >= 0.0 && amount <= 1.0))
+                throw UsageError("--jitter must be 0 to 1, not " + text);
+            if (eq == std::string::npos)
+                jitter = amount;
+            else if (eq == 0)
+                throw UsageError("--jitter expects J or NAME=J, not '" + text + "'");
+            else
+                key_jitter.push_back({text.substr(0, eq), amount});
         } else if (arg == "--budget") {
             budget = parse_number<std::size_t>(arg, value());
         } else if (arg == "--budget-leaves") {
@@ -140,7 +163,7 @@ struct TreeFlags {
 
     TreeTemplate configured(const std::string& name) const {
         TreeTemplate tree = load_template(name);
-        for (const auto& [key, text] : sets) set_param(tree.params, key, text);
+        for (const auto& [key, text] : sets) set_template_value(tree, key, text);
         return tree;
     }
 
@@ -240,6 +263,8 @@ int run_batch_command(int argc, char** argv) {
         settings.count = *count;
         settings.seed = flags.seed;
         settings.jitter = flags.jitter;
+        settings.key_jitter = flags.key_jitter;
+        check_key_jitter(settings.tree, settings.key_jitter);  // before any work, exit 3
         settings.finish = flags.finish(settings.tree);
         flags.check(settings.tree, settings.finish);
         settings.mesh.growth_limits = flags.growth_limits();
@@ -385,6 +410,8 @@ int run_forest_command(int argc, char** argv) {
     };
     return with_flags(argc, argv, parse, [&] {
         if (flags.output.empty()) throw UsageError("forest needs -o FOREST.glb");
+        if (!flags.key_jitter.empty())
+            throw UsageError("--jitter NAME=J varies a batch's trees; a forest takes --jitter J");
         if (settings.density && settings.trees)
             throw UsageError("--density and --trees both say how many trees: give one of them");
         if (flags.format && flags.format->name != "glb")
@@ -392,7 +419,7 @@ int run_forest_command(int argc, char** argv) {
         if (!species_file.empty()) {
             settings.species = forest::load_species(species_file);
             for (forest::Species& sp : settings.species)
-                for (const auto& [key, text] : flags.sets) set_param(sp.tree.params, key, text);
+                for (const auto& [key, text] : flags.sets) set_template_value(sp.tree, key, text);
         } else {
             for (const auto& [name, weight] : species)
                 settings.species.push_back({flags.configured(name), weight});

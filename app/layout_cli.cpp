@@ -12,6 +12,7 @@
 #include "core/file_set.h"
 #include "core/input_file.h"
 #include "core/output_folder.h"
+#include "core/seed.h"
 #include "layout/contact_sheet.h"
 #include "layout/cost.h"
 #include "layout/derive.h"
@@ -192,7 +193,7 @@ int run_layout_cli(const std::vector<std::string>& args, std::FILE* out, std::FI
                 count = number<int>(a, value(), 1, 100000);
             } else if (a == "--seed") {
                 generate_only();
-                seed = number<std::uint64_t>(a, value(), 0, UINT64_MAX);
+                seed = number<std::uint64_t>(a, value(), 0, kMaxSeed);  // core/seed.h
             } else if (a == "--size") {
                 generate_only();
                 size_spec = value();

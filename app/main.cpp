@@ -22,6 +22,8 @@
 #include "core/errors.h"
 #include "core/file_set.h"
 #include "core/name_list.h"
+#include "core/output_folder.h"
+#include "core/seed.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "export/skeleton_json.h"
@@ -39,6 +41,7 @@
 #include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
+#include "tree/template_setting.h"
 #include "turtle/lsystem_growth.h"
 #include "turtle/lsystem_params.h"
 
@@ -61,21 +64,23 @@ Usage:
   sylva lint     [-t NAME|FILE] [--set KEY=VALUE]...
                  (grammar warnings as FILE:LINE:COLUMN; docs/grammar.md "Warnings")
   sylva skeleton [-t NAME|FILE] [--set KEY=VALUE]... [--seed N] -o skeleton.json
-  sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J] [--shard I/N] -o DIR/
+  sylva batch    -t NAME|FILE --count N [--seed S] [--jitter J|NAME=J]... [--shard I/N] -o DIR/
   sylva forest   [--area WxD | --ground FILE | --layout PLAN] [--species A,B:2,...] -o FOREST.glb
   sylva templates
   sylva layout   examples | derive EXAMPLE -o grammar.json |
                  generate EXAMPLE|GRAMMAR [--count N] [--size N] [--seed S] -o DIR/
                  (2D plans grown from one example; see sylva layout --help, docs/layout.md)
-  sylva --help, sylva COMMAND --help
+  sylva --help, sylva COMMAND --help, sylva --version
 )";
 
 // The flags of export, derive and skeleton (and the tree flags batch and forest share).
 constexpr const char* kOptions = R"(
   -t NAME|FILE     a built-in template (see `sylva templates`) or a grammar file;
                    default: the built-in default tree
-  --set KEY=VALUE  override a parameter (keys below); may be repeated
-  --seed N         seed of stochastic rules and rand() (default 1)
+  --set KEY=VALUE  override a parameter (keys below) or a #define constant of the
+                   template's rules (`#define a 46 # [20, 75] ...`: held to the comment's
+                   range, whole numbers when the range is); may be repeated
+  --seed N         seed of stochastic rules and rand(): 0 to 2^53 - 1 (default 1)
   --steps N        derivation steps (default: the template's generations)
   --mesher KIND    @MESHERS@
   --adaptivity A   vdb mesher only: 0 (uniform, default) to 1 (merge flat regions)
@@ -207,6 +212,15 @@ std::size_t parse_budget(const std::string& flag, const std::string& text) {
     return budget;
 }
 
+// A seed flag: a whole number of core/seed.h's range, as every file Sylva writes holds it.
+std::uint64_t parse_seed_flag(const std::string& flag, const std::string& text) {
+    const std::optional<std::uint64_t> seed = parse_seed(text);
+    if (!seed)
+        throw UsageError(flag + " expects a seed from " + seed_range_text() + ", not '" + text +
+                         "'");
+    return *seed;
+}
+
 Options parse_options(int argc, char** argv) {
     Options o;
     if (argc < 2) throw UsageError("missing command");
@@ -226,7 +240,7 @@ Options parse_options(int argc, char** argv) {
                 throw UsageError("--set expects KEY=VALUE, not '" + kv + "'");
             o.sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
         } else if (arg == "--seed") {
-            o.seed = parse_integer<std::uint64_t>(arg, value());
+            o.seed = parse_seed_flag(arg, value());
         } else if (arg == "--steps") {
             o.steps = parse_integer<int>(arg, value());
             if (*o.steps < 0 || *o.steps > kMaxSteps)
@@ -329,7 +343,7 @@ Options parse_options(int argc, char** argv) {
 
 TreeTemplate configured_template(const Options& o) {
     TreeTemplate tree = load_template(o.tree);
-    for (const auto& [key, value] : o.sets) set_param(tree.params, key, value);
+    for (const auto& [key, value] : o.sets) set_template_value(tree, key, value);
     if (o.seed) tree.params.seed = *o.seed;
     if (o.steps) tree.params.blocks.edit<LSystemParams>().generations = *o.steps;
     tree.colors = tree_colors(tree);  // colour variation: per seed
@@ -428,6 +442,7 @@ int run_export(const Options& o) {
     if (o.export_options.impostor.kind != ImpostorKind::None && format->name == "ply")
         throw UsageError("--impostor needs textures, which PLY does not carry: use .glb or .obj");
     output_target(o.output);  // a directory or device at -o is refused before the work
+    OutputFolder folder(std::filesystem::path(o.output).parent_path());  // made, or exit 4
     TreeTemplate tmpl = configured_template(o);
     FinishSettings finish;
     finish.budget.total =
@@ -463,6 +478,7 @@ int run_export(const Options& o) {
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
         [&] { raw_states = part_states(raw); });
+    folder.keep();
     tree.times.push_back({"reduce + write", clock.lap_ms()});
 
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
@@ -509,7 +525,11 @@ int run_export(const Options& o) {
 }
 
 int run_derive(const Options& o) {
-    if (!o.output.empty()) output_target(o.output);  // refused before the work, as export's
+    std::optional<OutputFolder> folder;  // refused or made before the work, as export's
+    if (!o.output.empty()) {
+        output_target(o.output);
+        folder.emplace(std::filesystem::path(o.output).parent_path());
+    }
     const TreeTemplate tree = configured_template(o);
     if (tree.growth != lsystem_growth.name)
         throw InputError("derive prints an L-system's word, but '" + tree.name + "' grows by " +
@@ -522,6 +542,7 @@ int run_derive(const Options& o) {
         std::fwrite(text.data(), 1, text.size(), stdout);
     } else {
         write_file_atomically(o.output, [&](std::ostream& out) { out << text; });
+        folder->keep();
         std::printf("wrote %s: %zu characters\n", o.output.c_str(), text.size() - 1);
     }
     return kOk;
@@ -529,18 +550,25 @@ int run_derive(const Options& o) {
 
 int run_skeleton(const Options& o) {
     if (o.output.empty()) throw UsageError("skeleton needs -o skeleton.json");
+    output_target(o.output);
+    OutputFolder folder(std::filesystem::path(o.output).parent_path());
     TreeTemplate tree = configured_template(o);
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
     GrowthContext context;
     context.limits = growth_limits(o.limits, kRaiseLimits);
     Skeleton skeleton = grow(tree, context);
     write_skeleton_json(o.output, skeleton, tree.params);
+    folder.keep();
     std::printf("wrote %s: %zu segments, %zu tips\n", o.output.c_str(), skeleton.segments.size(),
                 tips(skeleton).size());
     return kOk;
 }
 
 int run(int argc, char** argv) {
+    if (argc == 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "-V")) {
+        std::printf("sylva %s\n", SYLVA_VERSION);
+        return kOk;
+    }
     // `sylva export --help`: that command's usage (layout prints its own).
     if (argc >= 3 && asks_for_help(argc, argv) && std::string(argv[1]) != "layout") {
         if (!print_command_help(argv[1], stdout))

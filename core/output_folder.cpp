@@ -10,6 +10,18 @@
 
 namespace sylva {
 
+std::filesystem::path missing_folder(const std::filesystem::path& dir) {
+    namespace fs = std::filesystem;
+    fs::path outermost;
+    std::error_code ec;
+    for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+        if (fs::exists(fs::status(p, ec))) break;
+        outermost = p;
+        if (p == p.parent_path()) break;
+    }
+    return outermost;
+}
+
 OutputFolder::OutputFolder(const std::filesystem::path& dir) {
     namespace fs = std::filesystem;
     const fs::path folder = dir.empty() ? fs::path(".") : dir;

@@ -17,6 +17,7 @@
 #include "forest/variation.h"
 #include "platform/signal_cleanup.h"
 #include "tree/parameters.h"
+#include "tree/template_setting.h"
 
 namespace sylva {
 namespace {
@@ -99,9 +100,17 @@ std::vector<BatchItem> plan_batch(const BatchSettings& settings) {
             safe_file_name(settings.tree.name) + "_" + number + std::string(format->extension);
         item.seed = variant_seed(settings.seed, i);
         item.params = varied_params(settings.tree.params, item.seed, settings.jitter);
+        item.keys = varied_keys(settings.tree, item.seed, settings.key_jitter);
         items.push_back(std::move(item));
     }
     return items;
+}
+
+TreeTemplate item_template(const BatchSettings& settings, const BatchItem& item) {
+    TreeTemplate tree = settings.tree;
+    tree.params = item.params;
+    for (const auto& [key, value] : item.keys) set_template_value(tree, key, value);
+    return tree;
 }
 
 BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path& dir) {
@@ -124,8 +133,7 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     for (std::size_t begin = 0; begin < n; begin += chunk) {
         const std::size_t end = std::min(n, begin + chunk);
         tbb::parallel_for(begin, end, [&](std::size_t k) {
-            TreeTemplate tree = settings.tree;
-            tree.params = result.items[k].params;
+            const TreeTemplate tree = item_template(settings, result.items[k]);
             auto g = std::make_unique<Generated>();
             g->tree = generate_tree(tree, mesh);
             g->finished = finish_tree(g->tree, finish);
@@ -149,8 +157,7 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     nlohmann::ordered_json items = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < n; ++k) {
         BatchItem& item = result.items[k];
-        TreeTemplate variant = settings.tree;
-        variant.params = item.params;
+        const TreeTemplate variant = item_template(settings, item);
         const std::vector<ModelParts> levels =
             finished_parts(generated[k]->tree, generated[k]->finished, tree_colors(variant),
                            material_prefix(settings.tree.name, item.seed));
@@ -159,6 +166,7 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
         nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
         for (const JitterParam& p : jitter_params())
             if (auto value = get_param(item.params, p.key)) parameters[std::string(p.key)] = *value;
+        for (const auto& [key, value] : item.keys) parameters[key] = value;
         items.push_back({{"index", item.index},
                          {"file", item.file},
                          {"seed", item.seed},
@@ -168,6 +176,9 @@ BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path
     }
     nlohmann::ordered_json jittered = nlohmann::ordered_json::array();
     for (const JitterParam& p : jitter_params()) jittered.push_back(p.key);
+    for (const KeyJitter& k : settings.key_jitter)
+        if (std::find(jittered.begin(), jittered.end(), k.key) == jittered.end())
+            jittered.push_back(k.key);
     const nlohmann::ordered_json manifest = {
         {"template", settings.tree.name},
         {"count", settings.count},

@@ -18,6 +18,7 @@
 #include "core/cancel.h"
 #include "core/tree_template.h"
 #include "export/export_tree.h"
+#include "forest/variation.h"
 #include "tree/cost.h"
 #include "tree/pipeline.h"
 
@@ -37,6 +38,7 @@ struct BatchSettings {
     std::size_t count = 1;
     std::uint64_t seed = 1;                // the batch's base seed (variation.h)
     double jitter = 0.1;                   // varied_params(); 0: only the seed differs
+    std::vector<KeyJitter> key_jitter;     // #defines and parameters varied besides (varied_keys)
     FinishSettings finish;                 // budget, LOD
     MeshOptions mesh;                      // its budget is set from `finish`
     const ExportFormat* format = nullptr;  // null: glb
@@ -55,13 +57,18 @@ struct BatchItem {
     std::string file;
     std::uint64_t seed = 0;
     TreeParams params;
+    std::vector<std::pair<std::string, double>> keys;  // the key_jitter keys' values
     std::size_t triangles = 0;
 };
+
+// The template of one item: the settings' tree with the item's parameters and keys.
+TreeTemplate item_template(const BatchSettings& settings, const BatchItem& item);
 
 // The items of the settings' shard, in index order, triangles still 0. File names are
 // `<template>_<index>`, the template's name made a safe file name (safe_file_name(),
 // core/data_paths.h), the index zero-padded to the width of count - 1 (at least 4).
-// Throws InputError for a count of 0 or a bad jitter.
+// Throws InputError for a count of 0, a bad jitter or a key_jitter key check_key_jitter()
+// refuses.
 std::vector<BatchItem> plan_batch(const BatchSettings& settings);
 
 // How many items the settings' shard holds (0 for a bad shard), counted, not listed.
@@ -83,8 +90,9 @@ struct BatchResult {
 // with IoError naming it) before any tree is generated and removed again on failure
 // (core/output_folder.h). Manifest: {"template", "count", "seed", "jitter", "shard": [I, N],
 // "format", "jittered": [keys], "items": [{"index", "file", "seed", "parameters": {key: value},
-// "triangles"}]}, where "parameters" are the jittered keys' values (with the template and
-// `--set` they reproduce the tree: `sylva export -t T --seed SEED --set KEY=VALUE...`).
+// "triangles"}]}, where "parameters" are the jittered keys' values, key_jitter's last (with the
+// template and `--set` they reproduce the tree: `sylva export -t T --seed SEED --set
+// KEY=VALUE...`).
 // Throws InputError, IoError, Cancelled; on any of them no file is left.
 BatchResult run_batch(const BatchSettings& settings, const std::filesystem::path& dir);
 

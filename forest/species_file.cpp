@@ -8,6 +8,7 @@
 #include "core/input_file.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
+#include "tree/template_setting.h"
 
 namespace sylva::forest {
 
@@ -66,9 +67,9 @@ std::vector<Species> parse_species_json(const std::string& text, const std::stri
             for (const auto& [key, value] : entry["set"].items()) {
                 try {
                     if (value.is_number())
-                        set_param(sp.tree.params, key, value.get<double>());
+                        set_template_value(sp.tree, key, value.get<double>());
                     else if (value.is_string())
-                        set_param(sp.tree.params, key, value.get<std::string>());
+                        set_template_value(sp.tree, key, value.get<std::string>());
                     else
                         throw InputError("must be a number or a choice's name");
                 } catch (const InputError& e) {

@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/seed.h"
 #include "tree/growth.h"
 #include "tree/parameters.h"
 
@@ -66,23 +67,11 @@ class Reader {
         for (const auto& [key, value] : *table) {
             if (key.str() == "seed") {
                 // An integer node (value<int64_t>() would cast a float, seed = 1e308, to an
-                // integer first, which is undefined), or the digits of a seed above TOML's
-                // largest integer, 2^63 - 1, as template_file_text() writes those.
+                // integer first, which is undefined) within the seed range (core/seed.h).
                 const toml::value<int64_t>* seed = value.as_integer();
-                const toml::value<std::string>* digits = value.as_string();
-                std::uint64_t read = 0;
-                if (seed && seed->get() >= 0) {
-                    read = static_cast<std::uint64_t>(seed->get());
-                } else if (digits) {
-                    const std::string& text = digits->get();
-                    const auto [end, error] =
-                        std::from_chars(text.data(), text.data() + text.size(), read);
-                    if (text.empty() || error != std::errc() || end != text.data() + text.size())
-                        fail(&value, "[params] seed must be a whole number from 0 to 2^64 - 1");
-                } else {
-                    fail(&value, "[params] seed must be a whole number from 0 to 2^64 - 1");
-                }
-                params.seed = read;
+                if (!seed || seed->get() < 0 || !is_seed(static_cast<std::uint64_t>(seed->get())))
+                    fail(&value, "[params] seed must be a whole number from " + seed_range_text());
+                params.seed = static_cast<std::uint64_t>(seed->get());
                 continue;
             }
             try {
@@ -389,10 +378,11 @@ std::string template_file_text(const TreeTemplate& tree, std::string_view origin
         else
             put("params", info.key, toml_float(value));
     }
-    // TOML's integers end at 2^63 - 1; a larger seed (a variant's, a batch's) goes as digits.
-    const bool fits = tree.params.seed <= static_cast<std::uint64_t>(INT64_MAX);
-    put("params", "seed",
-        fits ? std::to_string(tree.params.seed) : quoted(std::to_string(tree.params.seed)));
+    // A seed outside core/seed.h's range would write a file no reader takes back.
+    if (!is_seed(tree.params.seed))
+        throw InputError("seed " + std::to_string(tree.params.seed) + " is not a seed from " +
+                         seed_range_text() + ", so the file could not be read back");
+    put("params", "seed", std::to_string(tree.params.seed));
     out << "\n";
     if (auto above = comments.above.find("[colors]"); above != comments.above.end())
         out << above->second;

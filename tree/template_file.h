@@ -44,10 +44,12 @@ TemplateComments template_comments(std::string_view text);
 // The TOML text of a template; parse_template_file reads it back to an equal template.
 // Numbers are written as the shortest text that reads back to them (0.8, not
 // 0.80000000000000004). The comments of `original` (the text the template was read from,
-// when there is one) are kept at the keys they stood at.
+// when there is one) are kept at the keys they stood at. Throws InputError for a seed outside
+// core/seed.h's range (no reader would take the file back).
 std::string template_file_text(const TreeTemplate& tree, std::string_view original = {});
 
-// Throws IoError naming the path; never leaves a partial file.
+// Throws IoError naming the path (InputError as template_file_text); never leaves a partial
+// file.
 void save_template_file(const std::filesystem::path& path, const TreeTemplate& tree,
                         std::string_view original = {});
 

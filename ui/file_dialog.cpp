@@ -34,7 +34,8 @@ std::vector<FolderEntry> list_folder(const fs::path& folder,
 std::optional<std::string> file_dialog(FileDialogState& dialog,
                                        const std::vector<std::string>& recent_files) {
     const std::string title_text =
-        (dialog.saving ? "Save " + dialog.what + " as" : "Open " + dialog.what) + "###file";
+        (dialog.saving ? "Save " + dialog.what + " as###" : "Open " + dialog.what + "###") +
+        dialog.what;
     const char* title = title_text.c_str();
     if (dialog.open_requested) {
         dialog.open_requested = false;

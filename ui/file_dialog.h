@@ -27,7 +27,8 @@ struct FileDialogState {
     std::string folder;           // the folder shown
     std::string name;             // the file name field
     // What it lists and names: template files by default; the first extension is the one a
-    // new name gets. `what` names them in the title ("template", "layout example").
+    // new name gets. `what` names them in the title ("template", "layout example") and is
+    // the popup's ID, so each kind of dialog is its own.
     std::vector<std::string> extensions{".toml", ".lsys", ".txt"};
     std::string what = "template";
 };

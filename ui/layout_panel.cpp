@@ -357,7 +357,7 @@ void draw_layout_panel(LayoutPanelState& s, StudioState& studio, const PanelLayo
     if (auto path = file_dialog(s.open_dialog, {})) open_layout_file(s, *path);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    ImGui::InputInt("seed", &s.seed);
+    if (ImGui::InputInt("seed", &s.seed)) s.seed = std::max(s.seed, 0);  // core/seed.h's range
     ImGui::SameLine();
     ImGui::SetNextItemWidth(80);
     ImGui::SliderInt("count", &s.count, 1, 48);

@@ -11,6 +11,7 @@
 #include "ui/backdrop.h"
 #include "ui/gl.h"
 #include "ui/ground_grid.h"
+#include "ui/input_queue.h"
 #include "ui/state/colonization_view.h"
 #ifdef SYLVA_HAS_LAYOUT
 #include "ui/layout_panel.h"
@@ -22,6 +23,7 @@
 #include "ui/organ_view.h"
 #include "ui/panels.h"
 #include "ui/screenshot.h"
+#include "ui/shortcuts.h"
 #include "ui/state/orbit_camera.h"
 #include "ui/state/release_bench.h"
 #include "ui/state/scale_figure.h"
@@ -72,11 +74,7 @@ void remember_glfw_error(int /*code*/, const char* description) {
 }
 
 // Keys pressed since the last frame, with their modifiers, recorded by GLFW's key callback
-// (ImGui's backend chains it): ImGui 1.86 samples key state once per frame, so a tap shorter
-// than a frame would be lost to a shortcut that asked ImGui.
-struct KeyPress {
-    int key, mods;
-};
+// (ImGui's backend chains it); ui/shortcuts.h acts on them.
 std::vector<KeyPress> g_key_presses;
 
 void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
@@ -182,7 +180,9 @@ int upload_tree(Viewport& viewport, const GeneratedTree& generated, int level) {
 }
 
 // The wind toggle: the shown parts swayed to `seconds` and uploaded in place of the rest.
-void upload_swayed(Viewport& viewport, const GeneratedTree& generated, int level, float seconds) {
+void upload_swayed(Viewport& viewport, const GeneratedTree& generated, int level, float seconds,
+                   const sylva::WindMotion& motion) {
+    viewport.wind.motion = motion;
     if (!viewport.wind.ready) {
         const ShownParts meshes = shown_parts(generated, level);
         const sylva::Tree& tree = generated.tree;
@@ -280,34 +280,6 @@ void handle_camera_input(StudioState& state, float view_height) {
     if (io.MouseWheel != 0.0f) zoom(state.camera, io.MouseWheel);
 }
 
-// Ctrl+E export, Ctrl+Z undo, Ctrl+Y or Ctrl+Shift+Z redo, Ctrl+S save, F frame, P screenshot,
-// T turntable, F1 the shortcut list, Esc cancel, 0-3 show that LOD level of the game mesh
-// (switching the low-poly view on). While a text field has the keyboard,
-// Ctrl+Z / Ctrl+Y are its own undo of the typing, and F and the digits are text.
-void handle_shortcuts(StudioState& state) {
-    const bool typing = ImGui::GetIO().WantTextInput;
-    for (const KeyPress& press : g_key_presses) {
-        const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
-        if (ctrl && press.key == GLFW_KEY_E) start_export(state);
-        if (typing) continue;
-        if (ctrl && press.key == GLFW_KEY_Z) shift ? redo(state) : undo(state);
-        if (ctrl && press.key == GLFW_KEY_Y) redo(state);
-        if (ctrl && press.key == GLFW_KEY_S) save_template_to_file(state);
-        if (ctrl && press.key == GLFW_KEY_O) request_file_dialog(false);
-        if (!ctrl && press.key == GLFW_KEY_F) state.frame_requested = true;
-        if (!ctrl && press.key == GLFW_KEY_P) state.screenshot_requested = true;
-        if (!ctrl && press.key == GLFW_KEY_T) state.view.turntable = !state.view.turntable;
-        if (press.key == GLFW_KEY_F1) state.show_shortcuts = !state.show_shortcuts;
-        if (press.key == GLFW_KEY_ESCAPE) cancel_generation(state);
-        for (int level = 0; level <= kImpostorSlot; ++level)
-            if (!ctrl && (press.key == GLFW_KEY_0 + level || press.key == GLFW_KEY_KP_0 + level)) {
-                state.view.low_poly = true;
-                state.view.lod_level = level;
-            }
-    }
-    g_key_presses.clear();
-}
-
 // Frames per second while the window draws continuously (idle, it sleeps between events,
 // and a rate then would only measure the sleep). Smoothed, for the status bar.
 class FrameRate {
@@ -340,7 +312,8 @@ ViewRect view_rect(const PanelLayout& layout) {
     const int left = static_cast<int>(layout.left), right = static_cast<int>(layout.right);
     const int bottom = static_cast<int>(layout.bottom);
     const int width = static_cast<int>(layout.width), height = static_cast<int>(layout.height);
-    return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom, 1)};
+    const int top = static_cast<int>(layout.top);
+    return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom - top, 1)};
 }
 
 void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
@@ -473,7 +446,10 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                 std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
                     .count(),
                 0.0, timeout);
-        if (animating)
+        if (state.rules.pending)  // apply typed rules when the pause ends
+            timeout = std::clamp(seconds_until_apply(state, std::chrono::steady_clock::now()), 0.01,
+                                 timeout);
+        if (animating || input_events_waiting())
             glfwPollEvents();
         else
             glfwWaitEventsTimeout(timeout);
@@ -481,6 +457,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         frame_rate.tick(frame_start, animating);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);
+        deliver_input_events(window);  // ui/input_queue.h
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -501,8 +478,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             }
 #endif
             if (ext == ".toml" || ext == ".lsys" || ext == ".txt") {
-                state.template_path = file;
-                open_template_file(state);
+                open_template_file(state, file);
             } else {
                 state.file_message = "not a template: " + file + " (drop a .toml, .lsys or .txt)";
                 state.file_failed = true;
@@ -525,7 +501,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             viewport.impostor.update(state.tree, tree_colors(state.shown_template));
         if (state.tree && state.view.wind) {
             upload_swayed(viewport, *state.tree, uploaded_level,
-                          options.wind_seconds.value_or(static_cast<float>(glfwGetTime())));
+                          options.wind_seconds.value_or(static_cast<float>(glfwGetTime())),
+                          state.view.wind_motion);
             swaying = true;
         } else if (state.tree && swaying) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
@@ -548,6 +525,14 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             return 1;
         }
 
+        const bool variants_were_open = strip.open;
+#ifdef SYLVA_HAS_LAYOUT
+        draw_menu_bar(state, strip.open, &layout_panel.open);
+#else
+        draw_menu_bar(state, strip.open, nullptr);
+#endif
+        if (strip.open && !variants_were_open && strip.thumbnails.empty() && !strip.job.valid())
+            start_variants(strip, state.tree_template);
         draw_tree_panel(state, layout);
         draw_rules_panel(state, editor, layout);
         draw_status_bar(state, layout, frame_rate.shown());
@@ -559,7 +544,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         draw_dialogs(state);  // last: see panels.h
         const bool asking = cost_dialog_open() && !generation_running(state);
         handle_camera_input(state, static_cast<float>(rect.height));
-        handle_shortcuts(state);
+        handle_shortcuts(state, g_key_presses);
+        g_key_presses.clear();
         ImGui::Render();
 
         // Live mode follows every edit; a new generation cancels the stale one. While a slider
@@ -674,6 +660,7 @@ int main(int argc, char** argv) {
     glfwSetKeyCallback(window, remember_key);  // before ImGui's backend, which chains it
     glfwSetDropCallback(window, remember_drop);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    install_input_queue(window);  // after the backend's callbacks, which it wraps
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     // Loop.

@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <glm/trigonometric.hpp>
 #include <optional>
 #include <random>
 #include <string>
 
 #include "core/name_list.h"
+#include "core/seed.h"
 #include "export/export.h"
 #include "tree/cost.h"
 #include "tree/growth.h"
@@ -22,6 +25,7 @@
 #include "ui/impostor_view.h"
 #include "ui/rules_warnings.h"
 #include "ui/state/colonization_view.h"
+#include "ui/state/forest_export.h"
 #include "ui/state/template_controls.h"
 
 namespace sylva::studio {
@@ -56,8 +60,14 @@ void message_line(const std::string& text, bool failed) {
     if (!text.empty()) tooltip(text.c_str());
 }
 
-// The studio's own file dialog (ui/file_dialog.h), shared by Open and Save as.
+// The studio's own file dialog (ui/file_dialog.h), shared by Open and Save as; the export
+// path's Browse has one of its own.
 FileDialogState g_file_dialog;
+FileDialogState g_export_dialog{.saving = true,
+                                .folder = {},
+                                .name = {},
+                                .extensions = {".glb", ".obj", ".ply"},
+                                .what = "export"};
 
 void section(const char* title) {
     ImGui::Spacing();
@@ -135,6 +145,16 @@ void growth_combo(StudioState& state) {
         tooltip(std::string(method->description).c_str());
 }
 
+// Save: to the file the template came from, or through the dialog when there is none yet.
+void save_or_ask(StudioState& state) {
+    if (std::filesystem::exists(state.template_path)) {
+        save_template_to_file(state);
+    } else {
+        g_file_dialog.saving = true;
+        g_file_dialog.open_requested = true;
+    }
+}
+
 void template_section(StudioState& state) {
     // The unsaved-changes mark (the window's title carries it too, main).
     section(unsaved_changes(state) ? "Template  * unsaved changes" : "Template");
@@ -142,7 +162,7 @@ void template_section(StudioState& state) {
                           ImGuiComboFlags_HeightLargest)) {
         for (const TreeTemplate* t : builtin_templates()) {
             if (ImGui::Selectable(t->name.c_str(), t->name == state.tree_template.name))
-                load_template_into(state, *t);
+                switch_template(state, {*t, {}, {}});
             tooltip(t->description.c_str());
         }
         ImGui::EndCombo();
@@ -159,14 +179,7 @@ void template_section(StudioState& state) {
         "open a template file (.toml) or a grammar file (.lsys, .txt: the rules alone); "
         "Ctrl+O, or drop a file on the window");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) {
-        if (std::filesystem::exists(state.template_path)) {
-            save_template_to_file(state);
-        } else {
-            g_file_dialog.saving = true;
-            g_file_dialog.open_requested = true;
-        }
-    }
+    if (ImGui::Button("Save")) save_or_ask(state);
     tooltip(
         ("save to " + state.template_path + " (Ctrl+S); comments of the file are kept").c_str());
     ImGui::SameLine();
@@ -181,32 +194,34 @@ void template_section(StudioState& state) {
     if (ImGui::BeginCombo("##recent", "recent", ImGuiComboFlags_HeightLarge)) {
         if (state.recent_files.empty()) ImGui::TextDisabled("(no files opened or saved yet)");
         for (const std::string& file : state.recent_files)
-            if (ImGui::Selectable(file.c_str())) {
-                state.template_path = file;
-                open_template_file(state);
-            }
+            if (ImGui::Selectable(file.c_str())) open_template_file(state, file);
         ImGui::EndCombo();
     }
     message_line(state.file_message, state.file_failed);
 }
 
 // The template's own knobs: its #define constants that carry a range
-// (ui/state/template_controls.h), its colours, and the way back to it as it was opened.
+// (ui/state/template_controls.h), labelled by their help comment, and its colours.
 void this_tree_section(StudioState& state) {
-    section("This tree");
+    const std::string& query = state.parameter_search;
+    if (!query.empty()) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+    if (!ImGui::CollapsingHeader("This tree", ImGuiTreeNodeFlags_DefaultOpen)) return;
     TreeTemplate& t = state.tree_template;
     const std::vector<GrammarConstant> constants = grammar_constants(t.grammar);
     for (const GrammarConstant& c : constants) {
+        const std::string label = constant_label(c);
+        if (!search_finds(query, label + " " + c.name + " " + c.help)) continue;
+        const std::string id = label + "##define " + c.name;
         bool changed = false;
         double value = c.value;
         if (c.integer) {
             int v = static_cast<int>(c.value);
-            changed = ImGui::SliderInt(c.name.c_str(), &v, static_cast<int>(c.min),
-                                       static_cast<int>(c.max));
+            changed =
+                ImGui::SliderInt(id.c_str(), &v, static_cast<int>(c.min), static_cast<int>(c.max));
             value = v;
         } else {
             float v = static_cast<float>(c.value);
-            changed = ImGui::SliderFloat(c.name.c_str(), &v, static_cast<float>(c.min),
+            changed = ImGui::SliderFloat(id.c_str(), &v, static_cast<float>(c.min),
                                          static_cast<float>(c.max), "%.4g");
             value = round_for_range(v, c.min, c.max);
         }
@@ -216,13 +231,14 @@ void this_tree_section(StudioState& state) {
                               c.line, c.min, c.max);
         if (changed && value != c.value) set_grammar_constant(t.grammar, c.name, value);
     }
-    if (constants.empty() && reads_grammar(t)) {
+    if (constants.empty() && reads_grammar(t) && query.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
             "No constants with a range in the rules. A #define with \"# [min, max] help\" "
             "after its value becomes a slider here, e.g.  #define a 34  # [10, 60] fork angle");
         ImGui::PopTextWrapPos();
     }
+    if (!search_finds(query, "colours colors bark crown leaves")) return;
     PartColors colors = t.colors;
     const ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float;
     bool recolor = ImGui::ColorEdit3("bark", &colors.trunk.x, flags);
@@ -287,49 +303,75 @@ bool parameter_widget(const ParamInfo& info, double& value, const SliderRange& r
     return changed;
 }
 
+// The registry's parameters under a collapsible header per group (Shape, Branches, ...,
+// core/param_table.h), filtered by the search field; the turtle and width model head Shape,
+// the seed heads Variation.
 void parameter_section(StudioState& state) {
-    section("Parameters");
     TreeTemplate& t = state.tree_template;
-    enum_combo("turtle", t.mode, {"abop", "lptg"},
-               "abop: ABOP's H, L, U turtle; lptg: Heuer's elevation / azimuth turtle");
-    enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
-               "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
-               "pipe: Murray's pipe model from tip_width");
     TreeParams& params = t.params;
-    const std::uint64_t step = 1;
-    ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step);
-    tooltip("the random choices of stochastic rules and rand(); same seed, same tree");
-    ImGui::SameLine();
-    if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
-    tooltip("a new random seed");
-    // Parameters this tree's rules and growth never read are shown, greyed, with the reason.
-    // (crown_merge and drop_hidden act in the full-detail view too: it is meshed for the
-    // template's budget, as the game mesh is.) The rows come by group from the registry.
-    std::optional<ParamGroup> group;
-    for (const ParameterRow& row : parameter_rows(t)) {
-        const ParamInfo& info = *row.info;
-        if (group && *group != info.group) ImGui::Separator();
-        group = info.group;
-        double value = *get_param(params, info.key);
-        const bool disabled = !row.unread.empty();
-        ImGui::BeginDisabled(disabled);
-        const double own = *get_param(state.original.params, info.key);
-        const SliderRange range = slider_range(info.key, std::max(own, value));
-        const bool changed = parameter_widget(info, value, range);
-        ImGui::EndDisabled();
-        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            std::string help(info.help);
-            help += budget_resolution_note(params, info.key);
-            if (disabled)
-                ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
-                                  row.unread.c_str());
-            else if (info.choices.empty())
-                ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(), info.min,
-                                  info.max);
-            else
-                ImGui::SetTooltip("%s", help.c_str());
+    const std::string& query = state.parameter_search;
+    const std::vector<ParameterRow> rows = parameter_rows(t);
+    for (const ParamGroup group : param_groups()) {
+        const std::string title(group_title(group));
+        const bool shape = group == ParamGroup::Shape, variation = group == ParamGroup::Variation;
+        const bool turtle_found =
+            shape && search_finds(query, "turtle abop lptg widths explicit taper pipe Shape");
+        const bool seed_found = variation && search_finds(query, "seed random Variation");
+        std::vector<const ParameterRow*> found;
+        for (const ParameterRow& row : rows)
+            if (row.info->group == group && search_finds(query, parameter_search_text(*row.info)))
+                found.push_back(&row);
+        if (found.empty() && !turtle_found && !seed_found) continue;
+        if (!query.empty()) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+        if (!ImGui::CollapsingHeader(title.c_str(), shape ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+            continue;
+        ImGui::PushID(title.c_str());
+        if (turtle_found) {
+            enum_combo("turtle", t.mode, {"abop", "lptg"},
+                       "abop: ABOP's H, L, U turtle; lptg: Heuer's elevation / azimuth turtle");
+            enum_combo("widths", t.width_model, {"explicit", "taper", "pipe"},
+                       "explicit: ! sets widths; taper: trunk_taper / branch_taper per segment; "
+                       "pipe: Murray's pipe model from tip_width");
         }
-        if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+        if (seed_found) {
+            const std::uint64_t step = 1;
+            // Held to the one seed range (core/seed.h), so a saved template always reopens.
+            if (ImGui::InputScalar("seed", ImGuiDataType_U64, &params.seed, &step))
+                params.seed = std::min(params.seed, kMaxSeed);
+            tooltip(
+                "the random choices of stochastic rules and rand(); same seed, same tree "
+                "(0 to 2^53 - 1)");
+            ImGui::SameLine();
+            if (ImGui::Button("new")) params.seed = std::random_device{}() % 1000000;
+            tooltip("a new random seed");
+        }
+        // Parameters this tree's rules and growth never read are shown, greyed, with the
+        // reason. (crown_merge and drop_hidden act in the full-detail view too: it is meshed
+        // for the template's budget, as the game mesh is.)
+        for (const ParameterRow* row : found) {
+            const ParamInfo& info = *row->info;
+            double value = *get_param(params, info.key);
+            const bool disabled = !row->unread.empty();
+            ImGui::BeginDisabled(disabled);
+            const double own = *get_param(state.original.params, info.key);
+            const SliderRange range = slider_range(info.key, std::max(own, value));
+            const bool changed = parameter_widget(info, value, range);
+            ImGui::EndDisabled();
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+                std::string help(info.help);
+                help += budget_resolution_note(params, info.key);
+                if (disabled)
+                    ImGui::SetTooltip("%s\nNot read by this tree: %s", help.c_str(),
+                                      row->unread.c_str());
+                else if (info.choices.empty())
+                    ImGui::SetTooltip("%s\nrange %g to %g (Ctrl+click to type)", help.c_str(),
+                                      info.min, info.max);
+                else
+                    ImGui::SetTooltip("%s", help.c_str());
+            }
+            if (changed) set_param(params, info.key, std::clamp(value, info.min, info.max));
+        }
+        ImGui::PopID();
     }
 }
 
@@ -343,7 +385,9 @@ void cost_confirmation(StudioState& state) {
         asked.clear();
         return;
     }
-    if (asked != state.cost_warning) {
+    // Rules applied on a typing pause show the estimate beside the editor instead; and no
+    // dialog takes the keyboard from a text field being typed into.
+    if (asked != state.cost_warning && !state.cost_warning_quiet && !ImGui::GetIO().WantTextInput) {
         asked = state.cost_warning;
         ImGui::OpenPopup(kCostDialog);
     }
@@ -364,12 +408,48 @@ void cost_confirmation(StudioState& state) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Undo the edit")) {
-        undo(state);
+        undo_refused_edit(state);
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     if (ImGui::Button("Not now")) ImGui::CloseCurrentPopup();
     tooltip("keep the edit without running it; \"run anyway\" stays under the rules");
+    ImGui::EndPopup();
+}
+
+constexpr const char* kDiscardDialog = "Discard changes?";
+
+// Asked when another template is picked or opened over unsaved edits (switch_template()):
+// opened here, at the top of the ID stack, and begun every frame while it is open.
+void discard_dialog(StudioState& state) {
+    if (state.pending_switch && !ImGui::IsPopupOpen(kDiscardDialog) &&
+        !ImGui::GetIO().WantTextInput)
+        ImGui::OpenPopup(kDiscardDialog);
+    if (!ImGui::BeginPopupModal(
+            kDiscardDialog, nullptr,
+            ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings))
+        return;
+    if (!state.pending_switch) {  // answered elsewhere
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const TemplateSwitch& next = *state.pending_switch;
+    ImGui::PushTextWrapPos(420.0f);
+    ImGui::Text("\"%s\" has unsaved changes. Open \"%s\" and discard them?",
+                state.tree_template.name.c_str(),
+                next.path.empty() ? next.tree_template.name.c_str() : next.path.c_str());
+    ImGui::TextDisabled("Undo (Ctrl+Z) brings the edits back.");
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("Discard and open")) {
+        confirm_switch(state);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Keep editing")) {
+        cancel_switch(state);
+        ImGui::CloseCurrentPopup();
+    }
     ImGui::EndPopup();
 }
 
@@ -386,6 +466,7 @@ void shortcuts_window(StudioState& state) {
             {"Ctrl+O", "open a template"},
             {"Ctrl+S", "save the template"},
             {"Ctrl+E", "export"},
+            {"Ctrl+Enter", "apply the rules being typed (else after a pause)"},
             {"F", "frame the tree"},
             {"0 - 3", "show that LOD of the game mesh"},
             {"P", "screenshot of the 3D view"},
@@ -420,6 +501,9 @@ void cost_notice(StudioState& state) {
         state.run_costly = true;
         start_generation(state);
     }
+    ImGui::SameLine();
+    if (ImGui::Button("undo the edit")) undo_refused_edit(state);
+    tooltip("back to the edit before this one; the view frames the tree again");
 }
 
 void rules_section(StudioState& state, RulesEditorState& editor, float height) {
@@ -438,18 +522,34 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
         cost_notice(state);
         return;
     }
-    const TextMark mark{state.error_line, state.error_column};
-    rules_editor("rules", state.tree_template.grammar, mark, editor, height);
+    // The editor edits a draft (ui/state/rules_draft.h): it becomes the grammar on a typing
+    // pause or Ctrl+Enter, and only when it parses.
+    sync_rules_draft(state);
+    RulesDraft& draft = state.rules;
+    const bool refused = !draft.error.empty();
+    const TextMark mark = refused ? TextMark{draft.error_line, draft.error_column}
+                                  : TextMark{state.error_line, state.error_column};
+    const bool ctrl_enter = ctrl_enter_in_editor(editor);
+    if (rules_editor("rules", draft.text, mark, editor, height))
+        rules_typed(state, std::chrono::steady_clock::now());
+    apply_rules_draft(state, std::chrono::steady_clock::now(), ctrl_enter);
     rules_warnings(state.tree_template, editor);
-    if (state.error_line > 0) {
-        ImGui::TextColored(kErrorColor, "line %d, column %d", state.error_line, state.error_column);
+    if (draft.pending) {
+        ImGui::TextDisabled("typing: applied after a pause, or Ctrl+Enter");
+    } else if (mark.line > 0) {
+        ImGui::TextColored(kErrorColor, "line %d, column %d", mark.line, mark.column);
         ImGui::SameLine();
         if (ImGui::SmallButton("show")) reveal(editor, mark);
         tooltip("put the cursor there");
     }
-    wrapped_text(state.error, true);
-    if (!state.error.empty())
-        ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    if (!draft.pending && refused) {
+        wrapped_text(draft.error, true);
+        ImGui::TextDisabled("(not applied: the tree is of the last rules that parsed)");
+    } else {
+        wrapped_text(state.error, true);
+        if (!state.error.empty())
+            ImGui::TextDisabled("(the tree on screen is the last one that worked)");
+    }
     cost_notice(state);
 }
 
@@ -488,6 +588,23 @@ void colonization_view_row(ViewToggles& v, int last) {
     ImGui::EndDisabled();
 }
 
+// The wind the view sways the tree in (export/wind_motion.h, docs/wind.glsl's uniforms):
+// how far the top moves and where from. The exported data does not depend on them.
+void wind_row(WindMotion& motion) {
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::SliderFloat("strength", &motion.strength, 0.0f, 2.0f, "%.2f m");
+    tooltip("metres the top of the tree moves in a steady wind (the shader's strength)");
+    ImGui::SameLine();
+    float degrees = glm::degrees(std::atan2(motion.direction.y, motion.direction.x));
+    if (degrees < 0.0f) degrees += 360.0f;
+    ImGui::SetNextItemWidth(110.0f);
+    if (ImGui::SliderFloat("from", &degrees, 0.0f, 360.0f, "%.0f deg")) {
+        const float r = glm::radians(degrees);
+        motion.direction = {std::cos(r), std::sin(r)};
+    }
+    tooltip("the wind's direction on the ground, degrees from +x towards +z");
+}
+
 void view_section(StudioState& state) {
     section("View");
     ViewToggles& v = state.view;
@@ -524,6 +641,7 @@ void view_section(StudioState& state) {
     }
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
+    if (v.wind) wind_row(v.wind_motion);
     ImGui::Checkbox("scale figure", &v.scale_figure);
     tooltip("a 1.8 m person beside the trunk");
     ImGui::SameLine();
@@ -557,11 +675,92 @@ void profile_combo(EngineProfile& profile) {
     tooltip(std::string(profile_info(profile).summary).c_str());
 }
 
+// What the export writes, a line per part and a column per LOD level, when the view has the
+// game mesh at the export's budget: trunk and crown share one target, leaves have their own.
+void budget_table(const StudioState& state) {
+    const GeneratedTree* shown = state.tree.get();
+    const std::size_t budget = export_budget(state);
+    if (!shown || !shown->reduced() || shown->budget != budget) {
+        ImGui::PushTextWrapPos(0.0f);
+        if (shown && shown->reduced())
+            ImGui::TextDisabled(
+                "(the view shows the game mesh at the template's %zu; this export reduces to "
+                "%zu)",
+                shown->budget, budget);
+        else
+            ImGui::TextDisabled("(switch low poly on to see the game mesh's triangles)");
+        ImGui::PopTextWrapPos();
+        return;
+    }
+    const int levels =
+        state.export_settings.lod ? static_cast<int>(shown->finished.levels.size()) : 1;
+    if (!ImGui::BeginTable(
+            "budget", levels + 1,
+            ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV))
+        return;
+    ImGui::TableSetupColumn("writes");
+    for (int level = 0; level < levels; ++level)
+        ImGui::TableSetupColumn(levels > 1 ? ("LOD" + std::to_string(level)).c_str()
+                                           : "triangles / target");
+    ImGui::TableHeadersRow();
+    std::vector<std::vector<BudgetLine>> columns;
+    std::string notes;
+    for (int level = 0; level < levels; ++level) {
+        const GameMeshTotals totals = game_mesh_totals(*shown, level);
+        columns.push_back(budget_lines(totals));
+        if (!totals.note.empty())
+            notes += "LOD" + std::to_string(level) + ": " + totals.note + "\n";
+    }
+    for (std::size_t row = 0; row < columns.front().size(); ++row) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(columns.front()[row].part.c_str());
+        for (const std::vector<BudgetLine>& column : columns) {
+            const BudgetLine& line = column[row];
+            ImGui::TableNextColumn();
+            char cell[64];
+            if (line.target == 0)
+                std::snprintf(cell, sizeof cell, "%zu", line.triangles);
+            else if (line.target == SIZE_MAX)
+                std::snprintf(cell, sizeof cell, "%zu / all", line.triangles);
+            else
+                std::snprintf(cell, sizeof cell, "%zu / %zu", line.triangles, line.target);
+            if (line.over)
+                ImGui::TextColored(kWarningColor, "%s over", cell);
+            else
+                ImGui::TextUnformatted(cell);
+            if (line.over && !notes.empty()) tooltip(notes.c_str());
+        }
+    }
+    ImGui::EndTable();
+}
+
 void export_section(StudioState& state) {
     section("Export");
     ExportSettings& e = state.export_settings;
-    ImGui::InputText("path", &e.path);
+    ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize("Browse...").x -
+                         2.0f * ImGui::GetStyle().FramePadding.x -
+                         ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::InputText("##path", &e.path)) state.export_missing_folder.clear();
+    ImGui::PopItemWidth();
     tooltip(("the extension picks the format: " + name_list(format_extensions())).c_str());
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::Button("Browse...")) {
+        const std::filesystem::path path(e.path);
+        std::error_code ec;
+        g_export_dialog.folder = std::filesystem::absolute(path, ec).parent_path().string();
+        g_export_dialog.name = path.filename().string();
+        g_export_dialog.open_requested = true;
+    }
+    tooltip("pick the folder and name to export to");
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("path");
+    if (!state.export_missing_folder.empty()) {
+        ImGui::TextColored(kWarningColor, "%s does not exist.",
+                           state.export_missing_folder.c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("create it and export")) create_export_folder(state);
+    }
     const ExportFormat* format = format_from_extension(e.path);
     if (ImGui::BeginCombo("format", format ? std::string(format->name).c_str() : "(extension?)")) {
         for (const ExportFormat* f : export_formats())
@@ -569,11 +768,21 @@ void export_section(StudioState& state) {
                 e.path = std::filesystem::path(e.path).replace_extension(f->extension).string();
         ImGui::EndCombo();
     }
-    int& budget = state.tree_template.params.triangle_budget;
-    if (ImGui::InputInt("budget", &budget, 100, 1000)) budget = std::max(budget, 0);
+    // The export's own budget: editing it is no edit of the template until "keep" is pressed.
+    const int template_budget = state.tree_template.params.triangle_budget;
+    int budget = static_cast<int>(export_budget(state));
+    if (ImGui::InputInt("budget", &budget, 100, 1000)) e.budget = std::max(budget, 0);
     tooltip(
-        "trunk + crown triangles after reduction (0 keeps every triangle); the "
-        "template's triangle_budget");
+        "trunk + crown triangles of this export after reduction (0 keeps every triangle); "
+        "leaves get as many again. Changing it edits no template.");
+    if (e.budget >= 0 && e.budget != template_budget) {
+        ImGui::TextDisabled("the template's is %d:", template_budget);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("keep in template")) keep_export_budget(state);
+        tooltip("make this the template's triangle_budget (the view and a save follow)");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("use template's")) e.budget = -1;
+    }
     ImGui::Checkbox("LOD chain", &e.lod);
     tooltip("four levels: budget, 1/2, 1/4, 1/8 (one .glb, or a file per level)");
     profile_combo(e.profile);
@@ -581,17 +790,7 @@ void export_section(StudioState& state) {
     ImGui::BeginDisabled(state.export_job.valid() || !state.tree);
     if (ImGui::Button("Export (Ctrl+E)")) start_export(state);
     ImGui::EndDisabled();
-    // What the export writes, level by level, when the view has it at this budget.
-    const GeneratedTree* shown = state.tree.get();
-    if (shown && shown->reduced() && static_cast<int>(shown->budget) == budget) {
-        const int levels = e.lod ? static_cast<int>(shown->finished.levels.size()) : 1;
-        for (int level = 0; level < levels; ++level) {
-            const std::string label = e.lod ? "LOD" + std::to_string(level) + ": " : "writes ";
-            totals_line(label, game_mesh_totals(*shown, level), true);
-        }
-    } else {
-        ImGui::TextDisabled("(switch low poly on to see the game mesh's triangles)");
-    }
+    budget_table(state);
     wrapped_text(state.export_message, state.export_failed);
 }
 
@@ -620,17 +819,72 @@ PanelLayout panel_layout(float width, float height) {
     layout.left = std::min(370.0f, 0.3f * width);
     layout.right = std::min(430.0f, 0.34f * width);
     layout.bottom = ImGui::GetFrameHeightWithSpacing() + 8.0f;
+    layout.top = ImGui::GetFrameHeight();  // BeginMainMenuBar's height
     return layout;
 }
 
+void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) request_file_dialog(false);
+        if (ImGui::BeginMenu("Open recent", !state.recent_files.empty())) {
+            for (const std::string& file : state.recent_files)
+                if (ImGui::MenuItem(file.c_str())) open_template_file(state, file);
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) save_or_ask(state);
+        if (ImGui::MenuItem("Save as...")) {
+            g_file_dialog.name = std::filesystem::path(state.template_path).filename().string();
+            request_file_dialog(true);
+        }
+        ImGui::Separator();
+        const bool exporting = state.export_job.valid();
+        if (ImGui::MenuItem("Export tree", "Ctrl+E", false, !exporting && state.tree))
+            start_export(state);
+        tooltip(("the tree on screen to " + state.export_settings.path).c_str());
+        if (ImGui::MenuItem("Export forest", nullptr, false, !exporting))
+            start_forest_export(state);
+        tooltip(("the forest preview's square, planted at the template's budget, to " +
+                 forest_export_path(state.export_settings.path).string() +
+                 " with its placement lists (as sylva forest writes)")
+                    .c_str());
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) state.quit_requested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z")) undo(state);
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, !state.redo.empty())) redo(state);
+        if (ImGui::MenuItem("Reset to the template")) reset_to_template(state);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        ImGui::MenuItem("Variants strip", nullptr, &variants_open);
+        if (layout_open) ImGui::MenuItem("Layout panel", nullptr, layout_open);
+        ImGui::MenuItem("Forest preview", nullptr, &state.view.forest);
+        ImGui::MenuItem("Low poly (game mesh)", nullptr, &state.view.low_poly);
+        ImGui::MenuItem("Wind", nullptr, &state.view.wind);
+        if (ImGui::MenuItem("Frame tree", "F")) state.frame_requested = true;
+        ImGui::Separator();
+        ImGui::MenuItem("Shortcuts", "F1", &state.show_shortcuts);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
 void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(layout.left, layout.height - layout.bottom));
+    ImGui::SetNextWindowPos(ImVec2(0.0f, layout.top));
+    ImGui::SetNextWindowSize(ImVec2(layout.left, layout.height - layout.bottom - layout.top));
     ImGui::Begin("Tree", nullptr, kDocked);
     ImGui::PushItemWidth(-130.0f);
     actions_row(state);
     estimate_line(state);
     template_section(state);
+    section("Parameters");
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputTextWithHint("##search", "search parameters (e.g. leaf, angle)",
+                             &state.parameter_search);
+    tooltip("shows the parameters whose name, help or group has every word typed");
     this_tree_section(state);
     parameter_section(state);
     if (!state.crown_notice.empty()) {
@@ -647,12 +901,12 @@ void draw_tree_panel(StudioState& state, const PanelLayout& layout) {
 }
 
 void draw_rules_panel(StudioState& state, RulesEditorState& editor, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(layout.right, layout.height - layout.bottom));
+    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right, layout.top));
+    ImGui::SetNextWindowSize(ImVec2(layout.right, layout.height - layout.bottom - layout.top));
     ImGui::Begin("Rules and export", nullptr, kDocked);
     ImGui::PushItemWidth(-80.0f);
     // The editor takes what the other sections leave.
-    const float below = 18.0f * ImGui::GetFrameHeightWithSpacing();
+    const float below = 24.0f * ImGui::GetFrameHeightWithSpacing();
     rules_section(state, editor, std::max(ImGui::GetContentRegionAvail().y - below, 120.0f));
     view_section(state);
     export_section(state);
@@ -768,13 +1022,26 @@ void draw_status_bar(StudioState& state, const PanelLayout& layout, float fps) {
 void draw_dialogs(StudioState& state) {
     cost_confirmation(state);
     if (auto path = file_dialog(g_file_dialog, state.recent_files)) {
-        state.template_path = *path;
-        g_file_dialog.saving ? save_template_to_file(state) : open_template_file(state);
+        if (g_file_dialog.saving) {
+            state.template_path = *path;
+            save_template_to_file(state);
+        } else {
+            open_template_file(state, *path);
+        }
+    }
+    discard_dialog(state);
+    if (auto path = file_dialog(g_export_dialog, {})) {
+        state.export_settings.path = *path;
+        state.export_missing_folder.clear();
     }
 }
 
 bool cost_dialog_open() {
     return ImGui::IsPopupOpen(kCostDialog);
+}
+
+bool discard_dialog_open() {
+    return ImGui::IsPopupOpen(kDiscardDialog);
 }
 
 }  // namespace sylva::studio

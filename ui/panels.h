@@ -12,12 +12,19 @@ namespace sylva::studio {
 struct PanelLayout {
     float width = 0, height = 0;  // the whole window
     float left = 0, right = 0, bottom = 0;
+    float top = 0;  // the menu bar
 };
 
 PanelLayout panel_layout(float width, float height);
 
 // Opens the studio's file dialog (Open, or Save as) on the next frame: Ctrl+O.
 void request_file_dialog(bool saving);
+
+// Along the top: File (open, save, export the tree or the forest preview's square), Edit
+// (undo, redo, reset) and View (the Variants strip, the layout panel, the forest preview,
+// the shortcut list). `variants_open` / `layout_open` are those windows' open flags;
+// `layout_open` is null when the studio is built without the layout module.
+void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open);
 
 // Left: Generate / live / undo / redo, the template picker, open / save, and the parameters.
 void draw_tree_panel(StudioState& state, const PanelLayout& layout);
@@ -38,5 +45,8 @@ void draw_dialogs(StudioState& state);
 
 // True while the "run anyway?" confirmation is open (after draw_dialogs).
 bool cost_dialog_open();
+
+// True while "discard changes?" is open (after draw_dialogs).
+bool discard_dialog_open();
 
 }  // namespace sylva::studio

@@ -92,6 +92,20 @@ void reveal(RulesEditorState& editor, TextMark mark) {
     editor.select_column = std::max(mark.column, 1);
 }
 
+bool ctrl_enter_in_editor(const RulesEditorState& editor) {
+    ImGuiIO& io = ImGui::GetIO();
+    bool pressed = false;
+    for (ImGuiKey key : {ImGuiKey_Enter, ImGuiKey_KeyPadEnter}) {
+        const int index = ImGui::GetKeyIndex(key);
+        if (!editor.active || !io.KeyCtrl || !ImGui::IsKeyPressed(index, false)) continue;
+        // The field would end its editing on it (and lose the characters typed while it
+        // takes the keyboard back): it never sees this press.
+        io.KeysDownDuration[index] = -1.0f;
+        pressed = true;
+    }
+    return pressed;
+}
+
 bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorState& editor,
                   float height) {
     const ImGuiStyle& style = ImGui::GetStyle();
@@ -160,6 +174,7 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
     } else {
         editor.cursor = -1;
     }
+    editor.active = ImGui::IsItemActive();
     ImGui::EndChild();
     ImGui::PopStyleVar();
     ImGui::PopStyleColor();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace sylva::studio {
 
@@ -10,7 +11,8 @@ namespace sylva::studio {
 struct RulesEditorState {
     // When set, the next frame focuses the editor and puts the cursor here (1-based).
     int select_line = 0, select_column = 1;
-    int cursor = -1;  // the text cursor's byte offset while the editor is active
+    int cursor = -1;      // the text cursor's byte offset while the editor is active
+    bool active = false;  // the editor had the keyboard at the end of the last frame
 };
 
 struct TextMark {
@@ -25,5 +27,10 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
 
 // Scrolls to `mark` and puts the cursor there on the next frame.
 void reveal(RulesEditorState& editor, TextMark mark);
+
+// True when Ctrl+Enter is pressed this frame while the editor has the keyboard. Call before
+// rules_editor(): the press is taken from ImGui (a multi-line field would end its editing on
+// it), so the editor keeps the keyboard and the cursor.
+bool ctrl_enter_in_editor(const RulesEditorState& editor);
 
 }  // namespace sylva::studio

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
@@ -131,18 +132,35 @@ void update_variants_strip(VariantsStrip& strip) {
     strip.render_pending = false;
 }
 
+float variant_thumbnail_size(float width, int count, float spacing) {
+    const int n = std::max(count, 1);
+    const float fit = (width - spacing * static_cast<float>(n - 1)) / static_cast<float>(n);
+    return std::clamp(std::floor(fit), 32.0f, static_cast<float>(kThumbnailSize));
+}
+
 void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLayout& layout) {
-    const float height = kThumbnailSize + 104.0f;  // controls, labels, scrollbar
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = layout.width - layout.left - layout.right;
+    // The thumbnails shrink to fit the window's width side by side; the controls wrap.
+    const int shown_count =
+        strip.thumbnails.empty() ? strip.count : static_cast<int>(strip.thumbnails.size());
+    const float thumb = variant_thumbnail_size(width - 2.0f * style.WindowPadding.x, shown_count,
+                                               style.ItemSpacing.x);
+    const float controls_width = 3.0f * 150.0f + 120.0f;
+    const int control_rows = width - 2.0f * style.WindowPadding.x >= controls_width ? 1 : 2;
+    const float height = ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
+                         static_cast<float>(control_rows) * ImGui::GetFrameHeightWithSpacing() +
+                         thumb + ImGui::GetTextLineHeightWithSpacing() + style.ItemSpacing.y;
     // Collapsed, only the title bar shows: it sits on the status bar, not over the tree.
     const float shown = strip.open ? height : ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(layout.left, layout.height - layout.bottom - shown),
                             ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(layout.width - layout.left - layout.right, height),
-                             ImGuiCond_Always);
-    ImGui::SetNextWindowCollapsed(!strip.open, ImGuiCond_Once);
-    strip.open = ImGui::Begin(
-        "Variants", nullptr,
-        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::SetNextWindowCollapsed(!strip.open, ImGuiCond_Always);  // the View menu opens it
+    strip.open =
+        ImGui::Begin("Variants", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                         ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     if (!strip.open) {
         ImGui::End();
         return;
@@ -152,9 +170,11 @@ void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLa
     ImGui::SameLine();
     ImGui::SetNextItemWidth(100);
     ImGui::SliderFloat("jitter", &strip.jitter, 0.0f, 1.0f, "%.2f");
-    ImGui::SameLine();
+    if (control_rows == 1) ImGui::SameLine();
     ImGui::SetNextItemWidth(100);
     ImGui::InputInt("seed", &strip.base_seed);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the first variant's seed; the others follow from it (sylva batch's)");
     ImGui::SameLine();
     if (ImGui::Button(strip.job.valid() ? "making..." : "Make variants"))
         start_variants(strip, state.tree_template);
@@ -166,12 +186,12 @@ void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLa
         if (i > 0) ImGui::SameLine();
         ImGui::BeginGroup();
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t.texture)),
-                     ImVec2(kThumbnailSize, kThumbnailSize), ImVec2(0, 1), ImVec2(1, 0));
+                     ImVec2(thumb, thumb), ImVec2(0, 1), ImVec2(1, 0));
         const bool clicked = ImGui::IsItemClicked();
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("seed %llu: click to edit this variant",
+            ImGui::SetTooltip("variant %zu (seed %llu): click to edit this variant", i + 1,
                               static_cast<unsigned long long>(t.tree.params.seed));
-        ImGui::Text("seed ...%04llu", static_cast<unsigned long long>(t.tree.params.seed % 10000));
+        ImGui::Text("%zu", i + 1);
         ImGui::EndGroup();
         if (clicked) load_template_into(state, t.tree);
     }

@@ -43,6 +43,9 @@ bool variants_running(const VariantsStrip& strip);
 // call outside ImGui's frame drawing, before the main view is drawn (it binds its own
 // framebuffer and viewport).
 void update_variants_strip(VariantsStrip& strip);
+// The side of a thumbnail when `count` of them share `width` pixels with `spacing` between
+// them: at most kThumbnailSize, at least 32.
+float variant_thumbnail_size(float width, int count, float spacing);
 void draw_variants_strip(VariantsStrip& strip, StudioState& state, const PanelLayout& layout);
 // Cancels the job and frees the textures (the GL context still current).
 void release_variants_strip(VariantsStrip& strip);

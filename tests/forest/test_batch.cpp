@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,9 +13,11 @@
 
 #include "core/errors.h"
 #include "core/random.h"
+#include "core/seed.h"
 #include "forest/batch.h"
 #include "forest/variation.h"
 #include "tests/helpers.h"
+#include "tree/grammar_constants.h"
 #include "tree/parameters.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
@@ -51,10 +55,19 @@ class Batch : public ::testing::Test {
     fs::path dir_;
 };
 
-TEST(Variation, SeedsAreSplitmixOutputsAndDistinct) {
+// A variant's seed is the top 53 bits of a splitmix64 output: distinct, and a seed of the
+// one range (core/seed.h) whatever the base, so a saved variant always reopens.
+TEST(Variation, SeedsAreSplitmixOutputsWithinTheSeedRangeAndDistinct) {
     Random r(42);
-    for (std::uint64_t i = 0; i < 5; ++i) EXPECT_EQ(variant_seed(42, i), r.next());
+    for (std::uint64_t i = 0; i < 5; ++i) EXPECT_EQ(variant_seed(42, i), r.next() >> 11);
     EXPECT_NE(variant_seed(42, 0), variant_seed(43, 0));
+    std::uint64_t largest = 0;
+    for (const std::uint64_t base : {std::uint64_t{0}, std::uint64_t{1}, ~std::uint64_t{0}})
+        for (std::uint64_t i = 0; i < 4096; ++i) {
+            EXPECT_LE(variant_seed(base, i), kMaxSeed);
+            largest = std::max(largest, variant_seed(base, i));
+        }
+    EXPECT_GT(largest, kMaxSeed / 2);  // the whole range is used, not a corner of it
 }
 
 TEST(Variation, JitterStaysInRangeAndVaries) {
@@ -72,6 +85,38 @@ TEST(Variation, JitterStaysInRangeAndVaries) {
     EXPECT_EQ(length(varied_params(base, 1, 0.3)), length(a));  // deterministic
     EXPECT_EQ(length(varied_params(base, 5, 0.0)), length(base));
     EXPECT_THROW(varied_params(base, 1, 1.5), InputError);
+}
+
+// `--jitter a=0.3`: a #define varies within its comment's range, whole where the range is,
+// each key from a stream of its own (adding a key leaves the others' values).
+TEST(Variation, KeyJitterVariesGrammarConstantsWithinTheirRanges) {
+    const TreeTemplate oak = load_template("oak");  // a 46 [20, 75], s 0.8 [0.6, 0.95]
+    const std::vector<KeyJitter> keys = {{"a", 1.0}, {"s", 1.0}};
+    std::vector<double> as;
+    for (std::uint64_t seed = 0; seed < 64; ++seed) {
+        const auto values = varied_keys(oak, seed, keys);
+        ASSERT_EQ(values.size(), 2u);
+        EXPECT_EQ(values[0].first, "a");
+        EXPECT_GE(values[0].second, 20.0);
+        EXPECT_LE(values[0].second, 75.0);
+        EXPECT_EQ(values[0].second, std::round(values[0].second));
+        EXPECT_GE(values[1].second, 0.6);
+        EXPECT_LE(values[1].second, 0.95);
+        EXPECT_EQ(varied_keys(oak, seed, std::vector<KeyJitter>{{"s", 1.0}})[0].second,
+                  values[1].second);
+        as.push_back(values[0].second);
+    }
+    EXPECT_GT(*std::max_element(as.begin(), as.end()) - *std::min_element(as.begin(), as.end()),
+              20.0);
+    const std::vector<KeyJitter> none = {{"a", 0.0}};
+    EXPECT_EQ(varied_keys(oak, 3, none)[0].second, 46.0);
+
+    for (const KeyJitter& bad :
+         std::vector<KeyJitter>{{"zz", 0.1}, {"a", 1.5}, {"leaf_shape", 0.1}, {"crown_merge", 0.1}})
+        EXPECT_THROW(check_key_jitter(oak, std::vector<KeyJitter>{bad}), InputError) << bad.key;
+    TreeTemplate expression = oak;
+    expression.grammar = "#define x (a*2) # [0, 200] twice\n" + oak.grammar;
+    EXPECT_THROW(check_key_jitter(expression, std::vector<KeyJitter>{{"x", 0.1}}), InputError);
 }
 
 TEST(Variation, ParseShard) {
@@ -122,6 +167,22 @@ TEST_F(Batch, ATemplateNameCannotLeadOutOfTheFolder) {
         fs::remove_all(dir_);
     }
     EXPECT_FALSE(fs::exists(dir_.parent_path() / "escaped_0000.glb"));
+}
+
+// The manifest lists the jittered #define with each item's value, and that value is in the
+// rules the item was grown from.
+TEST_F(Batch, KeyJitterGoesIntoTheTreesAndTheManifest) {
+    BatchSettings settings = small_batch(2);
+    settings.key_jitter = {{"g", 0.5}};
+    const BatchResult result = run_batch(settings, dir_);
+    const nlohmann::json manifest = nlohmann::json::parse(files_in(dir_).at("manifest.json"));
+    EXPECT_EQ(manifest["jittered"].back(), "g");
+    for (std::size_t i = 0; i < 2; ++i) {
+        const double d = manifest["items"][i]["parameters"]["g"].get<double>();
+        EXPECT_EQ(d, result.items[i].keys.at(0).second);
+        EXPECT_EQ(find_grammar_define(item_template(settings, result.items[i]).grammar, "g")->value,
+                  d);
+    }
 }
 
 TEST_F(Batch, SameSeedSameBytes) {

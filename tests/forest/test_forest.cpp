@@ -167,6 +167,13 @@ TEST(SpeciesFile, TemplatesWeightsAndOverrides) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("species[1].set.age"), std::string::npos) << e.what();
     }
+    // A #define of the template's rules is set as `--set` sets it, held to its range.
+    const auto set =
+        parse_species_json(R"({"species": [{"template": "oak", "set": {"a": 60}}]})", "s.json");
+    EXPECT_NE(set[0].tree.grammar.find("#define a  60"), std::string::npos) << set[0].tree.grammar;
+    EXPECT_THROW(
+        parse_species_json(R"({"species": [{"template": "oak", "set": {"a": 90}}]})", "s.json"),
+        InputError);
     EXPECT_THROW(parse_species_json(R"({"species": []})", "s.json"), InputError);
     EXPECT_THROW(parse_species_json(R"({"species": [{"template": "nosuchtree"}]})", "s.json"),
                  InputError);

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/mesh_checks.h"
+#include "core/seed.h"
 #include "lowpoly/inner_shells.h"
 #include "tree/lowpoly_tree.h"
 #include "tree/pipeline.h"
@@ -29,11 +30,13 @@ TEST(HostileTemplate, AnIntegerNoDoubleHoldsIsRejectedWithKeyAndLine) {
     }
 }
 
-// A seed must be a TOML integer or a string of its digits: a float is refused before any
-// cast (casting seed = 1e308 to an integer would be undefined), naming the key and line.
+// A seed must be a TOML integer of the seed range (core/seed.h): a float is refused before any
+// cast (casting seed = 1e308 to an integer would be undefined), and so is a seed past 2^53 - 1
+// or one written as text, naming the key, the line and the range.
 TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
     for (const char* seed :
-         {"1e308", "2.5", "-1", "\"abc\"", "\"-7\"", "\"\"", "\"18446744073709551616\""}) {
+         {"1e308", "2.5", "-1", "\"abc\"", "\"-7\"", "\"\"", "\"42\"", "\"18446744073709551616\"",
+          "\"13757245211066428519\"", "9007199254740992", "9223372036854775807"}) {
         const std::string text =
             std::string("name = \"x\"\ngrammar = \"axiom: F\"\n[params]\nseed = ") + seed + "\n";
         try {
@@ -41,7 +44,9 @@ TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
             ADD_FAILURE() << "expected InputError for seed = " << seed;
         } catch (const InputError& e) {
             EXPECT_EQ(e.line(), 4) << seed;
-            EXPECT_NE(std::string(e.what()).find("seed must be a whole number"), std::string::npos)
+            EXPECT_NE(std::string(e.what()).find("seed must be a whole number from 0 to "
+                                                 "9007199254740991"),
+                      std::string::npos)
                 << e.what();
         }
     }
@@ -51,14 +56,19 @@ TEST(HostileTemplate, ASeedThatIsNoIntegerIsRejectedWithKeyAndLine) {
         42u);
 }
 
-// A variant's seed above TOML's largest integer (2^63 - 1) saves and reopens as it was.
-TEST(HostileTemplate, ASeedAboveTheLargestTomlIntegerSavesAndReopens) {
-    for (const std::uint64_t seed : {std::uint64_t{13757245211066428519u}, ~std::uint64_t{0},
-                                     std::uint64_t{9223372036854775807u}, std::uint64_t{0}}) {
-        TreeTemplate t = parse_template_file("name = \"x\"\ngrammar = \"axiom: F\"\n", "x.toml");
+// Every seed of the range saves as a plain integer and reopens as it was; a seed past it is
+// refused at the save, not written into a file no reader takes back.
+TEST(HostileTemplate, EverySeedOfTheRangeSavesAndReopensAndNoOtherIsWritten) {
+    TreeTemplate t = parse_template_file("name = \"x\"\ngrammar = \"axiom: F\"\n", "x.toml");
+    for (const std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{1}, kMaxSeed - 1, kMaxSeed}) {
         t.params.seed = seed;
-        const TreeTemplate back = parse_template_file(template_file_text(t), "back.toml");
-        EXPECT_EQ(back.params.seed, seed);
+        const std::string text = template_file_text(t);
+        EXPECT_NE(text.find("seed = " + std::to_string(seed) + "\n"), std::string::npos) << text;
+        EXPECT_EQ(parse_template_file(text, "back.toml").params.seed, seed);
+    }
+    for (const std::uint64_t seed : {kMaxSeed + 1, std::uint64_t{13757245211066428519u}}) {
+        t.params.seed = seed;
+        EXPECT_THROW(template_file_text(t), InputError) << seed;
     }
 }
 

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <filesystem>
 #include <glm/ext/matrix_transform.hpp>
 
 #include "core/cancel.h"
 #include "tree/template_library.h"
+#include "ui/state/forest_export.h"
 #include "ui/state/forest_preview_plan.h"
 #include "ui/state/studio_options.h"
 
@@ -100,6 +102,22 @@ TEST(ForestPreview, TheOptionTurnsItOn) {
     EXPECT_FALSE(parse_studio_options(1, off).forest_preview);
     const char* on[] = {"sylva-studio", "--forest-preview"};
     EXPECT_TRUE(parse_studio_options(2, on).forest_preview);
+}
+
+// File > Export forest writes the preview's square as sylva forest does, into a folder that
+// did not exist yet, beside the tree's export path.
+TEST(ForestPreview, ExportsTheSquareWithItsPlacements) {
+    EXPECT_EQ(forest_export_path("out/tree.glb"), std::filesystem::path("out/tree_forest.glb"));
+    TreeTemplate t = load_template("default");
+    t.params.triangle_budget = 200;
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_forest_export_test";
+    std::filesystem::remove_all(dir);
+    const auto glb = dir / "new" / "tree_forest.glb";
+    const std::string message = export_forest(t, {20.0f, 1}, glb);
+    EXPECT_NE(message.find("trees"), std::string::npos) << message;
+    EXPECT_GT(std::filesystem::file_size(glb), 1000u);
+    EXPECT_TRUE(std::filesystem::exists(forest::placements_csv_path(glb)));
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -550,6 +550,7 @@ TEST(StudioState, SavedTemplateOpensAsTheSameEdit) {
     EXPECT_FALSE(state.file_failed) << state.file_message;
 
     StudioState other = state_with(load_template("spruce"));
+    other.saved = other.tree_template;  // opened, not edited: no "discard changes?"
     other.template_path = state.template_path;
     open_template_file(other);
     EXPECT_FALSE(other.file_failed) << other.file_message;
@@ -636,6 +637,121 @@ TEST(StudioState, ACostlyEditIsHeldBackWithItsEstimate) {
     EXPECT_TRUE(state.cost_warning.empty());
     ASSERT_TRUE(wait_for_generations(state));
     EXPECT_TRUE(state.tree);
+}
+
+// Picking or opening another template over unsaved edits waits for "discard changes?";
+// discarding switches (and frames the new tree), keeping the edits changes nothing.
+TEST(StudioState, SwitchingTemplatesAsksBeforeDroppingUnsavedEdits) {
+    StudioState state;
+    load_template_into(state, load_template("oak"));
+    EXPECT_TRUE(switch_template(state, {load_template("birch"), {}, {}}));  // nothing to lose
+    EXPECT_EQ(state.tree_template.name, "birch");
+    EXPECT_TRUE(state.frame_next_tree);
+
+    state.tree_template.params.seed += 1;  // an edit
+    ASSERT_TRUE(unsaved_changes(state));
+    const std::string path = state.template_path;
+    EXPECT_FALSE(switch_template(state, {load_template("palm"), {}, {}}));
+    EXPECT_EQ(state.tree_template.name, "birch");
+    ASSERT_TRUE(state.pending_switch);
+    cancel_switch(state);
+    EXPECT_FALSE(state.pending_switch);
+    EXPECT_EQ(state.tree_template.name, "birch");
+    EXPECT_TRUE(unsaved_changes(state));
+
+    const auto file = std::filesystem::temp_directory_path() / "sylva_switch_test.toml";
+    {
+        StudioState writer;
+        load_template_into(writer, load_template("pine"));
+        writer.template_path = file.string();
+        save_template_to_file(writer);
+        ASSERT_FALSE(writer.file_failed) << writer.file_message;
+    }
+    open_template_file(state, file.string());
+    EXPECT_EQ(state.tree_template.name, "birch");  // waits
+    EXPECT_EQ(state.template_path, path);          // Save still writes where it did
+    ASSERT_TRUE(state.pending_switch);
+    state.frame_next_tree = false;
+    confirm_switch(state);
+    EXPECT_EQ(state.tree_template.name, "pine");
+    EXPECT_EQ(state.template_path, file.string());
+    EXPECT_FALSE(unsaved_changes(state));
+    EXPECT_TRUE(state.frame_next_tree);  // the camera frames the new tree
+    undo(state);                         // the dropped edits come back
+    EXPECT_EQ(state.tree_template.name, "birch");
+    cancel_generations(state);
+    EXPECT_TRUE(wait_for_generations(state));
+    std::filesystem::remove(file);
+}
+
+// The Export section's budget is the export's: it edits no template (no unsaved mark, no
+// new tree) until "keep in template" makes it the template's budget, as an undoable edit.
+TEST(StudioState, TheExportBudgetIsNoTemplateEditUntilKept) {
+    StudioState state;
+    load_template_into(state, load_template("oak"));
+    cancel_generations(state);
+    const int template_budget = state.tree_template.params.triangle_budget;
+    EXPECT_EQ(export_budget(state), static_cast<std::size_t>(template_budget));
+    state.export_settings.budget = 1500;
+    EXPECT_EQ(export_budget(state), 1500u);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, template_budget);
+    EXPECT_FALSE(unsaved_changes(state));
+    keep_export_budget(state);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, 1500);
+    EXPECT_TRUE(unsaved_changes(state));
+    EXPECT_EQ(state.export_settings.budget, -1);  // follows the template again
+    EXPECT_EQ(export_budget(state), 1500u);
+    undo(state);
+    EXPECT_EQ(state.tree_template.params.triangle_budget, template_budget);
+    cancel_generations(state);
+    EXPECT_TRUE(wait_for_generations(state));
+}
+
+// The budget table: one line per part, trunk and crown against their shared target, leaves
+// against theirs, the total against both; the game mesh of the view adds up.
+TEST(StudioState, TheBudgetTableHasALinePerPart) {
+    StudioState state = state_with(small_tree());
+    state.view.low_poly = true;
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    ASSERT_TRUE(state.tree && state.tree->reduced());
+    const GameMeshTotals totals = game_mesh_totals(*state.tree, 0);
+    const std::vector<BudgetLine> lines = budget_lines(totals);
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[0].part, "trunk");
+    EXPECT_EQ(lines[1].part, "crown");
+    EXPECT_EQ(lines[3].part, "leaves");
+    EXPECT_EQ(lines[4].part, "total");
+    EXPECT_EQ(lines[0].triangles + lines[1].triangles, lines[2].triangles);
+    EXPECT_EQ(lines[2].triangles + lines[3].triangles, lines[4].triangles);
+    EXPECT_EQ(lines[2].target, export_budget(state));
+    EXPECT_EQ(lines[4].target, lines[2].target + lines[3].target);
+    EXPECT_GT(lines[0].triangles, 0u);
+    EXPECT_FALSE(lines[2].over);
+}
+
+// Exporting into a folder that does not exist writes nothing and names the folder; creating
+// it exports, and the message says what was written.
+TEST(StudioState, ExportAsksToCreateAMissingFolder) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_test_missing";
+    std::filesystem::remove_all(dir);
+    StudioState state = state_with(small_tree());
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    state.export_settings.path = (dir / "deeper" / "tree.obj").string();
+    start_export(state);
+    EXPECT_FALSE(state.export_job.valid());
+    EXPECT_EQ(state.export_missing_folder, (dir / "deeper").string());
+    EXPECT_FALSE(std::filesystem::exists(dir));
+    create_export_folder(state);
+    EXPECT_TRUE(state.export_missing_folder.empty());
+    ASSERT_TRUE(state.export_job.valid());
+    state.export_job.wait();
+    poll_jobs(state);
+    EXPECT_FALSE(state.export_failed) << state.export_message;
+    EXPECT_NE(state.export_message.find("tree.obj"), std::string::npos) << state.export_message;
+    EXPECT_TRUE(std::filesystem::exists(dir / "deeper" / "tree.obj"));
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

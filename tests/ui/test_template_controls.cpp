@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "colonization/colonization_params.h"
 #include "tree/growth.h"
@@ -255,6 +257,54 @@ TEST(TemplateControls, AResolutionTheBudgetLowersSaysWhatItIsMeshedAt) {
     TreeParams full = willow.params;
     full.triangle_budget = 0;  // no game mesh: the sliders' values are used
     EXPECT_EQ(budget_resolution_note(full, "trunk_resolution"), "");
+}
+
+// The "This tree" sliders read as the template's comments name them, not a, f, s, d.
+TEST(TemplateControls, ConstantSlidersAreLabelledByTheirHelp) {
+    const std::vector<GrammarConstant> constants = grammar_constants(
+        "#define f 34 # [10, 60] fork angle, degrees\n#define n 5 # [2, 9] branches (per "
+        "whorl)\n#define d 1 # [0, 2]\n");
+    ASSERT_EQ(constants.size(), 3u);
+    EXPECT_EQ(constant_label(constants[0]), "fork angle");
+    EXPECT_EQ(constant_label(constants[1]), "branches");
+    EXPECT_EQ(constant_label(constants[2]), "d");  // no help: the name
+    for (const TreeTemplate* t : builtin_templates()) {
+        std::vector<std::string> labels;
+        for (const GrammarConstant& c : grammar_constants(t->grammar)) {
+            const std::string label = constant_label(c);
+            EXPECT_GT(label.size(), 1u) << t->name << ": #define " << c.name;
+            EXPECT_EQ(std::count(labels.begin(), labels.end(), label), 0)
+                << t->name << ": two sliders read \"" << label << "\"";
+            labels.push_back(label);
+        }
+    }
+}
+
+// Every parameter sits in one of the artist's groups, and the search
+// finds by words of the key, help or group, ignoring case.
+TEST(TemplateControls, ParametersAreGroupedAndSearchable) {
+    std::map<ParamGroup, int> per_group;
+    for (const ParamInfo& info : param_infos()) ++per_group[info.group];
+    for (const auto& [group, count] : per_group)
+        EXPECT_NE(std::find(param_groups().begin(), param_groups().end(), group),
+                  param_groups().end());
+    EXPECT_GT(per_group[ParamGroup::Shape], 0);
+    EXPECT_GT(per_group[ParamGroup::Leaves], 0);
+    EXPECT_GT(per_group[ParamGroup::GameMesh], 0);
+
+    auto found = [](std::string_view query) {
+        std::vector<std::string> keys;
+        for (const ParamInfo& info : param_infos())
+            if (search_finds(query, parameter_search_text(info))) keys.emplace_back(info.key);
+        return keys;
+    };
+    EXPECT_EQ(found("").size(), param_infos().size());
+    const std::vector<std::string> leaf = found("Leaf Density");
+    EXPECT_NE(std::find(leaf.begin(), leaf.end(), "leaf_density"), leaf.end());
+    EXPECT_LT(leaf.size(), 4u);
+    const std::vector<std::string> game = found("game mesh");  // a group's title
+    EXPECT_NE(std::find(game.begin(), game.end(), "triangle_budget"), game.end());
+    EXPECT_TRUE(found("no such word zzz").empty());
 }
 
 }  // namespace

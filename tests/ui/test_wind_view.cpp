@@ -46,5 +46,34 @@ TEST(WindView, WindOptionFreezesTheTime) {
     EXPECT_THROW(parse_studio_options(3, bad), UsageError);
 }
 
+// The View section's wind: no strength, no sway; a stronger wind moves the tree further, and
+// the sway follows the direction set (mostly along z for a wind along z).
+TEST(WindView, StrengthAndDirectionSetTheSway) {
+    const Tree tree = generate_tree(load_template("palm"));
+    auto farthest = [&](const WindMotion& motion) {
+        WindView view;
+        view.motion = motion;
+        set_wind_parts(view, tree.skeleton, tree.trunk, tree.crown, tree.leaves, tree.trunk,
+                       tree.crown, tree.leaves);
+        glm::vec3 most(0.0f);
+        for (float t : {0.4f, 1.3f, 2.2f}) {
+            sway(view, t);
+            for (const WindView::Part& part : view.parts)
+                for (std::size_t v = 0; v < part.rest.positions.size(); ++v) {
+                    const glm::vec3 d = part.swayed.positions[v] - part.rest.positions[v];
+                    if (glm::length(d) > glm::length(most)) most = d;
+                }
+        }
+        return most;
+    };
+    EXPECT_LT(glm::length(farthest({{1.0f, 0.0f}, 0.0f})), 1e-4f);
+    const glm::vec3 weak = farthest({{1.0f, 0.0f}, 0.2f});
+    const glm::vec3 strong = farthest({{1.0f, 0.0f}, 0.8f});
+    EXPECT_GT(glm::length(strong), 2.0f * glm::length(weak));
+    const glm::vec3 along_z = farthest({{0.0f, 1.0f}, 0.8f});
+    EXPECT_GT(std::abs(along_z.z), std::abs(along_z.x));
+    EXPECT_GT(std::abs(strong.x), std::abs(strong.z));
+}
+
 }  // namespace
 }  // namespace sylva::studio

@@ -485,6 +485,9 @@ void start_generation(StudioState& state) {
         state.cost_warning.clear();  // it was for a value left since
         return;
     }
+    // Rules applied on a typing pause are all this edit changed: a held-back estimate is
+    // shown inline, without the dialog.
+    const bool quiet = state.rules.quiet && state.tree_template.grammar != state.requested.grammar;
     state.requested = state.tree_template;
     state.requested_budget = budget;
     // A job the estimate puts over the limits (a very fine resolution, say) waits for "run
@@ -499,6 +502,7 @@ void start_generation(StudioState& state) {
                              " at least, over the " + limits +
                              " a job may take unasked (the real time is often several times "
                              "the estimate).";
+        state.cost_warning_quiet = quiet;
         return;
     }
     state.run_costly = false;
@@ -651,6 +655,39 @@ void redo(StudioState& state) {
     apply_edit(state, next);
 }
 
+std::size_t export_budget(const StudioState& state) {
+    const int budget = state.export_settings.budget;
+    return static_cast<std::size_t>(
+        std::max(budget < 0 ? state.tree_template.params.triangle_budget : budget, 0));
+}
+
+void keep_export_budget(StudioState& state) {
+    if (state.export_settings.budget < 0) return;
+    commit_edit(state);
+    state.tree_template.params.triangle_budget = state.export_settings.budget;
+    commit_edit(state);
+    state.export_settings.budget = -1;
+}
+
+std::vector<BudgetLine> budget_lines(const GameMeshTotals& t) {
+    const bool every_leaf = t.leaf_budget == SIZE_MAX;
+    return {
+        {"trunk", t.trunk, 0, false},
+        {"crown", t.crown, 0, false},
+        {"trunk + crown", t.trunk + t.crown, t.budget, t.trunk + t.crown > t.budget},
+        {"leaves", t.leaves, t.leaf_budget, t.leaves > t.leaf_budget},
+        {"total", t.total(), every_leaf ? SIZE_MAX : t.budget + t.leaf_budget, t.over_budget},
+    };
+}
+
+void undo_refused_edit(StudioState& state) {
+    undo(state);
+    state.cost_warning.clear();
+    state.cost_warning_quiet = false;
+    state.frame_requested = true;
+    state.frame_next_tree = true;
+}
+
 void start_export(StudioState& state) {
     if (!state.tree) {
         state.export_message = "nothing to export yet";
@@ -658,12 +695,35 @@ void start_export(StudioState& state) {
         return;
     }
     if (state.export_job.valid()) return;  // one export at a time
+    const std::filesystem::path folder =
+        std::filesystem::path(state.export_settings.path).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec)) {
+        state.export_missing_folder = folder.string();
+        state.export_message = "the folder " + folder.string() + " does not exist";
+        state.export_failed = true;
+        return;
+    }
+    state.export_missing_folder.clear();
     state.export_message = "exporting...";
     state.export_failed = false;
-    const auto budget =
-        static_cast<std::size_t>(std::max(state.tree_template.params.triangle_budget, 0));
+    const std::size_t budget = export_budget(state);
     state.export_job = std::async(std::launch::async, export_tree, state.tree, state.shown_template,
                                   budget, state.export_settings);
+}
+
+void create_export_folder(StudioState& state) {
+    if (state.export_missing_folder.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(state.export_missing_folder, ec);
+    if (ec) {
+        state.export_message =
+            "cannot make the folder " + state.export_missing_folder + ": " + ec.message();
+        state.export_failed = true;
+        return;
+    }
+    state.export_missing_folder.clear();
+    start_export(state);
 }
 
 void save_template_to_file(StudioState& state) {
@@ -680,22 +740,52 @@ void save_template_to_file(StudioState& state) {
 }
 
 void open_template_file(StudioState& state) {
+    open_template_file(state, state.template_path);
+}
+
+void open_template_file(StudioState& state, const std::string& path) {
     try {
-        const TreeTemplate opened = load_template(state.template_path);
-        std::string text;
-        if (std::filesystem::path(state.template_path).extension() == ".toml") {
-            text = read_input_file(state.template_path, "template");
-        }
-        load_template_into(state, opened, text);
-        if (text.empty() && std::filesystem::is_regular_file(state.template_path))
-            state.original_text.clear();  // a grammar file: no comments to keep
-        remember_file(state, state.template_path);
-        state.file_message = "opened " + state.template_path;
-        state.file_failed = false;
+        TemplateSwitch next{load_template(path), {}, path};
+        if (std::filesystem::path(path).extension() == ".toml")
+            next.text = read_input_file(path, "template");
+        if (!switch_template(state, std::move(next)))
+            state.file_message = "unsaved changes: discard them to open " + path + "?";
     } catch (const std::exception& e) {
         state.file_message = e.what();
         state.file_failed = true;
     }
+}
+
+bool switch_template(StudioState& state, TemplateSwitch next) {
+    if (unsaved_changes(state)) {
+        state.pending_switch = std::move(next);
+        return false;
+    }
+    state.pending_switch.reset();
+    load_template_into(state, next.tree_template, next.text);
+    if (!next.path.empty()) {
+        // A grammar file: no comments to keep.
+        if (next.text.empty() && std::filesystem::is_regular_file(next.path))
+            state.original_text.clear();
+        state.template_path = next.path;
+        remember_file(state, next.path);
+        state.file_message = "opened " + next.path;
+        state.file_failed = false;
+    }
+    return true;
+}
+
+void confirm_switch(StudioState& state) {
+    if (!state.pending_switch) return;
+    TemplateSwitch next = std::move(*state.pending_switch);
+    state.pending_switch.reset();
+    state.saved = state.tree_template;  // the edits are dropped (undo keeps them)
+    switch_template(state, std::move(next));
+}
+
+void cancel_switch(StudioState& state) {
+    state.pending_switch.reset();
+    state.file_message.clear();
 }
 
 }  // namespace sylva::studio

@@ -16,10 +16,12 @@
 #include <vector>
 
 #include "export/export_tree.h"
+#include "export/wind_motion.h"
 #include "tree/cost.h"
 #include "tree/pipeline.h"
 #include "ui/state/forest_preview_plan.h"
 #include "ui/state/orbit_camera.h"
+#include "ui/state/rules_draft.h"
 
 namespace sylva::studio {
 
@@ -83,6 +85,17 @@ struct GameMeshTotals {
 };
 // Needs a reduced tree.
 GameMeshTotals game_mesh_totals(const GeneratedTree& generated, int level);
+
+// One line of the budget table: a part's triangles against its target. Trunk and crown
+// share one target, shown on their own "trunk + crown" line; leaves have theirs; the total
+// is the sum of both.
+struct BudgetLine {
+    std::string part;  // "trunk", "crown", "trunk + crown", "leaves", "total"
+    std::size_t triangles = 0;
+    std::size_t target = 0;  // 0: none of its own (trunk, crown); SIZE_MAX: every leaf
+    bool over = false;
+};
+std::vector<BudgetLine> budget_lines(const GameMeshTotals& totals);
 // "trunk 484 + crown 316 + leaves 800 = 1600 triangles (budget 800 + 800 leaves)".
 std::string totals_text(const GameMeshTotals& totals);
 
@@ -145,6 +158,7 @@ struct ViewToggles {
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
     bool wind = false;         // sway the tree with its exported wind data (ui/state/wind_view.h)
+    WindMotion wind_motion;    // the wind the view sways it in: strength and direction
     bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
     bool turntable = false;    // the camera circles the tree
     // A small square of forest planted with the shown template (ui/forest_preview.h).
@@ -153,11 +167,22 @@ struct ViewToggles {
     ForestPreviewPlan forest_plan;  // a 2D layout planted instead of the square (layout panel)
 };
 
-// The export's own settings; the triangle budget is the template's `triangle_budget`.
+// The export's own settings, apart from the template's: changing them is no edit of the
+// template (keep_export_budget() makes the budget the template's).
 struct ExportSettings {
     std::string path = "tree.glb";  // the extension picks the format: .obj, .glb, .ply
+    // Trunk + crown triangles an export reduces to (0: every triangle); negative: the edited
+    // template's triangle_budget, whatever template is picked.
+    int budget = -1;
     bool lod = false;
     EngineProfile profile = EngineProfile::Generic;  // export/engine_profile.h
+};
+
+// Another template to edit: a built-in one, or one read from `path`.
+struct TemplateSwitch {
+    TreeTemplate tree_template;
+    std::string text;  // the file text it was read from (a built-in template's own when empty)
+    std::string path;  // the file it was opened from; empty for a built-in template
 };
 
 struct StudioState {
@@ -191,6 +216,10 @@ struct StudioState {
     // An edit estimated over the cost limits (tree/cost.h) does not start a generation: the
     // estimate is shown, and "run anyway" sets run_costly and starts it once.
     std::string cost_warning;  // empty: nothing held back
+    // The warning came from rules applied on a typing pause: it is shown beside the editor and
+    // the dialog does not open (it would take the keyboard mid-word) until the user applies
+    // explicitly (Ctrl+Enter).
+    bool cost_warning_quiet = false;
     bool run_costly = false;
     // Where the studio asks first: over the CLI's limits, or over ask_segments skeleton
     // segments. The time estimate is a lower bound that misses most of what many segments
@@ -216,9 +245,15 @@ struct StudioState {
     // past the crown grid's cells, say); empty otherwise.
     std::string crown_notice;
 
+    // The rules editor's text, applied to tree_template.grammar on a pause (rules_draft.h).
+    RulesDraft rules;
+
     // Undo history: whole templates, so picking another template can be undone too.
     std::vector<TreeTemplate> undo, redo;
     TreeTemplate committed;  // the edit undo would step back from
+
+    // A switch to another template waiting for "discard changes?" (switch_template()).
+    std::optional<TemplateSwitch> pending_switch;
 
     std::string template_path = "my_tree.toml";  // Open / Save as
     std::string file_message;                    // result of the last open or save
@@ -226,8 +261,13 @@ struct StudioState {
 
     ExportSettings export_settings;
     std::future<std::string> export_job;  // the export's result message
+    // The folder of export_settings.path when it does not exist: nothing was written, and
+    // the Export section asks to create it (create_export_folder()). Empty otherwise.
+    std::string export_missing_folder;
     std::string export_message;
     bool export_failed = false;
+
+    std::string parameter_search;  // the Tree panel's search field: shows what matches
 
     ViewToggles view;
     OrbitCamera camera;
@@ -259,6 +299,15 @@ std::size_t preview_budget(const StudioState& state);
 // file text it was read from (its comments are kept on save); a built-in template's own.
 void load_template_into(StudioState& state, const TreeTemplate& tree_template,
                         std::string_view text = {});
+
+// Makes `next` the edited template (load_template_into, and for a file its path, the recent
+// files and the message), unless the edited template has unsaved changes: then it waits in
+// pending_switch for the "discard changes?" dialog and false is returned.
+bool switch_template(StudioState& state, TemplateSwitch next);
+// The dialog's answers: switch and drop the edits (undo still brings them back), or keep
+// editing.
+void confirm_switch(StudioState& state);
+void cancel_switch(StudioState& state);
 
 // Back to the template as it was opened or picked: an undoable edit.
 void reset_to_template(StudioState& state);
@@ -317,12 +366,31 @@ bool commit_edit(StudioState& state);
 void undo(StudioState& state);
 void redo(StudioState& state);
 
-// Writes the tree on screen to export_settings.path on a worker thread, reduced to the edited
-// template's triangle_budget; the low-poly view's chain is reused when its budget matches.
+// "Undo the edit" of an edit held back by its estimated cost: undo(), the warning dropped,
+// and the camera frames the tree on screen now and the tree the undo brings back.
+void undo_refused_edit(StudioState& state);
+
+// The trunk + crown triangles an export reduces to: export_settings.budget, or the edited
+// template's triangle_budget when that is negative.
+std::size_t export_budget(const StudioState& state);
+
+// Makes the export's budget the edited template's triangle_budget (an undoable edit that a
+// save writes) and lets the export follow the template again.
+void keep_export_budget(StudioState& state);
+
+// Writes the tree on screen to export_settings.path on a worker thread, reduced to
+// export_budget(); the low-poly view's chain is reused when its budget matches. A path whose
+// folder does not exist writes nothing: export_missing_folder names it, for the panel to ask.
 void start_export(StudioState& state);
+
+// Makes export_missing_folder (and the folders above it) and starts the export it held
+// back; the message names the folder when it cannot be made.
+void create_export_folder(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.
 void save_template_to_file(StudioState& state);
+// Opening asks first when the edited template has unsaved changes (switch_template()).
 void open_template_file(StudioState& state);
+void open_template_file(StudioState& state, const std::string& path);
 
 }  // namespace sylva::studio

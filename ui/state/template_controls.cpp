@@ -241,4 +241,34 @@ std::string budget_resolution_note(const TreeParams& params, std::string_view ke
            " triangles (" + why + ")";
 }
 
+std::string constant_label(const GrammarConstant& constant) {
+    const std::string_view help = constant.help;
+    const std::string_view label = trim(help.substr(0, help.find_first_of(",(;")));
+    return label.empty() ? constant.name : std::string(label);
+}
+
+bool search_finds(std::string_view query, std::string_view text) {
+    auto lower = [](unsigned char c) { return static_cast<char>(std::tolower(c)); };
+    std::string haystack(text.size(), ' ');
+    std::transform(text.begin(), text.end(), haystack.begin(), lower);
+    std::size_t start = 0;
+    while (start < query.size()) {
+        std::size_t end = query.find(' ', start);
+        if (end == std::string_view::npos) end = query.size();
+        std::string word(end - start, ' ');
+        std::transform(query.begin() + static_cast<std::ptrdiff_t>(start),
+                       query.begin() + static_cast<std::ptrdiff_t>(end), word.begin(), lower);
+        if (!word.empty() && haystack.find(word) == std::string::npos) return false;
+        start = end + 1;
+    }
+    return true;
+}
+
+std::string parameter_search_text(const ParamInfo& info) {
+    std::string words(info.key);
+    std::replace(words.begin(), words.end(), '_', ' ');
+    return std::string(info.key) + " " + words + " " + std::string(info.help) + " " +
+           std::string(group_title(info.group));
+}
+
 }  // namespace sylva::studio

@@ -51,6 +51,20 @@ double round_for_range(double value, double min, double max);
 // Thread-safe.
 std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate& tree);
 
+// A #define slider's label: its help comment up to the first comma or parenthesis ("# [10,
+// 60] fork angle, degrees" -> "fork angle"; "fronds: angle from the trunk" stays whole, as
+// two constants may share the words before a colon), the constant's name when it has none.
+// The whole help and the name stay in the tooltip.
+std::string constant_label(const GrammarConstant& constant);
+
+// True when the search field's `query` finds the text: every word of it (split at spaces) is
+// in `text`, ignoring case. An empty query finds everything.
+bool search_finds(std::string_view query, std::string_view text);
+
+// The text the search field looks in for a parameter: its key, its words ("leaf density"),
+// its help and its group's title.
+std::string parameter_search_text(const ParamInfo& info);
+
 // One control of the parameter panel: a parameter of the registry (tree/parameters.h) and,
 // when the tree never reads it, why (the control is then greyed out).
 struct ParameterRow {
