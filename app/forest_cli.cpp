@@ -186,6 +186,10 @@ struct TreeFlags {
     void check(const TreeTemplate& tree, const FinishSettings& f) const {
         check_cost(estimate_cost(tree, game_budget(f)), limits(CostLimits{}), kRaiseLimits);
     }
+    // A tree's limits again, held while each grows (GrowthLimits).
+    GrowthLimits growth_limits() const {
+        return sylva::growth_limits(limits(CostLimits{}), kRaiseLimits);
+    }
     void check_job(const Cost& job, const std::string& what) const {
         check_cost(job, limits(kManyTreeLimits), kRaiseLimits, what);
     }
@@ -263,6 +267,7 @@ int run_batch_command(int argc, char** argv) {
         check_key_jitter(settings.tree, settings.key_jitter);  // before any work, exit 3
         settings.finish = flags.finish(settings.tree);
         flags.check(settings.tree, settings.finish);
+        settings.mesh.growth_limits = flags.growth_limits();
         // The whole shard, before a single item is planned (a count of 1e9 ended in bad_alloc).
         flags.check_job(
             estimate_batch_cost(settings),
@@ -432,6 +437,7 @@ int run_forest_command(int argc, char** argv) {
             settings.finish = flags.finish(sp.tree);
             flags.check(sp.tree, settings.finish);
         }
+        settings.mesh.growth_limits = flags.growth_limits();
         settings.seed = flags.seed;
         settings.jitter = flags.jitter;
         // Every variant and every tree together, before any is planted.

@@ -456,6 +456,7 @@ int run_export(const Options& o) {
     finish.lod = o.lod;
     MeshOptions mesh = o.mesh;
     mesh.budget = game_budget(finish);
+    mesh.growth_limits = growth_limits(o.limits, kRaiseLimits);
     check_cost(estimate_cost(tmpl, mesh.budget), o.limits, kRaiseLimits);
     Tree tree = generate_tree(tmpl, mesh);
     // The reduction's cost depends on the meshes (their handles): known only now.
@@ -485,6 +486,7 @@ int run_export(const Options& o) {
     for (const auto& file : files) std::printf("wrote %s\n", file.string().c_str());
     std::printf("  marching cubes:\n");
     print_parts(raw, raw_states, "    ");
+    for (const std::string& note : tree.notes) std::printf("    note: %s\n", note.c_str());
     for (size_t i = 0; i < finished.levels.size(); ++i) {
         const ReducedTree& level = finished.levels[i];
         const std::size_t leaves = finished.leaf_budgets[i];
@@ -554,7 +556,9 @@ int run_skeleton(const Options& o) {
     OutputFolder folder(std::filesystem::path(o.output).parent_path());
     TreeTemplate tree = configured_template(o);
     check_cost(estimate_cost(tree, 0, false), o.limits, kRaiseLimits);
-    Skeleton skeleton = grow(tree);
+    GrowthContext context;
+    context.limits = growth_limits(o.limits, kRaiseLimits);
+    Skeleton skeleton = grow(tree, context);
     write_skeleton_json(o.output, skeleton, tree.params);
     folder.keep();
     std::printf("wrote %s: %zu segments, %zu tips\n", o.output.c_str(), skeleton.segments.size(),

@@ -1,10 +1,13 @@
 #include "colonization/colonization_growth.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "colonization/branch_shaping.h"
+#include "colonization/colonization_cost.h"
 #include "core/errors.h"
 #include "core/noise.h"
 #include "core/stopwatch.h"
@@ -32,6 +35,32 @@ Region point_region(const ColonizationParams& p, const GrowthContext& context) {
             }};
 }
 
+// "1000000 attraction points x about 10400 nodes".
+std::string work_text(double points, double nodes, bool estimated) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%.0f attraction points x %s%.0f nodes", points,
+                  estimated ? "about " : "", nodes);
+    return text;
+}
+
+// Stops a growth whose counted work passes `limits` (settings.work_done): the limit holds
+// where the estimate was low.
+void stop_past_limits(const ColonizationWork& work, std::size_t points, const Box& bounds,
+                      const ColonizationSettings& settings, const GrowthLimits& limits) {
+    const ColonizationCost cost = colonization_cost(work, points, bounds, settings);
+    if (cost.seconds <= limits.max_seconds && cost.bytes <= limits.max_bytes) return;
+    char figures[160];
+    std::snprintf(figures, sizeof figures,
+                  " after %d of at most %d passes (%.2g point visits): about %.2g GB and %.3g s, "
+                  "over the limit of %.0f MB and %.3g s",
+                  work.iterations, settings.max_iterations, cost.visits, cost.bytes / 1e9,
+                  cost.seconds, limits.max_bytes / 1e6, limits.max_seconds);
+    throw InputError("space colonization grew " +
+                     work_text(static_cast<double>(points), cost.nodes, false) + figures +
+                     " (fewer attraction_points, a larger kill_distance or step_size, or " +
+                     limits.how_to_raise + ")");
+}
+
 Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     const TreeParams& shared = tree.params;
     const ColonizationParams& p = colonization_params(shared);
@@ -56,6 +85,10 @@ Skeleton grow(const TreeTemplate& tree, const GrowthContext& context) {
     const std::vector<glm::vec3> points =
         attraction_points(region, p.attraction_points, p.point_distribution, shared.seed);
     if (context.times) context.times->push_back({"attraction points", clock.lap_ms()});
+    if (context.limits.max_seconds < INFINITY || context.limits.max_bytes < INFINITY)
+        settings.work_done = [&](const ColonizationWork& work) {
+            stop_past_limits(work, points.size(), region.bounds, settings, context.limits);
+        };
     ColonizationGraph graph = colonize(points, template_roots(p), settings);
     if (context.times) context.times->push_back({"colonize", clock.lap_ms()});
     draw_successors_together(graph, static_cast<float>(p.angle_smoothing));
@@ -91,6 +124,23 @@ std::string why_max_no_grow_is_unused(const TreeTemplate& tree, const GrowthCont
 }
 
 namespace {
+
+// The envelope's box stands for another template's crown (envelope = "template"), which
+// only growing that template would measure.
+GrowthCost estimate(const TreeTemplate& tree) {
+    const ColonizationParams& p = colonization_params(tree.params);
+    ColonizationSettings settings;
+    try {
+        settings = colonization_settings(tree.params);
+    } catch (const InputError&) {
+        return {};  // growing reports it, with the template's file
+    }
+    const ColonizationCost cost = estimate_colonization_cost(
+        bounds(template_envelope(p)), static_cast<std::size_t>(std::max(p.attraction_points, 0)),
+        std::max(p.roots, 1), settings);
+    return {cost.nodes, cost.seconds, cost.bytes,
+            work_text(static_cast<double>(p.attraction_points), cost.nodes, true)};
+}
 
 // The shared and colonization parameters the template's own choices leave unread.
 std::vector<UnreadParam> unread(const TreeTemplate& tree, const GrowthContext& context) {
@@ -137,6 +187,7 @@ const GrowthMethod colonization_growth = {
     .grow = grow,
     .params = colonization_param_table,
     .unread = unread,
+    .estimate = estimate,
 };
 
 Envelope template_envelope(const ColonizationParams& p) {

@@ -79,7 +79,9 @@ class Colonizer {
                 break;
             }
             iteration_ = graph.iterations + 1;
-            if (!iterate()) {
+            const bool grew = iterate();
+            report_work();
+            if (!grew) {
                 graph.stop = ColonizationStop::NothingGrew;
                 break;
             }
@@ -88,6 +90,7 @@ class Colonizer {
         graph.oscillations = oscillations_;
         graph.idle_attracted = idle_attracted_;
         graph.moved_growth = moved_growth_;
+        graph.work = work(graph.iterations);
         graph.nodes = std::move(nodes_);
         for (size_t i = 0; i < points_.size(); ++i)
             if (alive_[i]) graph.remaining.push_back(points_[i]);
@@ -95,6 +98,15 @@ class Colonizer {
     }
 
   private:
+    ColonizationWork work(int iterations) const {
+        return {iterations, nodes_.size(), scans_, visits_};
+    }
+
+    void report_work() {
+        reported_visits_ = visits_;
+        if (s_.work_done) s_.work_done(work(iteration_));
+    }
+
     bool active(int node) const {
         return s_.max_no_grow <= 0 || nodes_[static_cast<size_t>(node)].no_grow < s_.max_no_grow;
     }
@@ -117,6 +129,7 @@ class Colonizer {
         if (s_.search == NearestSearch::BruteForce) return;  // refreshed once per iteration
         node_grid_.insert(index, position);
         point_grid_.filter_near(position, s_.influence_radius, [&](int i) {
+            ++visits_;
             const auto k = static_cast<size_t>(i);
             const float d2 = distance2(points_[k], position);
             if (d2 <= dk2_) {
@@ -132,11 +145,13 @@ class Colonizer {
             }
             return true;
         });
+        if (visits_ - reported_visits_ >= kVisitsBetweenReports) report_work();
     }
 
-    bool point_within(const glm::vec3& p, float radius) const {
+    bool point_within(const glm::vec3& p, float radius) {
         bool found = false;
         point_grid_.for_each_near(p, radius, [&](int i) {
+            ++visits_;
             const auto k = static_cast<size_t>(i);
             found = found || (alive_[k] && distance2(points_[k], p) <= radius * radius);
         });
@@ -148,6 +163,7 @@ class Colonizer {
         for (int root = 0; root < roots_; ++root) {
             float top = nodes_[static_cast<size_t>(root)].position.y;
             for (const glm::vec3& p : points_) top = std::max(top, p.y);
+            scans_ += points_.size();
             const float root_y = nodes_[static_cast<size_t>(root)].position.y;
             int tip = root;
             for (;;) {
@@ -165,15 +181,17 @@ class Colonizer {
 
     // Liebemann 2017, 5.3: a new node that lands back on the tree (within D/2 of a node) is
     // growth going back and forth between equally distant points; refuse it.
-    bool crowded(const glm::vec3& p) const {
+    bool crowded(const glm::vec3& p) {
         const float limit2 = 0.25f * s_.step_size * s_.step_size;
         if (s_.search == NearestSearch::BruteForce) {
+            scans_ += nodes_.size();
             for (const ColonizationNode& n : nodes_)
                 if (distance2(n.position, p) < limit2) return true;
             return false;
         }
         bool found = false;
         node_grid_.for_each_near(p, 0.5f * s_.step_size, [&](int j) {
+            ++visits_;
             found = found || distance2(nodes_[static_cast<size_t>(j)].position, p) < limit2;
         });
         return found;
@@ -183,6 +201,7 @@ class Colonizer {
     bool iterate() {
         // Step 1: S(v) as the sum of unit directions to v's points (eq. 3.3).
         const size_t existing = nodes_.size();
+        scans_ += points_.size() + 2 * existing;  // steps 1 and 2, and max_NG's pass
         sum_.assign(existing, glm::vec3(0.0f));
         count_.assign(existing, 0);
         pulled_by_moved_.assign(existing, 0);
@@ -246,11 +265,13 @@ class Colonizer {
     void release_points_of(int node) {
         const glm::vec3 at = nodes_[static_cast<size_t>(node)].position;
         point_grid_.for_each_near(at, s_.influence_radius, [&](int i) {
+            ++scans_;  // most are another node's points: two flags read, no distance
             const auto k = static_cast<size_t>(i);
             if (!alive_[k] || nearest_[k] != node) return;
             nearest_[k] = -1;
             nearest_d2_[k] = std::numeric_limits<float>::infinity();
             node_grid_.for_each_near(points_[k], s_.influence_radius, [&](int j) {
+                ++scans_;  // nodes in cache, most of them stalled: cheap
                 if (!active(j)) return;
                 const float d2 = distance2(points_[k], nodes_[static_cast<size_t>(j)].position);
                 if (d2 <= di2_ &&
@@ -265,6 +286,7 @@ class Colonizer {
 
     // The reference: every live point against every node.
     void refresh_brute_force() {
+        scans_ += points_.size() * nodes_.size();
         for (size_t k = 0; k < points_.size(); ++k) {
             if (!alive_[k]) continue;
             nearest_[k] = -1;
@@ -303,7 +325,10 @@ class Colonizer {
     std::vector<char> moved_ = std::vector<char>(points_.size(), 0);
     std::vector<char> pulled_by_moved_;  // per node, this pass: a moved point attracts it
     int iteration_ = 0;                  // 0 while the trunk grows
-    int roots_ = 0;                      // nodes_[0, roots_) are the roots
+    std::uint64_t scans_ = 0, visits_ = 0, reported_visits_ = 0;
+    // A few tens of milliseconds of queries: a limit on the work holds within that.
+    static constexpr std::uint64_t kVisitsBetweenReports = std::uint64_t{1} << 22;
+    int roots_ = 0;  // nodes_[0, roots_) are the roots
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 // within the kill distance. Works on plain settings and points, knows no template.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <glm/vec3.hpp>
 #include <span>
@@ -15,6 +16,18 @@ namespace sylva {
 // How each iteration finds a point's nearest node. Both give the same graph, bit for bit;
 // brute force is the reference the benchmark and the tests compare against.
 enum class NearestSearch { Grid, BruteForce };
+
+// What a run did, counted the same on every machine for the same input: the basis of its
+// cost (colonization_cost.h turns it into seconds and bytes) and of any limit on it, which
+// a clock could not hold deterministically.
+struct ColonizationWork {
+    int iterations = 0;
+    std::uint64_t nodes = 0;
+    // Points and nodes passed in order (once per iteration each), and what a stalled node's
+    // hand-over passes over (max_no_grow: the points near it, the nodes near each of its own).
+    std::uint64_t scans = 0;
+    std::uint64_t visits = 0;  // points and nodes whose distance a grid query takes
+};
 
 struct ColonizationSettings {
     float influence_radius = 1.5f;  // d_i: a point attracts only nodes this close
@@ -43,6 +56,10 @@ struct ColonizationSettings {
     // Called once per iteration with the finished fraction (rising, ends with 1): the larger
     // of the iterations used and the attraction points removed, each as a share of all.
     std::function<void(float)> progress = nullptr;
+    // Called with the work so far (rising) after every iteration, and within one about
+    // every four million visits; it may throw to stop the growth (how a cost limit holds
+    // whatever an estimate said). Called on the growing thread.
+    std::function<void(const ColonizationWork&)> work_done = nullptr;
 };
 
 struct ColonizationNode {
@@ -70,9 +87,11 @@ struct ColonizationGraph {
     // (max_no_grow reached) had handed on from another node (grid search only).
     int idle_attracted = 0;
     int moved_growth = 0;
+    ColonizationWork work;  // what the run did (its cost)
 };
 
-// Grows a tree from `root` towards `points`. Throws Cancelled when the flag is set.
+// Grows a tree from `root` towards `points`. Throws Cancelled when the flag is set, and what
+// settings.work_done throws.
 // Precondition: 0 < kill_distance, 0 < step_size, kill_distance <= influence_radius.
 ColonizationGraph colonize(std::span<const glm::vec3> points, const glm::vec3& root,
                            const ColonizationSettings& settings);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,24 @@ struct StageTime {
     bool beside_others = false;
 };
 
+// What growing a template costs, in tree/cost.h's units: estimated from the parameters before
+// any growth, or counted as a growth goes.
+struct GrowthCost {
+    double segments = 0;  // the skeleton's segments (roughly, before growth)
+    double seconds = 0;   // wall time of the growth alone on two cores
+    double bytes = 0;     // its peak memory
+    std::string work;     // what the figures come from ("1000000 points x about 10400 nodes")
+};
+
+// The most a growth may cost. A method that counts its work as it goes (colonization) throws
+// InputError once the count passes a limit, naming it and `how_to_raise`: the limit holds
+// whatever the estimate said, and on every machine alike (work, not a clock).
+struct GrowthLimits {
+    double max_seconds = std::numeric_limits<double>::infinity();
+    double max_bytes = std::numeric_limits<double>::infinity();
+    std::string how_to_raise = "raise the limits";
+};
+
 struct GrowthContext {
     CancelFlag cancel = nullptr;              // polled between steps; throws Cancelled
     std::vector<StageTime>* times = nullptr;  // when set, each method appends its stages
@@ -39,6 +58,7 @@ struct GrowthContext {
     // thread, often enough to draw a progress bar: the L-system per derivation step and every
     // few thousand modules, then through the turtle; colonization per iteration.
     std::function<void(float)> progress = nullptr;
+    GrowthLimits limits = {};  // none by default
 };
 
 // A parameter a template leaves unread, and why ("every F in the rules gives its own
@@ -67,6 +87,10 @@ struct GrowthMethod {
     // answer); throws what grow throws.
     std::vector<UnreadParam> (*unread)(const TreeTemplate& tree,
                                        const GrowthContext& context) = nullptr;
+    // The growth's cost from the template's parameters alone, cheaply (no growth): a rough
+    // guide for tree/cost.h's estimate_cost. nullptr: the method has none (tree/cost.h
+    // knows the L-system's).
+    GrowthCost (*estimate)(const TreeTemplate& tree) = nullptr;
 };
 
 }  // namespace sylva

@@ -73,7 +73,7 @@ MeshTopology check_topology(const Mesh& mesh) {
             ++result.degenerate_triangles;
             continue;
         }
-        if (glm::length(area_vector(mesh, tri)) <= min_twice_area) ++result.degenerate_triangles;
+        if (glm::length(area_vector(mesh, tri)) <= min_twice_area) ++result.zero_area_triangles;
         usable.push_back(t);
         for (const std::uint32_t v : tri) ++link_start[v + 1];
     }
@@ -214,7 +214,8 @@ std::string to_string(const MeshTopology& t) {
            std::to_string(t.non_manifold_edges) + ", misoriented " +
            std::to_string(t.misoriented_edges) + ", degenerate " +
            std::to_string(t.degenerate_triangles) + ", non-manifold vertices " +
-           std::to_string(t.non_manifold_vertices);
+           std::to_string(t.non_manifold_vertices) + ", zero-area " +
+           std::to_string(t.zero_area_triangles);
 }
 
 }  // namespace sylva

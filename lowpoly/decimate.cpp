@@ -61,8 +61,8 @@ std::size_t inward_pieces(const Mesh& mesh) {
 
 // One CollapseMesh per part (built in parallel; each part is reduced on its own thread
 // first, see reduce()); throws InputError naming the first part that is not a closed
-// 2-manifold (zero-area triangles are fine: marching cubes on a very fine grid makes some,
-// and they are the first collapses).
+// 2-manifold (zero-area triangles are fine, as check_topology says: marching cubes on a
+// very fine grid makes some, and they are the first collapses).
 using PartMeshes = std::vector<CollapseMesh>;
 
 PartMeshes build_checked(std::span<const Mesh* const> parts, std::span<const std::size_t> part_of) {
@@ -74,11 +74,7 @@ PartMeshes build_checked(std::span<const Mesh* const> parts, std::span<const std
     });
     for (std::size_t bad = 0; bad < parts.size(); ++bad) {
         if (built[bad]) continue;
-        const MeshTopology full = check_topology(*parts[bad]);
-        MeshTopology shape = full;
-        shape.degenerate_triangles = 0;
-        std::string what = describe(shape);
-        if (what.empty()) what = describe(full);  // a repeated or missing vertex index
+        std::string what = describe(check_topology(*parts[bad]));
         if (what.empty()) what = "a triangle with a repeated vertex";
         throw InputError("decimate: part " + std::to_string(part_of[bad]) +
                          " is not a closed 2-manifold (" + what + ")");
@@ -121,11 +117,10 @@ constexpr double kIntermediateLaneSlack = 1.0;
 // parts together may keep (a lane: lane_slack), runs on a thread per part or lane (the
 // calling thread takes the first and reports progress).
 Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
-                 const DecimateSettings& settings, double min_twice_area,
+                 const DecimateSettings& settings, std::span<const double> min_twice_area,
                  std::span<const std::size_t> part_of, double lane_slack) {
     CollapseSettings cs;
     cs.max_normal_turn_degrees = settings.max_normal_turn_degrees;
-    cs.min_twice_area = min_twice_area;
     cs.foot_height = settings.foot_height;
     cs.min_foot_vertices = kMinFootVertices;
     cs.lazy_legality = settings.lazy_legality;
@@ -154,7 +149,9 @@ Reduction reduce(PartMeshes meshes, std::size_t target, std::size_t snapshot_at,
     std::vector<std::exception_ptr> errors(meshes.size());
     auto reduce_alone = [&](std::size_t k) {
         try {
-            meshes[k].start(cs, settings.cancel);
+            CollapseSettings own = cs;
+            own.min_twice_area = min_twice_area[k];
+            meshes[k].start(own, settings.cancel);
             if (k == 0)
                 meshes[k].collapse_to(alone_for(k), interval, reported);
             else
@@ -206,6 +203,13 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
             why[k] = "part " + std::to_string(part_of[k]) + " had " + describe(t);
             return;
         }
+        // Slivers the input had may stay (the collapses take them first); new ones may not.
+        if (t.zero_area_triangles > 0 &&
+            t.zero_area_triangles > check_topology(*input[k]).zero_area_triangles) {
+            why[k] = "part " + std::to_string(part_of[k]) + " had " +
+                     std::to_string(t.zero_area_triangles) + " zero-area triangles";
+            return;
+        }
         // Collapses guard each triangle's turn, but a small piece can still fold through
         // itself and come out inside out: closed, yet with no volume. (An inner shell, the
         // wall of a hollow, is inward by nature: count only new ones. The input's are
@@ -225,7 +229,8 @@ std::string broken(const std::vector<Mesh>& reduced, std::span<const Mesh* const
 // no more), unchecked: most reductions never need it.
 DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* const> parts,
                                    std::span<const std::size_t> part_of,
-                                   const DecimateSettings& settings, double min_twice_area,
+                                   const DecimateSettings& settings,
+                                   std::span<const double> min_twice_area,
                                    std::size_t snapshot_at = 0,
                                    std::vector<Mesh>* snapshot = nullptr,
                                    double lane_slack = kLaneSlack) {
@@ -272,7 +277,8 @@ DecimateResult reduce_with_backoff(PartMeshes meshes, std::span<const Mesh* cons
 // The same from meshes (handle cutting's output).
 DecimateResult reduce_with_backoff(const std::vector<Mesh>& meshes,
                                    std::span<const std::size_t> part_of,
-                                   const DecimateSettings& settings, double min_twice_area) {
+                                   const DecimateSettings& settings,
+                                   std::span<const double> min_twice_area) {
     std::vector<const Mesh*> pointers;
     for (const Mesh& m : meshes) pointers.push_back(&m);
     return reduce_with_backoff(build_checked(pointers, part_of), pointers, part_of, settings,
@@ -284,8 +290,16 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
                               std::span<const std::size_t> part_of,
                               const DecimateSettings& settings) {
     PartMeshes input = build_checked(parts, part_of);
-    // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal).
-    const double min_twice_area = 1e-9 * bounding_diagonal_squared(parts);
+    // Well above check_topology's zero-area threshold (2e-12 of the squared diagonal), per
+    // part (its lanes together): a small part far from a big one (a crown at the end of a
+    // 3 km branch) keeps the collapses its own size allows.
+    std::vector<double> min_twice_area(parts.size());
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::vector<const Mesh*> of_part;
+        for (std::size_t j = 0; j < parts.size(); ++j)
+            if (part_of[j] == part_of[k]) of_part.push_back(parts[j]);
+        min_twice_area[k] = 1e-9 * bounding_diagonal_squared(of_part);
+    }
     throw_if_cancelled(settings.cancel);
     // Handles and pieces set a floor no collapse goes below. When it is above the budget
     // a direct reduction is wasted work (the slowest part of a crossing-branch tree): go

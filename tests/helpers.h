@@ -76,11 +76,12 @@ class TempFolderTest : public ::testing::Test {
     std::filesystem::path dir_;
 };
 
-// The mesh is a closed, consistently oriented 2-manifold without degenerate triangles; a
-// failure reports every count.
+// The mesh is a closed, consistently oriented 2-manifold without degenerate or zero-area
+// triangles; a failure reports every count.
 inline void expect_closed_manifold(const Mesh& mesh) {
     const MeshTopology t = check_topology(mesh);
     EXPECT_TRUE(t.is_closed_manifold()) << to_string(t);
+    EXPECT_EQ(t.zero_area_triangles, 0u) << to_string(t);
 }
 
 }  // namespace sylva::test

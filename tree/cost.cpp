@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "lowpoly/handle_cutting.h"
+#include "tree/growth.h"
 #include "tree/pipeline.h"
 #include "turtle/derivation.h"
 #include "turtle/lsystem_growth.h"
@@ -64,8 +65,18 @@ Cost estimate_cost(const TreeTemplate& tree, std::size_t budget, bool mesh) {
             // Generating reports it, with the template's file and line.
         }
     }
-    cost.bytes = kBaseBytes + kBytesPerModule * cost.modules + kBytesPerSegment * cost.segments;
-    cost.seconds = kSecondsPerModule * cost.modules + kSecondsPerSegment * cost.segments;
+    cost.bytes = kBaseBytes + kBytesPerModule * cost.modules;
+    cost.seconds = kSecondsPerModule * cost.modules;
+    if (const GrowthMethod* method = find_growth_method(tree.growth); method && method->estimate) {
+        const GrowthCost growth = method->estimate(tree);
+        cost.segments = growth.segments;
+        // The growth's memory is gone when the skeleton's is needed: the larger counts.
+        cost.bytes = std::max(cost.bytes, kBaseBytes + growth.bytes);
+        cost.seconds += growth.seconds;
+        cost.growth = growth.work;
+    }
+    cost.bytes += kBytesPerSegment * cost.segments;
+    cost.seconds += kSecondsPerSegment * cost.segments;
     if (mesh) {
         // A game mesh whose branches are prisms meshes no trunk.
         const bool prisms = budget > 0 && branch_style(tree.params) == BranchStyle::Prisms;
@@ -117,6 +128,7 @@ std::string cost_text(const Cost& cost) {
     char tail[96];
     std::snprintf(tail, sizeof tail, "about %.2g GB and %.3g s", cost.bytes / 1e9, cost.seconds);
     std::string text;
+    if (!cost.growth.empty()) text += cost.growth + ", ";
     if (cost.modules > 0)
         text += counted(cost.modules, "module") + ", " + counted(cost.segments, "segment") + ", ";
     if (cost.cells > 0) text += counted(cost.cells, "cell") + ", ";
@@ -130,6 +142,10 @@ bool within(const Cost& cost, const CostLimits& limits) {
     return cost.bytes <= limits.max_bytes && cost.seconds <= limits.max_seconds;
 }
 
+GrowthLimits growth_limits(const CostLimits& limits, const std::string& how_to_override) {
+    return {limits.max_seconds, limits.max_bytes, how_to_override};
+}
+
 void check_cost(const Cost& cost, const CostLimits& limits, const std::string& how_to_override,
                 const std::string& what) {
     if (within(cost, limits)) return;
@@ -137,7 +153,7 @@ void check_cost(const Cost& cost, const CostLimits& limits, const std::string& h
     std::snprintf(limit, sizeof limit, "%.0f MB and %.3g s", limits.max_bytes / 1e6,
                   limits.max_seconds);
     throw InputError(what + " is estimated at " + cost_text(cost) + ", over the limit of " + limit +
-                     " (lower the steps or resolutions, or " + how_to_override + ")");
+                     " (lower the steps, points or resolutions, or " + how_to_override + ")");
 }
 
 }  // namespace sylva

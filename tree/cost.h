@@ -1,12 +1,14 @@
 // What a tree will cost before any of it is made: the word's modules, the skeleton's
 // segments, the meshing grids' cells, memory and time, from the grammar's growth per step
-// (turtle/derivation.h's word_growth) and the resolutions. The CLI refuses, and the studio
-// asks, above limits that keep one job under about 10 s and 2 GB on two cores.
+// (turtle/derivation.h's word_growth) or the growth method's own estimate
+// (GrowthMethod::estimate: colonization's points x nodes) and the resolutions. The CLI refuses, and
+// the studio asks, above limits that keep one job under about 10 s and 2 GB on two cores.
 #pragma once
 
 #include <cstddef>
 #include <string>
 
+#include "core/growth.h"
 #include "core/tree_template.h"
 #include "tree/pipeline.h"
 
@@ -20,6 +22,8 @@ struct Cost {
     double seconds = 0;    // wall time on two cores, roughly
     double triangles = 0;  // meshes to reduce (estimate_reduction_cost)
     double handles = 0;    // their handles
+    std::string growth;    // what a growth method's estimate counts ("2000 attraction points
+                           // x about 900 nodes"), or empty
 };
 
 struct CostLimits {
@@ -35,8 +39,9 @@ inline constexpr CostLimits kManyTreeLimits{2.0e9, 600.0};
 // Cheap (no derivation, no grid). `budget` is the trunk + crown triangle budget the meshes
 // will be reduced to (0: not reduced), `mesh` false for a skeleton alone. The memory and time
 // model is fitted to this project's default template: a rough guide, never below the true
-// word and segment counts. A grammar that does not parse
-// costs nothing here; generating it reports the error.
+// word and segment counts of an L-system; other growth methods' figures are their own
+// estimates (roughly, and GrowthLimits hold them as they grow). A grammar that does not
+// parse costs nothing here; generating it reports the error.
 Cost estimate_cost(const TreeTemplate& tree, std::size_t budget = 0, bool mesh = true);
 
 // The reduction of a tree already meshed (the slow stage of a game mesh, known only once
@@ -56,6 +61,11 @@ Cost many_trees_cost(const Cost& each, double count, std::size_t budget);
 std::string cost_text(const Cost& cost);
 
 bool within(const Cost& cost, const CostLimits& limits);
+
+// The same limits for a growth as it goes (MeshOptions::growth_limits, GrowthContext): a
+// method that counts its work stops there, saying `how_to_override`, where the estimate
+// before it was low.
+GrowthLimits growth_limits(const CostLimits& limits, const std::string& how_to_override);
 
 // Throws InputError naming `what` ("this tree", "this batch of 1000000000 trees"), the
 // estimate, the limit and `how_to_override` when the cost is over a limit.

@@ -511,6 +511,26 @@ Mesh tree_leaves(const Skeleton& skeleton, const TreeFields& fields, const TreeP
     return out;
 }
 
+namespace {
+
+// Why a crown that was asked for has no surface: spheres smaller than a cell of a grid over
+// a crown box that tips far apart make large.
+std::string vanished_crown(const TreeParams& p, const Box& box) {
+    const glm::vec3 extent = box.max - box.min;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the crown was left out: its spheres (sphere_diameter %.3g m) fall between the "
+                  "points of its grid, %.3g m apart (%d cells along %.3g m, the box of every "
+                  "tip); raise sphere_diameter or crown_resolution, or set crown_mesh = 0 for "
+                  "leaves alone",
+                  p.sphere_diameter, static_cast<double>(cell_size(box, p.crown_resolution)),
+                  p.crown_resolution,
+                  static_cast<double>(std::max({extent.x, extent.y, extent.z})));
+    return text;
+}
+
+}  // namespace
+
 double stages_wall_ms(const std::vector<StageTime>& times) {
     double wall = 0.0, beside = 0.0;
     for (const StageTime& stage : times) {
@@ -527,6 +547,7 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
     Skeleton mature;
     GrowthContext growth{options.cancel, &out.times};
     growth.progress = options.growth_progress;
+    growth.limits = options.growth_limits;
     out.skeleton = grow(tree, growth, &mature);
     out.crown_shape = tree.params.crown_shape;
     out.crown_lump_triangles = static_cast<std::size_t>(tree.params.crown_lump_triangles);
@@ -673,6 +694,8 @@ Tree generate_tree(const TreeTemplate& tree, const MeshOptions& options) {
         leaves_ms = own.lap_ms();
     };
     tbb::parallel_invoke(trunk, crown, leaves);
+    if (mesh_crown && out.crown.triangles.empty())
+        out.notes.push_back(vanished_crown(p, fields.crown_box));
     out.times.push_back({"trunk mesh", trunk_ms, true});
     if (mesh_crown) out.times.push_back({"crown mesh", crown_ms, true});
     if (out.leaf_style != LeafStyle::None) out.times.push_back({"leaves", leaves_ms, true});

@@ -48,6 +48,10 @@ struct Tree {
     // derive, turtle (or the growth method's stages), fields, trunk mesh, crown mesh, leaves;
     // the last three are made beside each other, each with its own time (stages_wall_ms)
     std::vector<StageTime> times;
+    // What the tree lacks of what its template asks for, each a sentence for the user that
+    // says why and what to change (a crown whose spheres are smaller than its grid's cells);
+    // empty as a rule. Callers show them: a result unlike the request is never silent.
+    std::vector<std::string> notes;
 };
 
 // The wall time of `times`: the stages made beside each other (StageTime::beside_others:
@@ -73,6 +77,9 @@ struct MeshOptions {
     // trunk's (trunk_resolution_for_budget), and a low budget merges a
     // many-blob crown into a few pieces (crown_merge.h).
     std::size_t budget = 0;
+    // What the growth may cost: a method that counts its work (colonization) stops with
+    // InputError past these. None by default; the CLI sets its --max-* limits.
+    GrowthLimits growth_limits;
 };
 
 // The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown

@@ -46,7 +46,7 @@ MeshTopology reference_topology(const Mesh& mesh) {
             continue;
         }
         const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
-        if (glm::length(glm::cross(b - a, c - a)) <= min_twice_area) ++result.degenerate_triangles;
+        if (glm::length(glm::cross(b - a, c - a)) <= min_twice_area) ++result.zero_area_triangles;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t u = t[k], w = t[(k + 1) % 3];
             edges[{std::min(u, w), std::max(u, w)}].push_back(u < w);
@@ -91,6 +91,7 @@ void expect_same(const MeshTopology& a, const MeshTopology& b) {
     EXPECT_EQ(a.misoriented_edges, b.misoriented_edges);
     EXPECT_EQ(a.degenerate_triangles, b.degenerate_triangles);
     EXPECT_EQ(a.non_manifold_vertices, b.non_manifold_vertices);
+    EXPECT_EQ(a.zero_area_triangles, b.zero_area_triangles);
 }
 
 // A closed grid-like surface (a torus of quads) that the random edits below then break:
@@ -224,7 +225,21 @@ TEST(MeshChecks, DegenerateTriangles) {
     Mesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
     mesh.triangles = {{0, 1, 2}, {0, 0, 3}, {0, 1, 7}};  // collinear, repeated, out of range
-    EXPECT_EQ(check_topology(mesh).degenerate_triangles, 3u);
+    EXPECT_EQ(check_topology(mesh).degenerate_triangles, 2u);
+    EXPECT_EQ(check_topology(mesh).zero_area_triangles, 1u);
+}
+
+// Slivers of zero area (two vertices in one place) leave a closed surface closed: marching
+// cubes makes them on fine grids and far from the origin, and such a mesh was reported
+// open.
+TEST(MeshChecks, ZeroAreaSliversLeaveAClosedMeshClosed) {
+    Mesh mesh = torus(8, 6);
+    mesh.positions[1] = mesh.positions[0];
+    const MeshTopology topology = check_topology(mesh);
+    EXPECT_TRUE(topology.is_closed_manifold()) << to_string(topology);
+    EXPECT_EQ(topology.zero_area_triangles, 2u);
+    EXPECT_EQ(topology.degenerate_triangles, 0u);
+    EXPECT_NE(to_string(topology).find("zero-area 2"), std::string::npos);
 }
 
 TEST(MeshChecks, ThreeTrianglesOnOneEdgeAreNonManifold) {

@@ -4,8 +4,10 @@
 
 #include <string>
 
+#include "colonization/colonization_params.h"
 #include "core/errors.h"
 #include "tree/cost.h"
+#include "tree/growth.h"
 #include "tree/leaves.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -175,6 +177,52 @@ TEST(Cost, ManyTreesAddUpTimeAndKeptMemory) {
             << message;
         EXPECT_NE(message.find("600 s"), std::string::npos) << message;
     }
+}
+
+// Space colonization's work is points x nodes: a million points that a tiny kill distance
+// never lets die (tens of seconds) are refused before any growth, with the figures; the
+// shipped colonization templates cost milliseconds.
+TEST(Cost, ColonizationIsEstimatedFromItsPointsAndNodes) {
+    TreeTemplate t = load_template("elm");
+    const Cost usual = estimate_cost(t, 800);
+    EXPECT_LT(usual.seconds, 1.0) << cost_text(usual);
+    ColonizationParams& colonization = t.params.blocks.edit<ColonizationParams>();
+    colonization.attraction_points = 1'000'000;
+    colonization.kill_distance = 0.001;
+    const Cost cost = estimate_cost(t, 800);
+    EXPECT_GT(cost.seconds, 10.0) << cost_text(cost);
+    EXPECT_GT(cost.segments, 1000.0) << cost_text(cost);
+    try {
+        check_cost(cost, {}, "raise --max-seconds");
+        FAIL() << "accepted: " << cost_text(cost);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("1000000 attraction points x about"), std::string::npos) << message;
+    }
+}
+
+// Where the estimate is low, the growth's own count of its work holds the limits: it stops
+// soon after passing them and says which and how to raise them.
+TEST(Cost, AGrowthStopsAtItsLimitsWhateverTheEstimateSaid) {
+    TreeTemplate t = load_template("elm");
+    ColonizationParams& colonization = t.params.blocks.edit<ColonizationParams>();
+    colonization.attraction_points = 5000;
+    colonization.kill_distance = 0.01;
+    GrowthContext context;
+    context.limits = growth_limits({2e9, 0.01}, "raise --max-seconds");
+    try {
+        grow(t, context);
+        FAIL() << "grew past its limit";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("space colonization grew 5000 attraction points x"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("over the limit of 2000 MB and 0.01 s"), std::string::npos)
+            << message;
+        EXPECT_NE(message.find("raise --max-seconds"), std::string::npos) << message;
+    }
+    EXPECT_NO_THROW(grow(t, GrowthContext{}));  // no limit: grows
 }
 
 }  // namespace sylva

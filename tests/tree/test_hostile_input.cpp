@@ -134,5 +134,38 @@ TEST(HostileGrammar, NearCoincidentCopiesGiveOneClosedTree) {
     EXPECT_TRUE(r.within_budget) << r.note;
 }
 
+// A crown at the end of a 3 km diagonal branch: far from the origin floats are coarse and the
+// crown's mesh has slivers of zero area, and its size is a speck of the whole tree's box. It
+// is closed all the same, and reduces to the budget (it was reported "NOT closed" and kept
+// whole: 13,208 triangles under a budget of 800).
+TEST(HostileGrammar, ACrownAtTheEndOfAThreeKilometreBranchIsClosedAndReduced) {
+    TreeTemplate t = default_template();
+    t.grammar = "axiom: &(45)F(3000)\n";
+    MeshOptions options;
+    options.budget = 800;
+    const Tree tree = generate_tree(t, options);
+    ASSERT_FALSE(tree.crown.triangles.empty());
+    EXPECT_TRUE(check_topology(tree.crown).is_closed_manifold())
+        << to_string(check_topology(tree.crown));
+    const ReducedTree r = reduce_tree(tree, TreeBudget{});
+    EXPECT_TRUE(check_topology(r.crown).is_closed_manifold()) << r.note;
+    EXPECT_EQ(r.note.find("broke"), std::string::npos) << r.note;
+    EXPECT_LE(r.trunk.triangles.size() + r.crown.triangles.size(), 800u) << r.note;
+}
+
+// A crown whose spheres fall between the points of its grid (two tips 3 km apart make the
+// grid's cells metres wide) is left out with a note that says why, never silently.
+TEST(HostileGrammar, ACrownTooSmallForItsGridIsLeftOutWithANote) {
+    TreeTemplate t = default_template();
+    t.grammar = "axiom: F(1)[+(90)F(3000)]F(1)\n";
+    const Tree tree = generate_tree(t, MeshOptions{});
+    EXPECT_TRUE(tree.crown.triangles.empty());
+    ASSERT_EQ(tree.notes.size(), 1u);
+    EXPECT_NE(tree.notes[0].find("sphere_diameter"), std::string::npos) << tree.notes[0];
+    EXPECT_NE(tree.notes[0].find("crown_resolution"), std::string::npos) << tree.notes[0];
+    const Tree normal = generate_tree(default_template(), MeshOptions{});
+    EXPECT_TRUE(normal.notes.empty());
+}
+
 }  // namespace
 }  // namespace sylva

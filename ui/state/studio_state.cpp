@@ -347,6 +347,8 @@ GameMeshTotals game_mesh_totals(const GeneratedTree& generated, int level) {
     totals.over_budget = !reduced.within_budget || totals.trunk + totals.crown > totals.budget ||
                          totals.leaves > totals.leaf_budget;
     totals.note = reduced.note;
+    for (const std::string& note : generated.tree.notes)
+        totals.note += (totals.note.empty() ? "" : "; ") + note;
     return totals;
 }
 
