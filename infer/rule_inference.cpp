@@ -522,10 +522,8 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         }
         return t;
     };
-    if (advance.n) {
-        mod.advance = wrap(advance.mean());
-    } else if (!mod.interior.slots.empty() || !mod.has_tip) {
-        // No two branched nodes in a row: the roll between nodes shows in the bends.
+    // The roll from one node to the next as the axes' bends show it, where they agree.
+    const auto advance_from_bends = [&] {
         Circular steps;
         for (int a : axes) {
             const Axis& axis = g.axes[seg(a)];
@@ -536,6 +534,12 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             }
         }
         if (steps.n >= 2 && steps.strength() > 0.95) mod.advance = wrap(steps.mean());
+    };
+    if (advance.n) {
+        mod.advance = wrap(advance.mean());
+    } else if (!mod.interior.slots.empty() || !mod.has_tip) {
+        // No two branched nodes in a row: the roll between nodes shows in the bends.
+        advance_from_bends();
     } else {
         // Laterals only at the tip: the divergence that makes the tip's azimuth follow from
         // the axis's length (and its spawn azimuth).
@@ -554,16 +558,7 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             mod.advance = regress_divergence(samples);
         } else {
             // Every tip at the same node: the phase drift is the bends' (if any).
-            Circular steps;
-            for (int a : axes) {
-                const Axis& axis = g.axes[seg(a)];
-                for (std::size_t j = 0; j + 2 < axis.segments.size(); ++j) {
-                    const Turn& t0 = m.turn[seg(axis.segments[j + 1])];
-                    const Turn& t1 = m.turn[seg(axis.segments[j + 2])];
-                    if (t0.pitch > 0.05 && t1.pitch > 0.05) steps.add(t1.az - t0.az);
-                }
-            }
-            if (steps.n >= 2 && steps.strength() > 0.95) mod.advance = wrap(steps.mean());
+            advance_from_bends();
         }
     }
 
