@@ -66,13 +66,35 @@ export_sanitizer_options() {
     export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 }
 
+# Configures DIR for clang (asserts on, -O1, line tables for the sanitizers' reports, no
+# benches) with the -D options given before "--", then builds the targets after it (all
+# when none).
+build_with_clang() {
+    local dir="$1" options=() targets=()
+    shift
+    while [ $# -gt 0 ] && [ "$1" != "--" ]; do
+        options+=("$1")
+        shift
+    done
+    [ $# -gt 0 ] && shift
+    for t in "$@"; do targets+=(--target "$t"); done
+    cmake -S "$SYLVA_ROOT" -B "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+        -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" -DSYLVA_BUILD_BENCH=OFF \
+        -DSYLVA_BUILD_TESTS=ON -DSYLVA_WERROR=OFF "${options[@]}" >/dev/null
+    cmake --build "$dir" --parallel "$(nproc)" "${targets[@]}"
+}
+
 # Arguments: the targets to build (all when none).
 build_sylva_sanitized() {
-    cmake -S "$SYLVA_ROOT" -B "$SYLVA_SANITIZED_BUILD" -DCMAKE_CXX_COMPILER=clang++ \
-        -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSYLVA_SANITIZE=ON \
-        -DSYLVA_BUILD_FUZZERS=ON -DSYLVA_BUILD_UI=OFF -DSYLVA_BUILD_BENCH=OFF \
-        -DSYLVA_BUILD_TESTS=ON -DSYLVA_WERROR=OFF >/dev/null
-    local targets=()
-    for t in "$@"; do targets+=(--target "$t"); done
-    cmake --build "$SYLVA_SANITIZED_BUILD" --parallel "$(nproc)" "${targets[@]}"
+    build_with_clang "$SYLVA_SANITIZED_BUILD" -DSYLVA_SANITIZE=ON -DSYLVA_BUILD_FUZZERS=ON \
+        -DSYLVA_BUILD_UI=OFF -- "$@"
+}
+
+# The ThreadSanitizer build (scripts/sanitize): clang with TSan, asserts on, the studio's
+# state library and the unit tests, no fuzzers or benches.
+SYLVA_TSAN_BUILD="${SYLVA_TSAN_BUILD:-$SYLVA_ROOT/build-tsan}"
+
+# Arguments: the targets to build (all when none).
+build_sylva_tsan() {
+    build_with_clang "$SYLVA_TSAN_BUILD" -DSYLVA_TSAN=ON -- "$@"
 }

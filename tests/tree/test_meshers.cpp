@@ -6,6 +6,7 @@
 #include <functional>
 #include <glm/geometric.hpp>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include "core/mesh_checks.h"
@@ -66,54 +67,57 @@ double nearest_vertex_gap(const Mesh& a, const Mesh& b, double h) {
     return worst;
 }
 
-class EveryTemplate : public ::testing::TestWithParam<int> {};
+// One test per resolution and template, so that the finest ones spread over the cores.
+class EveryTemplate : public ::testing::TestWithParam<std::tuple<int, const TreeTemplate*>> {};
 
 TEST_P(EveryTemplate, ClosedInsideTheBoxAndMeshersAgree) {
-    const int resolution = GetParam();
-    for (const TreeTemplate* t : builtin_templates()) {
-        TreeParams params = t->params;
-        params.trunk_resolution = params.crown_resolution = resolution;
-        Skeleton skeleton = grow(*t);
-        TreeFields fields = tree_fields(skeleton, params);
-        for (const Part& part : parts_of(fields)) {
-            SCOPED_TRACE(t->name + " " + part.name + " at " + std::to_string(resolution));
-            MeshSettings settings;
-            settings.resolution = resolution;
-            Grid grid = make_grid(part.box, settings);
-            glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
+    const auto [resolution, t] = GetParam();
+    TreeParams params = t->params;
+    params.trunk_resolution = params.crown_resolution = resolution;
+    Skeleton skeleton = grow(*t);
+    TreeFields fields = tree_fields(skeleton, params);
+    for (const Part& part : parts_of(fields)) {
+        SCOPED_TRACE(t->name + " " + part.name + " at " + std::to_string(resolution));
+        MeshSettings settings;
+        settings.resolution = resolution;
+        Grid grid = make_grid(part.box, settings);
+        glm::dvec3 far = grid.node(grid.nodes[0] - 1, grid.nodes[1] - 1, grid.nodes[2] - 1);
 
-            Mesh sparse = mesh_with(Mesher::Sparse, part, resolution);
-            Mesh vdb = mesh_with(Mesher::Vdb, part, resolution);
-            for (const Mesh* mesh : {&sparse, &vdb}) {
-                MeshTopology topology = check_topology(*mesh);
-                EXPECT_TRUE(topology.is_closed_manifold())
-                    << (mesh == &sparse ? "sparse" : "vdb") << ": boundary "
-                    << topology.boundary_edges << ", non-manifold edges "
-                    << topology.non_manifold_edges << ", vertices "
-                    << topology.non_manifold_vertices << ", misoriented "
-                    << topology.misoriented_edges << ", degenerate "
-                    << topology.degenerate_triangles;
-                EXPECT_GT(mesh->triangles.size(), 0u);
-                for (const glm::vec3& p : mesh->positions)
-                    for (int a = 0; a < 3; ++a) {
-                        ASSERT_GT(p[a], grid.origin[a]);  // inside, never on the border
-                        ASSERT_LT(p[a], far[a]);
-                    }
-            }
-            if (resolution <= 150) {  // the dense mesher evaluates every node: keep it quick
-                Mesh dense = mesh_with(Mesher::Dense, part, resolution);
-                EXPECT_EQ(dense.triangles.size(), sparse.triangles.size());
-                EXPECT_EQ(dense.positions.size(), sparse.positions.size());
-            }
-            // The OpenVDB surface and the marching-cubes surface lie within a cell of each
-            // other, sampled at every vertex both ways.
-            EXPECT_LT(nearest_vertex_gap(vdb, sparse, grid.h), 1.5 * grid.h);
-            EXPECT_LT(nearest_vertex_gap(sparse, vdb, grid.h), 1.5 * grid.h);
+        Mesh sparse = mesh_with(Mesher::Sparse, part, resolution);
+        Mesh vdb = mesh_with(Mesher::Vdb, part, resolution);
+        for (const Mesh* mesh : {&sparse, &vdb}) {
+            MeshTopology topology = check_topology(*mesh);
+            EXPECT_TRUE(topology.is_closed_manifold())
+                << (mesh == &sparse ? "sparse" : "vdb") << ": boundary " << topology.boundary_edges
+                << ", non-manifold edges " << topology.non_manifold_edges << ", vertices "
+                << topology.non_manifold_vertices << ", misoriented " << topology.misoriented_edges
+                << ", degenerate " << topology.degenerate_triangles;
+            EXPECT_GT(mesh->triangles.size(), 0u);
+            for (const glm::vec3& p : mesh->positions)
+                for (int a = 0; a < 3; ++a) {
+                    ASSERT_GT(p[a], grid.origin[a]);  // inside, never on the border
+                    ASSERT_LT(p[a], far[a]);
+                }
         }
+        if (resolution <= 150) {  // the dense mesher evaluates every node: keep it quick
+            Mesh dense = mesh_with(Mesher::Dense, part, resolution);
+            EXPECT_EQ(dense.triangles.size(), sparse.triangles.size());
+            EXPECT_EQ(dense.positions.size(), sparse.positions.size());
+        }
+        // The OpenVDB surface and the marching-cubes surface lie within a cell of each
+        // other, sampled at every vertex both ways.
+        EXPECT_LT(nearest_vertex_gap(vdb, sparse, grid.h), 1.5 * grid.h);
+        EXPECT_LT(nearest_vertex_gap(sparse, vdb, grid.h), 1.5 * grid.h);
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Resolutions, EveryTemplate, ::testing::Values(10, 25, 64, 150, 300));
+INSTANTIATE_TEST_SUITE_P(Resolutions, EveryTemplate,
+                         ::testing::Combine(::testing::Values(10, 25, 64, 150, 300),
+                                            ::testing::ValuesIn(builtin_templates())),
+                         [](const auto& param) {
+                             return "r" + std::to_string(std::get<0>(param.param)) + "_" +
+                                    std::get<1>(param.param)->name;
+                         });
 
 }  // namespace
 }  // namespace sylva
