@@ -142,6 +142,7 @@ class GoldenExports : public ::testing::Test {
             if (expected == golden_hashes().end()) continue;
             ExportOptions options;  // as the CLI names the materials
             options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+            options.engine.wind_motion = wind_motion(tmpl.params);
             std::vector<fs::path> files =
                 write_tree(dir_ / key, tree, finished, tmpl.colors, options, format);
             // The order the hashes were taken in: an OBJ before its MTL, a chain's MTL
