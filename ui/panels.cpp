@@ -599,7 +599,7 @@ void wind_row(TreeParams& params) {
         const char* format;
     };
     constexpr Slider kSliders[] = {{"wind_strength", "strength", 2.0f, "%.2f m"},
-                                   {"wind_direction", "to", 360.0f, "%.0f deg"},
+                                   {"wind_direction", "direction", 360.0f, "%.0f deg"},
                                    {"wind_gust_frequency", "gusts", 1.0f, "%.2f /s"},
                                    {"wind_flutter", "flutter", 1.0f, "%.2f"}};
     for (std::size_t i = 0; i < std::size(kSliders); ++i) {

@@ -5,7 +5,7 @@
 // travelling through the crown) and leaves flutter with their flex, so only UV2 is needed;
 // the motion is docs/wind.glsl's. The colour is `albedo` times the vertex colour (glTF
 // COLOR_0, the tint; white without one). sylva_post_import.gd gives every part of an
-// imported tree a copy with the part's own colour as `albedo`.
+// imported tree a copy with the part's own colour as `albedo` and the tree's wind.
 shader_type spatial;
 render_mode cull_disabled;
 
