@@ -477,6 +477,7 @@ int run_export(const Options& o) {
             ExportOptions export_options = o.export_options;
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
             export_options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+            export_options.engine.wind_motion = wind_motion(tmpl.params);  // for the kits
             files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
         },
         [&] { raw_states = part_states(raw); });

@@ -13,6 +13,7 @@
 
 #include "export/engine_profile.h"
 #include "export/named_mesh.h"
+#include "export/wind_motion.h"
 
 namespace sylva {
 
@@ -27,6 +28,9 @@ enum class Shading {
 struct EngineSettings {
     bool uvs = true;   // bark along the branches, leaf cards, a box projection on crowns
     bool wind = true;  // the per-vertex wind data
+    // The wind the engine kits' shaders play it in (the tree's wind parameters,
+    // wind_motion()): glb material extras and FBX material user properties carry it.
+    WindMotion wind_motion{};
     // Collision shapes (trunk hull, crown piece hulls); unset: the profile's default.
     std::optional<bool> collision = std::nullopt;
     // 0 (flat colours) to 1: a seeded per-branch, per-crown-piece and per-leaf tint.

@@ -1,5 +1,6 @@
 #include "export/fbx_writer.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -54,6 +55,18 @@ void color_property(Node& props, std::string_view name, const glm::vec3& c) {
 
 void number_property(Node& props, std::string_view name, double v) {
     property(props, name, "Number", "", "A", {fbx::float64(v)});
+}
+
+// The wind the kits' shaders play the wind data in (export/wind_motion.h), as user
+// properties: Unity's importer hands a material's to OnPreprocessMaterialDescription,
+// Unreal's keeps a node's as the mesh's metadata.
+void wind_properties(Node& props, const WindMotion& motion) {
+    for (const WindValue& w : wind_values(motion))
+        property(props, w.key, "double", "Number", "U", {fbx::float64(w.value)});
+}
+
+bool has_wind(const NamedMesh& part) {
+    return part.attributes && !part.attributes->wind.empty();
 }
 
 // Values of one per-corner layer, stored once each and indexed (IndexToDirect), as Blender
@@ -205,7 +218,9 @@ class FbxBuilder {
     }
 
     // A Model with an identity transform under `parent` (0: the scene root).
-    std::int64_t model(const std::string& name, std::string_view subclass, std::int64_t parent) {
+    // With `wind`, the wind's user properties too.
+    std::int64_t model(const std::string& name, std::string_view subclass, std::int64_t parent,
+                       bool wind = false) {
         const std::int64_t id = uid();
         Node& m = object("Model", id, name, "Model", subclass);
         m.add("Version", {fbx::int32(232)});
@@ -218,6 +233,7 @@ class FbxBuilder {
                  {fbx::float64(1), fbx::float64(1), fbx::float64(1)});
         int_property(props, "DefaultAttributeIndex", 0);
         enum_property(props, "InheritType", 1);
+        if (wind) wind_properties(props, options_.engine.wind_motion);
         m.add("MultiLayer", {fbx::int32(0)});
         m.add("MultiTake", {fbx::int32(0)});
         m.add("Shading", {fbx::character('\x01')});
@@ -274,6 +290,7 @@ class FbxBuilder {
         number_property(props, "ShininessExponent", 1.0);
         number_property(props, "Opacity", 1.0);
         number_property(props, "ReflectionFactor", 0.0);
+        if (has_wind(part)) wind_properties(props, options_.engine.wind_motion);
         materials_[name] = id;
         return id;
     }
@@ -283,7 +300,9 @@ class FbxBuilder {
     void mesh_model(const std::string& name, const std::vector<const NamedMesh*>& parts,
                     std::int64_t parent, bool bare) {
         if (parts.empty()) return;
-        const std::int64_t id = model(name, "Mesh", parent);
+        const bool wind = !bare && std::any_of(parts.begin(), parts.end(),
+                                               [](const NamedMesh* p) { return has_wind(*p); });
+        const std::int64_t id = model(name, "Mesh", parent, wind);
         const std::int64_t geometry_id = uid();
         geometry(geometry_id, name, merge(parts, options_, bare), !bare);
         connect(geometry_id, id);

@@ -18,6 +18,8 @@
 // flutter), the sets present on every part when any part has them (zeros or white where a
 // part lacks one). Materials are Phong with the part's colour as DiffuseColor, named by
 // NamedMesh::material (the part's name when empty); a palette texture is not embedded.
+// Materials and Mesh models of parts with wind data carry the wind to play it in
+// (wind_values(), export/wind_motion.h) as user properties.
 // The bytes go through export/fbx_document.h; the same input gives the same bytes.
 #pragma once
 

@@ -346,6 +346,13 @@ class GltfBuilder {
         m.pbrMetallicRoughness.metallicFactor = 0.0;  // bark and leaves are dielectric
         m.pbrMetallicRoughness.roughnessFactor = 0.9;
         m.doubleSided = !part.closed;
+        // The wind the kits' shaders play the part's wind data in (export/wind_motion.h).
+        if (part.attributes && !part.attributes->wind.empty()) {
+            tinygltf::Value::Object extras;
+            for (const WindValue& w : wind_values(options_.engine.wind_motion))
+                extras[std::string(w.key)] = tinygltf::Value(w.value);
+            m.extras = tinygltf::Value(std::move(extras));
+        }
         model_.materials.push_back(m);
         const int index = static_cast<int>(model_.materials.size()) - 1;
         materials_[name] = index;

@@ -6,7 +6,9 @@
 // (export/named_mesh.h) become TEXCOORD_0 (v flipped to glTF's v down), COLOR_0 (the
 // tint) and the wind in the profile's channel, number type and v direction
 // (export/engine_profile.h); materials are named as material_name() says; collision parts
-// are bare POSITION + indices without material, once under the root; a palette
+// are bare POSITION + indices without material, once under the root; the material of a
+// part with wind data carries the wind to play it in (wind_values(), export/wind_motion.h)
+// as its extras; a palette
 // (ExportOptions::palette_png) is embedded as the materials' baseColorTexture. A part with
 // its own textures (NamedMesh::textures: the impostor levels) gets them embedded as its
 // material's baseColorTexture and normalTexture (trilinear, clamped), alphaMode MASK,

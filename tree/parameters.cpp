@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/wind_params.h"
 #include "tree/growth.h"
 
 namespace sylva {
@@ -33,6 +34,7 @@ Registry build() {
         }
     };
     add(shared_param_table());
+    add(wind_param_table());
     for (const GrowthMethod* method : growth_methods())
         if (method->params) add(method->params());
     r.methods = growth_methods().size();

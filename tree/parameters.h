@@ -18,7 +18,8 @@
 
 namespace sylva {
 
-// The shared parameters first, then each growth method's in registry order. Keys are unique.
+// The shared parameters first, then the wind's (core/wind_params.h), then each growth
+// method's in registry order. Keys are unique.
 const std::vector<ParamInfo>& param_infos();
 
 // nullptr for an unknown key.

@@ -519,7 +519,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.tree && state.view.wind) {
             upload_swayed(viewport, *state.tree, uploaded_level,
                           options.wind_seconds.value_or(static_cast<float>(glfwGetTime())),
-                          state.view.wind_motion);
+                          sylva::wind_motion(state.tree_template.params));
             swaying = true;
         } else if (state.tree && swaying) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));

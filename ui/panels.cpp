@@ -588,21 +588,31 @@ void colonization_view_row(ViewToggles& v, int last) {
     ImGui::EndDisabled();
 }
 
-// The wind the view sways the tree in (export/wind_motion.h, docs/wind.glsl's uniforms):
-// how far the top moves and where from. The exported data does not depend on them.
-void wind_row(WindMotion& motion) {
-    ImGui::SetNextItemWidth(110.0f);
-    ImGui::SliderFloat("strength", &motion.strength, 0.0f, 2.0f, "%.2f m");
-    tooltip("metres the top of the tree moves in a steady wind (the shader's strength)");
-    ImGui::SameLine();
-    float degrees = glm::degrees(std::atan2(motion.direction.y, motion.direction.x));
-    if (degrees < 0.0f) degrees += 360.0f;
-    ImGui::SetNextItemWidth(110.0f);
-    if (ImGui::SliderFloat("from", &degrees, 0.0f, 360.0f, "%.0f deg")) {
-        const float r = glm::radians(degrees);
-        motion.direction = {std::cos(r), std::sin(r)};
+// The wind panel: the template's wind parameters (core/wind_params.h), which the view sways
+// the tree in and exports carry to the engine kits' shaders (docs/engines.md). They move
+// the tree without regrowing it.
+void wind_row(TreeParams& params) {
+    struct Slider {
+        const char* key;
+        const char* label;
+        float max;
+        const char* format;
+    };
+    constexpr Slider kSliders[] = {{"wind_strength", "strength", 2.0f, "%.2f m"},
+                                   {"wind_direction", "direction", 360.0f, "%.0f deg"},
+                                   {"wind_gust_frequency", "gusts", 1.0f, "%.2f /s"},
+                                   {"wind_flutter", "flutter", 1.0f, "%.2f"}};
+    for (std::size_t i = 0; i < std::size(kSliders); ++i) {
+        const Slider& s = kSliders[i];
+        const ParamInfo& info = *find_param(s.key);
+        float value = static_cast<float>(*get_param(params, s.key));
+        if (i % 2) ImGui::SameLine();
+        ImGui::SetNextItemWidth(110.0f);
+        if (ImGui::SliderFloat(s.label, &value, static_cast<float>(info.min),
+                               std::max(s.max, value), s.format))
+            set_param(params, s.key, std::clamp(static_cast<double>(value), info.min, info.max));
+        tooltip(std::string(info.help).c_str());
     }
-    tooltip("the wind's direction on the ground, degrees from +x towards +z");
 }
 
 void view_section(StudioState& state) {
@@ -641,7 +651,7 @@ void view_section(StudioState& state) {
     }
     ImGui::SameLine();
     if (ImGui::Button("frame tree (F)")) state.frame_requested = true;
-    if (v.wind) wind_row(v.wind_motion);
+    if (v.wind) wind_row(state.tree_template.params);
     ImGui::Checkbox("scale figure", &v.scale_figure);
     tooltip("a 1.8 m person beside the trunk");
     ImGui::SameLine();

@@ -10,7 +10,10 @@
 #   the height of level 0, so a 10 m tree switches at 25, 50 and 100 m;
 # - gives every mesh surface (not the collision bodies) a ShaderMaterial of
 #   sylva_wind.shader with the surface's imported albedo colour, so the tree sways with
-#   the wind data in UV2 and keeps its colours and vertex tint.
+#   the wind data in UV2 and keeps its colours and vertex tint, and sets the shader's wind
+#   (wind_strength, wind_direction, wind_gust_frequency, wind_flutter) to the tree's: the
+#   `sylva_wind_*` extras of the glb's material of that name, read from the file itself
+#   (Godot 3 imports no extras). A material without them keeps the shader's defaults.
 # Collision needs nothing here: Godot's importer makes the `-convcolonly` nodes StaticBody
 # nodes with a ConvexPolygonShape each, and the materials are already the tree's own
 # (their names carry the template and seed, so two trees never share one).
@@ -25,8 +28,50 @@ func post_import(scene):
 	var shader = load(kit + "/sylva_wind.shader")
 	var lod_script = load(kit + "/sylva_lod.gd")
 	_setup_lods(scene, lod_script)
-	_setup_wind(scene, shader)
+	_setup_wind(scene, shader, wind_extras(get_source_file()))
 	return scene
+
+
+# The glTF file's material extras by material name ({} for a file that is not glTF): the
+# JSON chunk of a .glb, or the whole .gltf.
+static func wind_extras(path):
+	var out = {}
+	var file = File.new()
+	if file.open(path, File.READ) != OK:
+		return out
+	var text = ""
+	if file.get_32() == 0x46546C67:  # "glTF": a binary glTF's header, then its JSON chunk
+		file.get_32()
+		file.get_32()
+		var length = file.get_32()
+		file.get_32()
+		text = file.get_buffer(length).get_string_from_utf8()
+	else:
+		file.seek(0)
+		text = file.get_as_text()
+	file.close()
+	var doc = parse_json(text)
+	if typeof(doc) != TYPE_DICTIONARY or not doc.has("materials"):
+		return out
+	for m in doc["materials"]:
+		if m.has("name") and m.has("extras") and typeof(m["extras"]) == TYPE_DICTIONARY:
+			out[m["name"]] = m["extras"]
+	return out
+
+
+# The shader's wind uniforms from a material's extras; {} without them.
+static func wind_uniforms(extras):
+	var keys = ["sylva_wind_strength", "sylva_wind_direction_x", "sylva_wind_direction_z",
+			"sylva_wind_gust_frequency", "sylva_wind_flutter"]
+	for k in keys:
+		if not extras.has(k):
+			return {}
+	return {
+		"wind_strength": float(extras["sylva_wind_strength"]),
+		"wind_direction": Vector2(extras["sylva_wind_direction_x"], extras["sylva_wind_direction_z"]),
+		"wind_gust_frequency": float(extras["sylva_wind_gust_frequency"]),
+		"wind_flutter": float(extras["sylva_wind_flutter"]),
+	}
 
 
 # "tree_LOD2" -> 2; -1 for a name without the suffix.
@@ -87,7 +132,7 @@ func _height(node):
 	return high - low if high > low else 0.0
 
 
-func _setup_wind(node, shader):
+func _setup_wind(node, shader, extras):
 	if node is StaticBody:
 		return
 	if node is MeshInstance and node.mesh:
@@ -102,6 +147,11 @@ func _setup_wind(node, shader):
 				# Also as metadata: a headless Godot (no renderer) keeps no shader parameters.
 				material.set_meta("sylva_albedo", imported.albedo_color)
 				material.resource_name = imported.resource_name
+				var wind = wind_uniforms(extras.get(imported.resource_name, {}))
+				for uniform in wind.keys():
+					material.set_shader_param(uniform, wind[uniform])
+				if not wind.empty():
+					material.set_meta("sylva_wind", wind)
 			node.set_surface_material(s, material)
 	for child in node.get_children():
-		_setup_wind(child, shader)
+		_setup_wind(child, shader, extras)

@@ -10,7 +10,10 @@
 #   any distance, no script at run time;
 # - gives every mesh surface (not the collision bodies) a ShaderMaterial of
 #   sylva_wind.gdshader with the surface's imported albedo colour, so the tree sways with
-#   the wind data in UV2 and keeps its colours and vertex tint.
+#   the wind data in UV2 and keeps its colours and vertex tint, and sets the shader's wind
+#   (wind_strength, wind_direction, wind_gust_frequency, wind_flutter) to the tree's: the
+#   `sylva_wind_*` extras of the glb's material of that name, read from the file itself.
+#   A material without them keeps the shader's defaults.
 # Collision needs nothing here: Godot's importer makes the `-convcolonly` nodes
 # StaticBody3D nodes with a ConvexPolygonShape3D each, and the materials are already the
 # tree's own (their names carry the template and seed, so two trees never share one).
@@ -24,8 +27,48 @@ func _post_import(scene):
 	var kit = get_script().resource_path.get_base_dir()
 	var shader = load(kit + "/sylva_wind.gdshader")
 	_setup_lods(scene)
-	_setup_wind(scene, shader)
+	_setup_wind(scene, shader, wind_extras(get_source_file()))
 	return scene
+
+
+# The glTF file's material extras by material name ({} for a file that is not glTF): the
+# JSON chunk of a .glb, or the whole .gltf.
+static func wind_extras(path):
+	var out = {}
+	var file = FileAccess.open(path, FileAccess.READ)
+	if file == null:
+		return out
+	var text = ""
+	if file.get_32() == 0x46546C67:  # "glTF": a binary glTF's header, then its JSON chunk
+		file.get_32()
+		file.get_32()
+		var length = file.get_32()
+		file.get_32()
+		text = file.get_buffer(length).get_string_from_utf8()
+	else:
+		file.seek(0)
+		text = file.get_as_text()
+	var doc = JSON.parse_string(text)
+	if typeof(doc) != TYPE_DICTIONARY or not doc.has("materials"):
+		return out
+	for m in doc["materials"]:
+		if m.has("name") and m.has("extras") and typeof(m["extras"]) == TYPE_DICTIONARY:
+			out[m["name"]] = m["extras"]
+	return out
+
+
+# The shader's wind uniforms from a material's extras; {} without them.
+static func wind_uniforms(extras):
+	for k in ["sylva_wind_strength", "sylva_wind_direction_x", "sylva_wind_direction_z",
+			"sylva_wind_gust_frequency", "sylva_wind_flutter"]:
+		if not extras.has(k):
+			return {}
+	return {
+		"wind_strength": float(extras["sylva_wind_strength"]),
+		"wind_direction": Vector2(extras["sylva_wind_direction_x"], extras["sylva_wind_direction_z"]),
+		"wind_gust_frequency": float(extras["sylva_wind_gust_frequency"]),
+		"wind_flutter": float(extras["sylva_wind_flutter"]),
+	}
 
 
 # "tree_LOD2" -> 2; -1 for a name without the suffix.
@@ -83,7 +126,7 @@ func _height(node):
 	return high - low if high > low else 0.0
 
 
-func _setup_wind(node, shader):
+func _setup_wind(node, shader, extras):
 	if node is StaticBody3D:
 		return
 	if node is MeshInstance3D and node.mesh:
@@ -97,6 +140,11 @@ func _setup_wind(node, shader):
 				material.set_shader_parameter("albedo", imported.albedo_color)
 				material.set_meta("sylva_albedo", imported.albedo_color)
 				material.resource_name = imported.resource_name
+				var wind = wind_uniforms(extras.get(imported.resource_name, {}))
+				for uniform in wind.keys():
+					material.set_shader_parameter(uniform, wind[uniform])
+				if not wind.is_empty():
+					material.set_meta("sylva_wind", wind)
 			node.set_surface_override_material(s, material)
 	for child in node.get_children():
-		_setup_wind(child, shader)
+		_setup_wind(child, shader, extras)

@@ -11,10 +11,12 @@ What it does, for models exported with `sylva export --profile unreal`:
 - a chain written one file per level (`tree_LOD0.obj`, `tree_LOD1.obj`, ... or the same in
   .fbx): imports LOD0 and adds each further `_LOD<i>` file beside it as LOD i;
 - then creates `M_SylvaWind` in the destination once (a material whose World Position
-  Offset sways the tree by the wind in UV channel 1: the whole tree bends with sway times
-  WindStrength along WindDirection, branches swing with flex), and a material instance per
-  imported material, `MI_<material>`, with its BaseColor parameter set to that material's
-  colour, assigned to the mesh's slots.
+  Offset is docs/wind.glsl's motion from the wind in UV channels 1 and 2, one Custom node,
+  with the parameters WindStrength (cm), WindDirection, GustFrequency and Flutter), and a
+  material instance per imported material, `MI_<material>`, with its BaseColor parameter
+  set to that material's colour and the wind parameters to the tree's (the FBX's
+  `sylva_wind_*` user properties, kept as the mesh's metadata), assigned to the mesh's
+  slots.
 Unreal reads FBX in the file's own unit (Sylva writes metres and says so), so the tree
 arrives at its size in centimetres.
 """
@@ -25,6 +27,47 @@ import sys
 import unreal
 
 WIND_MATERIAL = "M_SylvaWind"
+
+# docs/wind.glsl's sylva_wind() in HLSL for a Custom node: the offset in centimetres, Z up.
+# The gust is 1 + half a 1D gradient noise of time (Hoskins's float hash, Perlin's fade).
+WIND_HLSL = """
+float3 along = normalize(float3(WindDirection.x, WindDirection.y, 0.0) + 1e-6);
+float phase = 6.2831853 * PhaseFlutter.x;
+float x = T * GustFrequency;
+float i = floor(x);
+float f = x - i;
+float h0 = frac(i * 0.1031); h0 *= h0 + 33.33; h0 *= h0 + h0; h0 = frac(h0);
+float h1 = frac((i + 1.0) * 0.1031); h1 *= h1 + 33.33; h1 *= h1 + h1; h1 = frac(h1);
+float u = f * f * (3.0 - 2.0 * f);
+float lean = WindStrength * (1.0 + lerp((2.0 * h0 - 1.0) * f, (2.0 * h1 - 1.0) * (f - 1.0), u));
+float3 offset = along * lean * SwayFlex.x;
+offset += lean * 0.35 * SwayFlex.y * sin(2.1 * T + phase) * (along + float3(0.0, 0.0, 0.3));
+offset += lean * Flutter * PhaseFlutter.y * sin(11.0 * T + 3.0 * phase + 0.01 * (P.x + P.y)) *
+          float3(0.5 * along.x, 0.5 * along.y, 1.0);
+return offset;
+"""
+
+# The tree's wind as the FBX carries it (the mesh nodes' user properties, which Unreal's
+# importer keeps as the mesh's metadata, "FBX.[node.]sylva_wind_*"): instance parameter
+# values, or {} when the mesh has none (the material's defaults then apply).
+def _wind_parameters(mesh):
+    found = {}
+    tags = unreal.EditorAssetLibrary.get_metadata_tag_values(mesh)
+    for key, value in tags.items():
+        name = str(key).rsplit(".", 1)[-1]
+        if name.startswith("sylva_wind_"):
+            found[name] = float(value)
+    keys = ("sylva_wind_strength", "sylva_wind_direction_x", "sylva_wind_direction_z",
+            "sylva_wind_gust_frequency", "sylva_wind_flutter")
+    if not all(k in found for k in keys):
+        return {}
+    # Sylva's ground is (x, z) with Y up; Unreal's FBX import turns +z into -y.
+    return {"WindStrength": 100.0 * found["sylva_wind_strength"],
+            "GustFrequency": found["sylva_wind_gust_frequency"],
+            "Flutter": found["sylva_wind_flutter"],
+            "WindDirection": unreal.LinearColor(found["sylva_wind_direction_x"],
+                                                -found["sylva_wind_direction_z"], 0.0, 0.0)}
+
 
 
 def _fbx_options(first_level_only):
@@ -78,45 +121,41 @@ def _wind_material(destination):
     roughness = lib.create_material_expression(material, unreal.MaterialExpressionConstant, -300, 300)
     roughness.set_editor_property("r", 0.9)
     lib.connect_material_property(roughness, "", unreal.MaterialProperty.MP_ROUGHNESS)
-    # Offset = WindDirection * WindStrength * (sway * gust + 0.35 * flex * sin(2.1 t)),
-    # in centimetres: the steady part of docs/wind.glsl's motion.
-    uv = lib.create_material_expression(material, unreal.MaterialExpressionTextureCoordinate, -1400, 600)
-    uv.set_editor_property("coordinate_index", 1)
-    sway = lib.create_material_expression(material, unreal.MaterialExpressionComponentMask, -1200, 560)
-    sway.set_editor_property("r", True)
-    lib.connect_material_expressions(uv, "", sway, "")
-    flex = lib.create_material_expression(material, unreal.MaterialExpressionComponentMask, -1200, 680)
-    flex.set_editor_property("g", True)
-    lib.connect_material_expressions(uv, "", flex, "")
-    time = lib.create_material_expression(material, unreal.MaterialExpressionTime, -1400, 800)
-    speed = lib.create_material_expression(material, unreal.MaterialExpressionMultiply, -1200, 800)
-    speed.set_editor_property("const_b", 2.1)
-    lib.connect_material_expressions(time, "", speed, "A")
-    swing = lib.create_material_expression(material, unreal.MaterialExpressionSine, -1000, 800)
-    swing.set_editor_property("period", 6.2831853)
-    lib.connect_material_expressions(speed, "", swing, "")
-    flex_swing = lib.create_material_expression(material, unreal.MaterialExpressionMultiply, -800, 700)
-    flex_swing.set_editor_property("const_b", 0.35)
-    flexed = lib.create_material_expression(material, unreal.MaterialExpressionMultiply, -900, 700)
-    lib.connect_material_expressions(flex, "", flexed, "A")
-    lib.connect_material_expressions(swing, "", flexed, "B")
-    lib.connect_material_expressions(flexed, "", flex_swing, "A")
-    total = lib.create_material_expression(material, unreal.MaterialExpressionAdd, -600, 600)
-    lib.connect_material_expressions(sway, "", total, "A")
-    lib.connect_material_expressions(flex_swing, "", total, "B")
-    strength = lib.create_material_expression(material, unreal.MaterialExpressionScalarParameter, -600, 800)
-    strength.set_editor_property("parameter_name", "WindStrength")
-    strength.set_editor_property("default_value", 30.0)
-    direction = lib.create_material_expression(material, unreal.MaterialExpressionVectorParameter, -600, 900)
+    # World Position Offset: docs/wind.glsl's motion as one Custom node (HLSL), in centimetres
+    # and Unreal's Z up; its parameters are the tree's wind (set per instance below).
+    uv1 = lib.create_material_expression(material, unreal.MaterialExpressionTextureCoordinate, -1400, 500)
+    uv1.set_editor_property("coordinate_index", 1)
+    uv2 = lib.create_material_expression(material, unreal.MaterialExpressionTextureCoordinate, -1400, 600)
+    uv2.set_editor_property("coordinate_index", 2)
+    time = lib.create_material_expression(material, unreal.MaterialExpressionTime, -1400, 700)
+    position = lib.create_material_expression(material, unreal.MaterialExpressionWorldPosition, -1400, 800)
+    parameters = {}
+    for name, default, y in (("WindStrength", 30.0, 900), ("GustFrequency", 0.15, 1000),
+                             ("Flutter", 0.1, 1100)):
+        p = lib.create_material_expression(material, unreal.MaterialExpressionScalarParameter, -1400, y)
+        p.set_editor_property("parameter_name", name)
+        p.set_editor_property("default_value", default)
+        parameters[name] = p
+    direction = lib.create_material_expression(material, unreal.MaterialExpressionVectorParameter, -1400, 1200)
     direction.set_editor_property("parameter_name", "WindDirection")
     direction.set_editor_property("default_value", unreal.LinearColor(1.0, 0.0, 0.0, 0.0))
-    scaled = lib.create_material_expression(material, unreal.MaterialExpressionMultiply, -400, 700)
-    lib.connect_material_expressions(total, "", scaled, "A")
-    lib.connect_material_expressions(strength, "", scaled, "B")
-    offset = lib.create_material_expression(material, unreal.MaterialExpressionMultiply, -200, 700)
-    lib.connect_material_expressions(scaled, "", offset, "A")
-    lib.connect_material_expressions(direction, "", offset, "B")
-    lib.connect_material_property(offset, "", unreal.MaterialProperty.MP_WORLD_POSITION_OFFSET)
+    parameters["WindDirection"] = direction
+    wind = lib.create_material_expression(material, unreal.MaterialExpressionCustom, -800, 700)
+    wind.set_editor_property("output_type", unreal.CustomMaterialOutputType.CMOT_FLOAT3)
+    wind.set_editor_property("code", WIND_HLSL)
+    inputs = ["SwayFlex", "PhaseFlutter", "T", "P", "WindStrength", "GustFrequency", "Flutter",
+              "WindDirection"]
+    custom_inputs = []
+    for name in inputs:
+        i = unreal.CustomInput()
+        i.set_editor_property("input_name", name)
+        custom_inputs.append(i)
+    wind.set_editor_property("inputs", custom_inputs)
+    for source, name in ((uv1, "SwayFlex"), (uv2, "PhaseFlutter"), (time, "T"), (position, "P")):
+        lib.connect_material_expressions(source, "", wind, name)
+    for name, p in parameters.items():
+        lib.connect_material_expressions(p, "", wind, name)
+    lib.connect_material_property(wind, "", unreal.MaterialProperty.MP_WORLD_POSITION_OFFSET)
     lib.recompile_material(material)
     unreal.EditorAssetLibrary.save_loaded_asset(material)
     return material
@@ -125,6 +164,8 @@ def _wind_material(destination):
 def _assign_wind(mesh, destination):
     parent = _wind_material(destination)
     tools = unreal.AssetToolsHelpers.get_asset_tools()
+    wind = _wind_parameters(mesh)
+    lib = unreal.MaterialEditingLibrary
     for index, slot in enumerate(mesh.get_editor_property("static_materials")):
         imported = slot.get_editor_property("material_interface")
         name = "MI_" + str(slot.get_editor_property("material_slot_name"))
@@ -137,6 +178,11 @@ def _assign_wind(mesh, destination):
             if found:
                 unreal.MaterialEditingLibrary.set_material_instance_vector_parameter_value(
                     instance, "BaseColor", color)
+        for name, value in wind.items():
+            if isinstance(value, float):
+                lib.set_material_instance_scalar_parameter_value(instance, name, value)
+            else:
+                lib.set_material_instance_vector_parameter_value(instance, name, value)
         unreal.EditorAssetLibrary.save_loaded_asset(instance)
         mesh.set_material(index, instance)
     unreal.EditorAssetLibrary.save_loaded_asset(mesh)

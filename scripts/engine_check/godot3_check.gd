@@ -4,8 +4,8 @@
 #   godot3-server --path PROJECT -s check.gd
 # Checks, per tree: exactly one LOD level visible in each distance band; convex collision
 # bodies; its materials its own (named for the tree, colour as in expected.json, the glb's
-# baseColorFactor) and the wind shader on every mesh; wind UV2 in [0, 1]; the tree on the
-# ground. The forest: a node per planted tree away from the origin. Prints "ok ..." or
+# baseColorFactor) and the wind shader on every mesh, its wind uniforms the glb material's
+# sylva_wind_* extras (expected.json's "wind"); wind UV2 in [0, 1]; the tree on the ground. The forest: a node per planted tree away from the origin. Prints "ok ..." or
 # "FAIL ..." lines and quits with the number of failures.
 extends SceneTree
 
@@ -47,7 +47,19 @@ func matches(color, pair):
 	return false
 
 
-func check_tree(name, expected):
+# The wind the kit gave a material (its metadata, as the albedo) against the glb's extras.
+func same_wind(given, extras):
+	if given == null or not extras.has("sylva_wind_strength"):
+		return false
+	var d = given["wind_direction"]
+	return abs(given["wind_strength"] - extras["sylva_wind_strength"]) < 1e-4 \
+		and abs(d.x - extras["sylva_wind_direction_x"]) < 1e-4 \
+		and abs(d.y - extras["sylva_wind_direction_z"]) < 1e-4 \
+		and abs(given["wind_gust_frequency"] - extras["sylva_wind_gust_frequency"]) < 1e-4 \
+		and abs(given["wind_flutter"] - extras["sylva_wind_flutter"]) < 1e-4
+
+
+func check_tree(name, expected, wind):
 	var scene = load("res://%s.glb" % name).instance()
 	get_root().add_child(scene)
 	var nodes = all_nodes(scene, [])
@@ -84,6 +96,8 @@ func check_tree(name, expected):
 	var meshes = 0
 	var wind_shaded = 0
 	var own = 0
+	var windy = 0
+	var shown_wind = null
 	var low = INF
 	var uv2_max = 0.0
 	var uv2_bad = 0
@@ -103,6 +117,12 @@ func check_tree(name, expected):
 					own += 1
 				else:
 					print("     %s: surface material %s albedo %s" % [name, key, str(albedo)])
+				var given = m.get_meta("sylva_wind") if m.has_meta("sylva_wind") else null
+				if wind.has(key) and same_wind(given, wind[key]):
+					windy += 1
+					shown_wind = given
+				else:
+					print("     %s: surface material %s wind %s, the glb's %s" % [name, key, str(given), str(wind.get(key))])
 			var arrays = n.mesh.surface_get_arrays(s)
 			var uv2 = arrays[Mesh.ARRAY_TEX_UV2]
 			for p in uv2:
@@ -112,6 +132,10 @@ func check_tree(name, expected):
 			for v in arrays[Mesh.ARRAY_VERTEX]:
 				low = min(low, (n.global_transform * v).y)
 	check(meshes > 0 and wind_shaded == own and own > 0, "%s: %d mesh surfaces on the wind shader, %d with the tree's own material and colour" % [name, wind_shaded, own])
+	var summary = "none"
+	if shown_wind != null:
+		summary = "strength %.2f, direction (%.2f, %.2f), gusts %.2f/s, flutter %.2f" % [shown_wind["wind_strength"], shown_wind["wind_direction"].x, shown_wind["wind_direction"].y, shown_wind["wind_gust_frequency"], shown_wind["wind_flutter"]]
+	check(windy == wind_shaded and windy > 0, "%s: %d of %d wind shaders carry the glb's wind (%s)" % [name, windy, wind_shaded, summary])
 	check(uv2_bad == 0 and uv2_max > 0.5, "%s: wind UV2 in [0, 1] (max %.3f, %d outside)" % [name, uv2_max, uv2_bad])
 	check(abs(low) < 0.01, "%s: stands on the ground (lowest y %.4f)" % [name, low])
 	for key in expected.keys():
@@ -139,6 +163,6 @@ func _init():
 	var expected = parse_json(file.get_as_text())
 	file.close()
 	for name in expected["trees"]:
-		check_tree(name, expected["materials"])
+		check_tree(name, expected["materials"], expected["wind"])
 	check_forest(int(expected["forest_trees"]))
 	quit(failures)

@@ -185,6 +185,28 @@ TEST_F(Cli, BadParameterIsExitCode3NamingTheKey) {
     EXPECT_FALSE(fs::exists(path("tree.obj")));
 }
 
+// --set on the wind: the values land in each glb material's extras (what the engine kits
+// read); out of range is exit 3 naming the key.
+TEST_F(Cli, SetWindReachesEveryMaterial) {
+    Result r =
+        run("export -t birch --set wind_strength=0.6 --set wind_gust_frequency=0.5 "
+            "--set wind_flutter=0.3 -o " +
+            path("w.glb"));
+    ASSERT_EQ(r.code, 0) << r.output;
+    const std::string glb = sylva::test::read_file(path("w.glb"));
+    auto count = [&](const std::string& text) {
+        std::size_t n = 0;
+        for (auto at = glb.find(text); at != std::string::npos; at = glb.find(text, at + 1)) ++n;
+        return n;
+    };
+    EXPECT_EQ(count("\"sylva_wind_strength\":0.6}"), 3u) << "trunk, crown, leaves";
+    EXPECT_EQ(count("\"sylva_wind_gust_frequency\":0.5,"), 3u);
+    EXPECT_EQ(count("\"sylva_wind_flutter\":0.3,"), 3u);
+    Result bad = run("export --set wind_flutter=1.5 -o " + path("x.glb"));
+    EXPECT_EQ(bad.code, 3);
+    EXPECT_NE(bad.output.find("wind_flutter"), std::string::npos) << bad.output;
+}
+
 // A folder that cannot be made (a file stands in its path) is exit 4 naming it, and nothing is
 // left; a missing folder is made (tests/app/test_cli_parity.cpp).
 TEST_F(Cli, UnwritablePathIsExitCode4AndLeavesNothing) {

@@ -22,6 +22,8 @@
 #include "export/part_attributes.h"
 #include "export/wind_motion.h"
 #include "tests/helpers.h"
+#include "tree/parameters.h"
+#include "tree/template_file.h"
 #include "tree/template_library.h"
 
 namespace sylva {
@@ -315,11 +317,85 @@ TEST(WindMotion, TheBaseStaysAndTheTopMovesWithinTheStrength) {
     for (float t = 0.0f; t < 10.0f; t += 0.37f) {
         EXPECT_EQ(wind_position({0, 0, 0}, {0, 0, 0.4f, 0}, t, motion), glm::vec3(0, 0, 0));
         const glm::vec3 top = wind_position({0, 10, 0}, {1, 0, 0, 0}, t, motion);
-        EXPECT_GT(top.x, 0.0f) << "the top leans downwind";
-        EXPECT_LE(top.x, motion.strength);
+        EXPECT_GE(top.x, 0.5f * motion.strength) << "the top leans downwind, gusts or not";
+        EXPECT_LE(top.x, 1.5f * motion.strength);
         EXPECT_EQ(top.y, 10.0f) << "sway alone moves sideways only";
         const glm::vec3 tip = wind_position({1, 5, 0}, {0.3f, 1, 0.2f, 1}, t, motion);
-        EXPECT_LE(glm::length(tip - glm::vec3(1, 5, 0)), 1.5f * motion.strength);
+        EXPECT_LE(glm::length(tip - glm::vec3(1, 5, 0)), wind_reach(motion));
+    }
+}
+
+// The gusts are a function of time alone: the same time gives the same lean, no vertex
+// ever moves past wind_reach() whatever the settings, the lean swings within [0.5, 1.5] of
+// the strength over a minute, a steady wind (frequency 0) never changes it, and flutter
+// moves a leaf tip only with its share.
+TEST(WindMotion, GustsAreDeterministicAndBoundedAndFlutterMovesLeafTips) {
+    const glm::vec4 tip_data(0.8f, 1.0f, 0.3f, 1.0f);
+    const glm::vec3 p(0.4f, 6.0f, -0.7f);
+    for (const WindMotion& m : {WindMotion{}, WindMotion{{0.0f, 1.0f}, 5.0f, 5.0f, 1.0f},
+                                WindMotion{{0.6f, 0.8f}, 0.8f, 0.0f, 0.5f}}) {
+        float lo = 2.0f, hi = 0.0f;
+        for (float t = 0.0f; t < 60.0f; t += 0.05f) {
+            const float gust = wind_gust(t, m.gust_frequency);
+            lo = std::min(lo, gust);
+            hi = std::max(hi, gust);
+            const glm::vec3 moved = wind_position(p, tip_data, t, m);
+            EXPECT_EQ(moved, wind_position(p, tip_data, t, m));
+            ASSERT_LE(glm::length(moved - p), wind_reach(m) * 1.0001f) << t;
+        }
+        EXPECT_GE(lo, 0.5f);
+        EXPECT_LE(hi, 1.5f);
+        if (m.gust_frequency == 0.0f)
+            EXPECT_EQ(lo, 1.0f) << "a steady wind";
+        else
+            EXPECT_GT(hi - lo, 0.3f) << "gusts at " << m.gust_frequency << " per second";
+    }
+    // Flutter: a leaf tip (flutter 1) moves with it, the branch it hangs on (flutter 0) not.
+    auto spread = [&](const glm::vec4& data, float flutter) {
+        const WindMotion m{{1.0f, 0.0f}, 0.3f, 0.0f, flutter};
+        float most = 0.0f;
+        for (float t = 0.0f; t < 3.0f; t += 0.01f)
+            most = std::max(
+                most, std::abs(wind_position(p, data, t, m).y -
+                               wind_position(p, data, t, {{1.0f, 0.0f}, 0.3f, 0.0f, 0.0f}).y));
+        return most;
+    };
+    EXPECT_EQ(spread({0.8f, 1.0f, 0.3f, 0.0f}, 1.0f), 0.0f);
+    EXPECT_NEAR(spread(tip_data, 0.5f), 0.5f * 0.3f, 0.01f);
+    EXPECT_NEAR(spread(tip_data, 1.0f), 1.0f * 0.3f, 0.01f);
+}
+
+// A template's wind (set, saved as a template file, read back) arrives in every glb
+// material that carries wind data, as the material's sylva_wind_* extras.
+TEST_F(EngineExport, TheTemplatesWindReachesTheMaterials) {
+    TreeTemplate edited = load_template("palm");
+    set_param(edited.params, "wind_strength", "0.75");
+    set_param(edited.params, "wind_direction", "90");
+    set_param(edited.params, "wind_gust_frequency", "0.4");
+    set_param(edited.params, "wind_flutter", "0.35");
+    const TreeTemplate tmpl = parse_template_file(template_file_text(edited), "palm.toml");
+    FinishSettings finish;
+    finish.budget.total = 400;
+    MeshOptions mesh;
+    mesh.budget = game_budget(finish);
+    const Tree tree = generate_tree(tmpl, mesh);
+    ExportOptions options;
+    options.engine.wind_motion = wind_motion(tmpl.params);
+    const fs::path path = dir_ / "palm.glb";
+    write_tree(path, tree, finish_tree(tree, finish), tmpl.colors, options);
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, path.string())) << error;
+    ASSERT_FALSE(model.materials.empty());
+    for (const tinygltf::Material& m : model.materials) {
+        auto value = [&](const char* key) { return m.extras.Get(key).GetNumberAsDouble(); };
+        ASSERT_TRUE(m.extras.Has("sylva_wind_strength")) << m.name;
+        EXPECT_EQ(value("sylva_wind_strength"), 0.75) << m.name;
+        EXPECT_EQ(value("sylva_wind_direction_x"), 0.0) << m.name;
+        EXPECT_EQ(value("sylva_wind_direction_z"), 1.0) << m.name;
+        EXPECT_EQ(value("sylva_wind_gust_frequency"), 0.4) << m.name;
+        EXPECT_EQ(value("sylva_wind_flutter"), 0.35) << m.name;
     }
 }
 

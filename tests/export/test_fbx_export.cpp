@@ -136,6 +136,7 @@ class FbxExport : public ::testing::Test {
         ExportOptions options;
         options.profile = profile;
         options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+        options.engine.wind_motion = wind_motion(tmpl.params);
         const fs::path path = dir_ / (name + ".fbx");
         write_tree(path, tree, finish_tree(tree, finish), tmpl.colors, options);
         return path;
@@ -171,10 +172,16 @@ TEST_F(FbxExport, ALodChainIsALodGroupOfOneMeshPerLevelWithEverySet) {
         }
         EXPECT_EQ(uv_sets, 3u) << "UVs, (sway, flex), (phase, flutter)";
         EXPECT_EQ(color_sets, 2u) << "tint, wind";
+        // The wind to play it in, as user properties of the mesh and its materials (the
+        // template's: the default wind).
+        EXPECT_EQ(property(*levels[i], "sylva_wind_strength"), 0.3);
+        EXPECT_EQ(property(*levels[i], "sylva_wind_gust_frequency"), 0.15);
         std::vector<std::string> materials;
         for (const fbx::Node* m : s.children(levels[i]->values[0].integer, "Material")) {
             const std::string full = m->values.at(1).text;
             materials.push_back(full.substr(0, full.find('\0')));
+            EXPECT_EQ(property(*m, "sylva_wind_flutter"), 0.1) << materials.back();
+            EXPECT_EQ(property(*m, "sylva_wind_direction_x"), 1.0) << materials.back();
         }
         EXPECT_EQ(materials,
                   (std::vector<std::string>{"oak_s1_trunk", "oak_s1_crown", "oak_s1_leaves"}));

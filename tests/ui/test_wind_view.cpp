@@ -6,9 +6,11 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 #include "ui/state/studio_options.h"
+#include "ui/state/studio_state.h"
 #include "ui/state/wind_view.h"
 
 namespace sylva::studio {
@@ -34,7 +36,7 @@ TEST(WindView, TheBaseStaysWhileTheCrownSways) {
             moved = std::max(moved, glm::length(view.parts[part].swayed.positions[v] -
                                                 view.parts[part].rest.positions[v]));
     EXPECT_GT(moved, 0.05f);
-    EXPECT_LE(moved, 1.5f * view.motion.strength);
+    EXPECT_LE(moved, wind_reach(view.motion));
 }
 
 TEST(WindView, WindOptionFreezesTheTime) {
@@ -73,6 +75,54 @@ TEST(WindView, StrengthAndDirectionSetTheSway) {
     const glm::vec3 along_z = farthest({{0.0f, 1.0f}, 0.8f});
     EXPECT_GT(std::abs(along_z.z), std::abs(along_z.x));
     EXPECT_GT(std::abs(strong.x), std::abs(strong.z));
+}
+
+// The wind panel edits the template's wind: no regrowth (it moves the tree, it does not shape
+// it), but an edit to save; the view sways in it, the same at the same time, the gusts
+// making two times differ, flutter moving the leaves and not the trunk.
+TEST(WindView, ThePanelsWindMovesTheViewWithoutRegrowing) {
+    StudioState state;
+    state.tree_template = load_template("palm");
+    state.requested = state.tree_template;
+    state.requested_budget = preview_budget(state);
+    const TreeTemplate before = state.tree_template;
+    set_param(state.tree_template.params, "wind_gust_frequency", 0.8);
+    set_param(state.tree_template.params, "wind_flutter", 0.6);
+    EXPECT_FALSE(edit_pending(state)) << "no new tree for a wind edit";
+    EXPECT_FALSE(same_template(before, state.tree_template)) << "but an edit to save";
+
+    const Tree tree = generate_tree(state.tree_template);
+    WindView view;
+    view.motion = wind_motion(state.tree_template.params);
+    EXPECT_EQ(view.motion.gust_frequency, 0.8f);
+    set_wind_parts(view, tree.skeleton, tree.trunk, tree.crown, tree.leaves, tree.trunk, tree.crown,
+                   tree.leaves);
+    auto at = [&](float t) {
+        sway(view, t);
+        return view.parts;
+    };
+    const auto first = at(2.0f);
+    EXPECT_EQ(first[2].swayed.positions, at(2.0f)[2].swayed.positions) << "deterministic";
+    const auto later = at(5.3f);
+    float apart = 0.0f;
+    for (std::size_t v = 0; v < first[0].swayed.positions.size(); ++v)
+        apart = std::max(apart,
+                         glm::length(first[0].swayed.positions[v] - later[0].swayed.positions[v]));
+    EXPECT_GT(apart, 0.05f) << "the gusts lean the trunk differently at two times";
+    // Flutter alone: the leaves move, the trunk (no flutter data) does not.
+    auto flutter_moves = [&](std::size_t part) {
+        WindView still = view, fluttering = view;
+        still.motion.flutter = 0.0f;
+        sway(still, 2.0f);
+        sway(fluttering, 2.0f);
+        float most = 0.0f;
+        for (std::size_t v = 0; v < still.parts[part].rest.positions.size(); ++v)
+            most = std::max(most, glm::length(still.parts[part].swayed.positions[v] -
+                                              fluttering.parts[part].swayed.positions[v]));
+        return most;
+    };
+    EXPECT_EQ(flutter_moves(0), 0.0f);
+    EXPECT_GT(flutter_moves(2), 0.02f);
 }
 
 }  // namespace

@@ -32,17 +32,22 @@ bool ready(const auto& future) {
     return future.valid() && future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-bool same_params(const TreeParams& a, const TreeParams& b) {
+// The wind's parameters move a tree without shaping it: the view and the export read them
+// from the template as it is, so with `wind` false they are left out.
+bool same_params(const TreeParams& a, const TreeParams& b, bool wind) {
     if (a.seed != b.seed) return false;
     for (const ParamInfo& info : param_infos())
-        if (*get_param(a, info.key) != *get_param(b, info.key)) return false;
+        if ((wind || info.group != ParamGroup::Wind) &&
+            *get_param(a, info.key) != *get_param(b, info.key))
+            return false;
     return true;
 }
 
-// What shapes the tree: a change here needs a new generation (a colour change does not).
+// What shapes the tree: a change here needs a new generation (a colour or a wind change
+// does not).
 bool same_tree_input(const TreeTemplate& a, const TreeTemplate& b) {
     return a.growth == b.growth && a.grammar == b.grammar && a.mode == b.mode &&
-           a.width_model == b.width_model && same_params(a.params, b.params);
+           a.width_model == b.width_model && same_params(a.params, b.params, false);
 }
 
 // The meshers get every core: while a worker runs, the UI thread draws only when woken or
@@ -206,6 +211,7 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
     options.profile = settings.profile;
     options.engine.seed = tmpl.params.seed;
     options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
+    options.engine.wind_motion = wind_motion(tmpl.params);
     const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl), options);
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +
@@ -301,9 +307,9 @@ void show_draft(StudioState& state) {
 }  // namespace
 
 bool same_template(const TreeTemplate& a, const TreeTemplate& b) {
-    return same_tree_input(a, b) && a.name == b.name && a.description == b.description &&
-           a.colors.trunk == b.colors.trunk && a.colors.crown == b.colors.crown &&
-           a.colors.leaves == b.colors.leaves;
+    return same_tree_input(a, b) && same_params(a.params, b.params, true) && a.name == b.name &&
+           a.description == b.description && a.colors.trunk == b.colors.trunk &&
+           a.colors.crown == b.colors.crown && a.colors.leaves == b.colors.leaves;
 }
 
 bool same_mesh(const Mesh& a, const Mesh& b) {

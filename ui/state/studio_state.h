@@ -157,8 +157,9 @@ struct ViewToggles {
     bool points = false;       // the attraction points the growth started from
     bool replay = false;       // the skeleton after growth step replay_iteration, no meshes
     int replay_iteration = 0;  // clamped to the tree's last step when drawn
-    bool wind = false;         // sway the tree with its exported wind data (ui/state/wind_view.h)
-    WindMotion wind_motion;    // the wind the view sways it in: strength and direction
+    // Sway the tree with its exported wind data (ui/state/wind_view.h) in the template's
+    // wind (core/wind_params.h).
+    bool wind = false;
     bool scale_figure = true;  // a 1.8 m person beside the trunk, for scale
     bool turntable = false;    // the camera circles the tree
     // A small square of forest planted with the shown template (ui/forest_preview.h).
