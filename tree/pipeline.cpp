@@ -205,7 +205,7 @@ FieldCells apply_age(TreeParams& p, const Skeleton& mature) {
     return cells;
 }
 
-// The thinnest branch the full-detail trunk draws (resolvable_cones at the template's own
+// The thinnest branch the full-detail trunk draws (kMinRadiusInCells at the template's own
 // resolution): what prisms widen thinner branches to, so a game mesh keeps its outline.
 float full_detail_radius(const Skeleton& skeleton, const TreeParams& template_params) {
     Box box = skeleton_bounds(skeleton);
