@@ -2,10 +2,11 @@
 // on its own, struts between the nearest blobs (the pairs crown_merge.h picks) become capped
 // cones, and the crown and its struts are meshed as one field (BridgedCrown).
 //
-// Needs the crown's field and its box; reads nothing else. Throws nothing of its own
-// (std::bad_alloc aside). crown_bridge_cones reads its arguments only; a BridgedCrown is
-// evaluated from any number of threads at once, as the meshers do, while its two fields
-// live. Kept apart from the pipeline because it is the crown's low-budget shape, not wiring.
+// Needs the crown's field, the box it is meshed in and the template's crown_merge and
+// crown_resolution. Throws nothing of its own (std::bad_alloc aside). crown_bridge_cones
+// reads its arguments only; a BridgedCrown is evaluated from any number of threads at once,
+// as the meshers do, while its two fields live. Kept apart from the pipeline because it is
+// the crown's low-budget shape, not wiring.
 #pragma once
 
 #include <algorithm>
@@ -23,7 +24,8 @@ namespace sylva {
 // The bridges that let a budget of `budget` trunk + crown triangles draw the crown: with
 // crown_merge on and more blobs than half the budget leaves kTrianglesPerCrownPiece each,
 // struts between the nearest blobs (crown_merge.h), each a cone from one sphere's centre to
-// the other's, 0.6 times as thick as its sphere (and at least a cell, so the grid sees it).
+// the other's, at each end as thick as its sphere (and at least a cell, so the grid sees it).
+// Empty without a budget, with crown_merge off, or when the blobs are few enough.
 std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
                                            const TreeParams& p, const Box& box);
 
