@@ -1,13 +1,17 @@
 // What the benchmark executables share: the studio's heap, the built-in templates as the
-// default list, medians, flags, and a Table that prints aligned text for a terminal or, with
+// default list, medians, flags, best-of-N wall and CPU timing, and a Table that prints aligned text
+// for a terminal or, with
 // --markdown, a Markdown table (scripts/bench-tables splices those into docs/benchmarks.md).
 // Single-threaded helpers for main(); not for the code under measurement.
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +35,41 @@ inline bool take_flag(std::vector<std::string>& args, std::string_view flag) {
 inline double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// CPU time used so far by the calling thread, and by all threads of the process, in ms.
+inline double thread_cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+inline double process_cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
+// The best (smallest) wall time and the best CPU time of all threads of some runs, in ms;
+// on a shared machine the CPU time is the steadier figure (work on two threads: cpu / 2).
+struct Times {
+    double wall_ms = std::numeric_limits<double>::max();
+    double cpu_ms = std::numeric_limits<double>::max();
+};
+
+// The best of `runs` calls of f() (at least one).
+template <class F>
+Times best_of(int runs, F&& f) {
+    Times best;
+    for (int r = 0; r < std::max(runs, 1); ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        const double cpu = process_cpu_ms();
+        f();
+        best.cpu_ms = std::min(best.cpu_ms, process_cpu_ms() - cpu);
+        best.wall_ms = std::min(best.wall_ms, std::chrono::duration<double, std::milli>(
+                                                  std::chrono::steady_clock::now() - start)
+                                                  .count());
+    }
+    return best;
 }
 
 // printf into a std::string, for a table's cells.

@@ -8,57 +8,27 @@
 // figure on a busy machine: wall = cpu / 2 on two idle cores). An
 // export without --impostor calls none of this (its bytes are the golden ones).
 //
-// Usage: sylva-bench-impostor [--repeat N] [--size PX] [--views N] [TEMPLATE...]
+// Usage: sylva-bench-impostor [--markdown] [--repeat N] [--size PX] [--views N] [TEMPLATE...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
-#include <limits>
 #include <string>
 #include <vector>
 
+#include "bench/common.h"
 #include "core/color_variation.h"
-#include "core/stopwatch.h"
 #include "export/export_tree.h"
 #include "impostor/impostor_files.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
-namespace {
-
 using namespace sylva;
-
-double process_cpu_ms() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-// Best wall time and best CPU time (all threads) of `repeat` runs.
-struct Times {
-    double wall = std::numeric_limits<double>::max();
-    double cpu = std::numeric_limits<double>::max();
-};
-
-template <class F>
-Times best_ms(int repeat, F&& f) {
-    Times best;
-    for (int r = 0; r < repeat; ++r) {
-        Stopwatch clock;
-        const double cpu = process_cpu_ms();
-        f();
-        best.wall = std::min(best.wall, clock.lap_ms());
-        best.cpu = std::min(best.cpu, process_cpu_ms() - cpu);
-    }
-    return best;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     int repeat = 5;
     ImpostorSettings settings;
     std::vector<std::string> names;
+    bool markdown = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--repeat" && i + 1 < argc)
@@ -67,17 +37,18 @@ int main(int argc, char** argv) {
             settings.size = std::atoi(argv[++i]);
         else if (arg == "--views" && i + 1 < argc)
             settings.views = std::atoi(argv[++i]);
+        else if (arg == "--markdown")
+            markdown = true;
         else
             names.push_back(arg);
     }
     if (names.empty()) names = {"oak", "spruce", "palm", "willow"};
     settings = clamped(settings);
 
-    std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d, wall ms\n",
-                settings.views, settings.views, settings.size, settings.size / settings.views,
-                repeat);
-    std::printf("%-10s %9s %8s %8s %10s %10s %8s %9s\n", "template", "triangles", "atlas",
-                "atlas cpu", "billboard", "png", "png cpu", "png KiB");
+    std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d\n", settings.views,
+                settings.views, settings.size, settings.size / settings.views, repeat);
+    bench::Table table({"template", "triangles", "atlas ms", "atlas cpu ms", "billboard ms",
+                        "png ms", "png cpu ms", "png KiB"});
     double worst = 0.0, worst_cpu = 0.0;
     for (const std::string& name : names) {
         TreeTemplate t = load_template(name);
@@ -94,18 +65,22 @@ int main(int argc, char** argv) {
         for (const BakePart& p : parts) triangles += p.mesh->triangles.size();
 
         ImpostorAtlas atlas;
-        const Times bake = best_ms(repeat, [&] { atlas = bake_impostor(parts, settings); });
-        const Times billboard = best_ms(repeat, [&] { (void)bake_billboard(parts, settings); });
+        const bench::Times bake =
+            bench::best_of(repeat, [&] { atlas = bake_impostor(parts, settings); });
+        const bench::Times billboard =
+            bench::best_of(repeat, [&] { (void)bake_billboard(parts, settings); });
         std::size_t png_bytes = 0;
-        const Times png = best_ms(repeat, [&] {
+        const bench::Times png = bench::best_of(repeat, [&] {
             png_bytes = encode_png(atlas.albedo).size() + encode_png(atlas.normal).size();
         });
-        worst = std::max(worst, bake.wall);
-        worst_cpu = std::max(worst_cpu, bake.cpu);
-        std::printf("%-10s %9zu %8.1f %8.1f %10.1f %10.1f %8.1f %9.0f\n", name.c_str(), triangles,
-                    bake.wall, bake.cpu, billboard.wall, png.wall, png.cpu,
-                    static_cast<double>(png_bytes) / 1024.0);
+        worst = std::max(worst, bake.wall_ms);
+        worst_cpu = std::max(worst_cpu, bake.cpu_ms);
+        table.row({name, std::to_string(triangles), bench::format("%.1f", bake.wall_ms),
+                   bench::format("%.1f", bake.cpu_ms), bench::format("%.1f", billboard.wall_ms),
+                   bench::format("%.1f", png.wall_ms), bench::format("%.1f", png.cpu_ms),
+                   bench::format("%.0f", static_cast<double>(png_bytes) / 1024.0)});
     }
+    table.print(markdown);
     // CPU time bounds the wall time of an idle machine from above (both threads' work,
     // as if done one after the other); on a busy machine the wall time is the scheduler's.
     std::printf(

@@ -4,12 +4,11 @@
 // figure's error and whether it meets its target, then the time to infer a tree of about
 // 10,000 segments. Prints figures from one run; asserts nothing.
 //
-//   build/bench/sylva-bench-infer [--dump DIR] [SETS] [TEMPLATE...]
+//   build/bench/sylva-bench-infer [--markdown] [--summary] [--dump DIR] [SETS] [TEMPLATE...]
 //
-// --dump writes each run's inferred template to DIR/TEMPLATE-SET-KIND.toml, to read why a
-// run misses.
+// --summary leaves out the line per run; --dump writes each run's inferred template to
+// DIR/TEMPLATE-SET-KIND.toml, to read why a run misses.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -17,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/common.h"
 #include "core/random.h"
 #include "infer/fit_report.h"
 #include "infer/rule_inference.h"
@@ -92,8 +92,9 @@ struct Tally {
         exact = 0, exact_runs = 0;
 };
 
+// Counts the run in `t` and adds its line to `runs`.
 void row(const char* name, int set, const char* kind, const FitReport& r, double natural,
-         bool exact_case, Tally& t) {
+         bool exact_case, Tally& t, bench::Table& runs) {
     const double dc = relative_difference(double(r.example.segments), double(r.regrown.segments));
     const double dl = relative_difference(r.example.total_length, r.regrown.total_length);
     const double dh = relative_difference(r.example.height, r.regrown.height);
@@ -119,23 +120,27 @@ void row(const char* name, int set, const char* kind, const FitReport& r, double
         t.exact +=
             r.hausdorff <= 0.01 * r.example.height && r.example.segments == r.regrown.segments;
     }
-    std::printf("%-11s %d %-6s %6zu %6.1f%% %6.1f%% %6.1f%% %6.1f%% %6.1f%% %7.3f %7.3f%s %3d\n",
-                name, set, kind, r.example.segments, 100 * dc, 100 * dl, 100 * dh, 100 * dw,
-                100 * dd, r.hausdorff, exact_case ? 0.01 * r.example.height : natural,
-                ok_h ? " " : "!", r.rules);
+    auto* f = &bench::format;
+    runs.row({name, std::to_string(set), kind, std::to_string(r.example.segments),
+              f("%.1f%%", 100 * dc), f("%.1f%%", 100 * dl), f("%.1f%%", 100 * dh),
+              f("%.1f%%", 100 * dw), f("%.1f%%", 100 * dd),
+              f("%.3f%s", r.hausdorff, ok_h ? "" : " !"),
+              f("%.3f", exact_case ? 0.01 * r.example.height : natural), std::to_string(r.rules)});
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool markdown = bench::take_flag(args, "--markdown");
+    const bool summary = bench::take_flag(args, "--summary");
     std::string dump;
-    if (argc > 2 && std::string(argv[1]) == "--dump") {
-        dump = argv[2];
-        argv += 2;
-        argc -= 2;
+    if (args.size() >= 2 && args[0] == "--dump") {
+        dump = args[1];
+        args.erase(args.begin(), args.begin() + 2);
     }
-    const int sets = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
-    std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
+    const int sets = !args.empty() ? std::max(1, std::atoi(args[0].c_str())) : 5;
+    std::vector<std::string> only(args.begin() + std::min<std::size_t>(args.size(), 1), args.end());
     auto save = [&](const std::string& name, int set, const char* kind,
                     const InferredTemplate& inferred) {
         if (dump.empty()) return;
@@ -146,8 +151,8 @@ int main(int argc, char** argv) {
             std::fclose(f);
         }
     };
-    std::printf(
-        "template  set kind   segs  count  length height  width  depth  hausd.  limit  rules\n");
+    bench::Table runs({"template", "set", "kind", "segs", "count", "length", "height", "width",
+                       "depth", "hausdorff", "limit", "rules"});
     Tally t;
     for (const TreeTemplate* base : builtin_templates()) {
         if (!only.empty() && std::find(only.begin(), only.end(), base->name) == only.end())
@@ -170,20 +175,31 @@ int main(int argc, char** argv) {
             const InferredTemplate inferred = infer_template(example);
             save(base->name, set, "plain", inferred);
             row(base->name.c_str(), set, "plain", fit_report(example, inferred), natural,
-                exact_case, t);
+                exact_case, t, runs);
             const ExampleTree noisy = as_example(jittered(skeleton, 77 + set), tree.params);
             const InferredTemplate inferred_noisy = infer_template(noisy);
             save(base->name, set, "jitter", inferred_noisy);
             row(base->name.c_str(), set, "jitter", fit_report(noisy, inferred_noisy), natural,
-                exact_case, t);
+                exact_case, t, runs);
         }
     }
-    std::printf(
-        "\nruns %d: count within 10%% %d, length within 10%% %d, height within 5%% %d, "
-        "crown width within 5%% %d, per depth within 10%% %d, hausdorff within limit %d, "
-        "at most 12 rules %d; deterministic exact %d of %d\n",
-        t.runs, t.count, t.length, t.height, t.width, t.depth, t.hausdorff, t.rules, t.exact,
-        t.exact_runs);
+    if (!summary) {
+        runs.print(markdown);
+        std::printf("\n");
+    }
+    bench::Table targets({"target", "runs that meet it", "of"});
+    const std::string of = std::to_string(t.runs);
+    targets.row({"segment count within 10%", std::to_string(t.count), of});
+    targets.row({"total length within 10%", std::to_string(t.length), of});
+    targets.row({"height within 5%", std::to_string(t.height), of});
+    targets.row({"crown width within 5%", std::to_string(t.width), of});
+    targets.row({"segments per depth within 10%", std::to_string(t.depth), of});
+    targets.row({"Hausdorff distance within its limit", std::to_string(t.hausdorff), of});
+    targets.row({"at most 12 rules", std::to_string(t.rules), of});
+    targets.row({"deterministic templates regrown exactly", std::to_string(t.exact),
+                 std::to_string(t.exact_runs)});
+    targets.print(markdown);
+    std::printf("\n");
 
     // Speed: honda at 14 generations has 16,383 segments.
     TreeTemplate big = *builtin_templates().front();
@@ -192,15 +208,8 @@ int main(int argc, char** argv) {
     big.params.blocks.edit<LSystemParams>().generations = 14;
     const Skeleton skeleton = grow(big);
     const ExampleTree example = as_example(skeleton, big.params);
-    double best = 1e9;
-    for (int k = 0; k < 5; ++k) {
-        const auto start = std::chrono::steady_clock::now();
-        const InferredTemplate inferred = infer_template(example);
-        best = std::min(best, std::chrono::duration<double, std::milli>(
-                                  std::chrono::steady_clock::now() - start)
-                                  .count());
-    }
+    const bench::Times best = bench::best_of(5, [&] { (void)infer_template(example); });
     std::printf("infer %zu segments (honda, 14 generations): %.1f ms (best of 5; target 1000 ms)\n",
-                skeleton.segments.size(), best);
+                skeleton.segments.size(), best.wall_ms);
     return 0;
 }

@@ -6,67 +6,45 @@
 // the same seed. Goals: derivation <= 1 s, >= 90% differ, >= 20 distinct structures, sizes
 // within 20%, 100 variations at 10x <= 1 s on 2 cores. Times are the best of 3 runs, wall
 // clock and CPU (all threads; on a shared machine CPU / threads is the steadier figure).
-//   build/bench/sylva-bench-layout [EXAMPLE...]
+//   build/bench/sylva-bench-layout [--markdown] [EXAMPLE...]
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <ctime>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "bench/common.h"
 #include "layout/derive.h"
 #include "layout/examples.h"
 #include "layout/generate.h"
 #include "layout/similarity.h"
 #include "layout/variations.h"
 
-namespace {
-
 using namespace sylva::layout;
-using Clock = std::chrono::steady_clock;
-
-struct Timing {
-    double wall_ms = 1e300, cpu_ms = 1e300;
-};
-
-template <class F>
-Timing best_of(int runs, F&& f) {
-    Timing best;
-    for (int r = 0; r < runs; ++r) {
-        const auto t0 = Clock::now();
-        const std::clock_t c0 = std::clock();
-        f();
-        best.cpu_ms =
-            std::min(best.cpu_ms, 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-        best.wall_ms = std::min(
-            best.wall_ms, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    return best;
-}
-
-}  // namespace
+using sylva::bench::Times;
 
 int main(int argc, char** argv) {
-    std::vector<std::string> names;
-    for (int i = 1; i < argc; ++i) names.emplace_back(argv[i]);
+    std::vector<std::string> names(argv + 1, argv + argc);
+    const bool markdown = sylva::bench::take_flag(names, "--markdown");
     if (names.empty())
         for (const auto& [name, text] : builtin_examples()) names.push_back(name);
-    std::printf("%-14s %13s %5s %5s %5s %9s %6s %8s | %6s %8s %5s %5s | %-14s | %15s %4s\n",
-                "example", "derive (cpu)", "rules", "start", "gens", "stopped", "open", "measure",
-                "differ", "distinct", "valid", "relax", "20% at 2/5/10x", "100@10x (cpu/2)",
-                "same");
+    std::printf("layout grammars: derivation and 100 variations at 10x best of 3, ms\n");
+    sylva::bench::Table rows({"example", "derive ms", "derive cpu ms", "rules", "starters",
+                              "generations", "stopped", "open", "measure", "differ", "distinct",
+                              "valid", "relaxed", "within 20% at 2/5/10x", "100 at 10x ms",
+                              "100 at 10x cpu/2 ms", "same bytes"});
     bool all_derive = true, all_differ = true, all_distinct = true, all_sizes = true,
          all_fast = true, all_same = true, all_valid = true;
-    std::vector<std::string> exempt, short_of;
-    Timing worst_derive{0, 0}, worst_hundred{0, 0};
-    auto max = [](const Timing& a, const Timing& b) {
-        return Timing{std::max(a.wall_ms, b.wall_ms), std::max(a.cpu_ms, b.cpu_ms)};
+    std::vector<std::string> exempt, short_of, corners;
+    Times worst_derive{0, 0}, worst_hundred{0, 0};
+    auto max = [](const Times& a, const Times& b) {
+        return Times{std::max(a.wall_ms, b.wall_ms), std::max(a.cpu_ms, b.cpu_ms)};
     };
     for (const std::string& name : names) {
         const Example ex = make_example(load_example(name));
         Grammar grammar;
-        const Timing derive = best_of(3, [&] { grammar = derive_grammar(ex); });
+        const Times derive = sylva::bench::best_of(3, [&] { grammar = derive_grammar(ex); });
         const GrowthTable table(grammar);
         const bool grows = table.can_grow();
         // 50 variations at the default sizes.
@@ -109,7 +87,8 @@ int main(int argc, char** argv) {
         VariationSettings big;
         big.size = 10 * table.example_size();
         big.threads = 2;
-        const Timing hundred = best_of(3, [&] { generate_layouts(table, 100, 3, big); });
+        const Times hundred =
+            sylva::bench::best_of(3, [&] { generate_layouts(table, 100, 3, big); });
         // The same bytes from the same seed.
         bool same = true;
         {
@@ -121,13 +100,14 @@ int main(int argc, char** argv) {
                 same = same && write_mesh_json(a[i]) == write_mesh_json(b[i]);
         }
         const HierarchyReport& h = grammar.hierarchy;
-        std::printf(
-            "%-14s %5.0f (%4.0f) %5zu %5zu %5d %9s %6d %8s | %5d%% %8zu %4d%% %4d%% | %-14s | "
-            "%6.0f (%5.0f) %4s\n",
-            name.c_str(), derive.wall_ms, derive.cpu_ms, grammar.rules.size(),
-            grammar.starters.size(), h.generations, h.stopped_by.c_str(), h.open_graphs,
-            measure_name(table.measure()), differ * 2, distinct.size(), valid * 2, relaxed * 2,
-            within.c_str(), hundred.wall_ms, hundred.cpu_ms / 2.0, same ? "yes" : "NO");
+        auto* f = &sylva::bench::format;
+        rows.row({name, f("%.0f", derive.wall_ms), f("%.0f", derive.cpu_ms),
+                  std::to_string(grammar.rules.size()), std::to_string(grammar.starters.size()),
+                  std::to_string(h.generations), h.stopped_by, std::to_string(h.open_graphs),
+                  measure_name(table.measure()), f("%d%%", differ * 2),
+                  std::to_string(distinct.size()), f("%d%%", valid * 2), f("%d%%", relaxed * 2),
+                  within, f("%.0f", hundred.wall_ms), f("%.0f", hundred.cpu_ms / 2.0),
+                  same ? "yes" : "NO"});
         worst_derive = max(worst_derive, derive);
         worst_hundred = max(worst_hundred, hundred);
         all_derive = all_derive && std::min(derive.wall_ms, derive.cpu_ms) <= 1000;
@@ -142,21 +122,29 @@ int main(int argc, char** argv) {
         all_distinct = all_distinct && distinct.size() >= 20;
         if (!sizes_ok) short_of.push_back(name);
         all_sizes = all_sizes && sizes_ok;
-        if (table.measure() == SizeMeasure::Corners)
-            std::printf("  %s: its rules never add a polygon; sizes count corners\n", name.c_str());
+        if (table.measure() == SizeMeasure::Corners) corners.push_back(name);
     }
+    rows.print(markdown);
+    for (const std::string& n : corners)
+        std::printf("%s: its rules never add a polygon; sizes count corners\n", n.c_str());
     auto verdict = [](bool ok) { return ok ? "met" : "NOT met"; };
-    std::printf("\nderivation <= 1 s: %s (slowest %.0f ms wall, %.0f ms CPU)\n",
-                verdict(all_derive), worst_derive.wall_ms, worst_derive.cpu_ms);
-    std::printf(">= 90%% differ from the example and every starter: %s\n", verdict(all_differ));
-    std::printf(">= 20 distinct structures of 50: %s\n", verdict(all_distinct));
-    std::printf("every output planar and locally similar: %s\n", verdict(all_valid));
-    std::printf("sizes within 20%% of 2, 5 and 10 x the example: %s", verdict(all_sizes));
-    for (const std::string& n : short_of) std::printf(" (short: %s)", n.c_str());
-    std::printf(
-        "\n100 variations at 10x <= 1 s on 2 threads: %s (slowest %.0f ms wall, %.0f ms CPU / 2)\n",
-        verdict(all_fast), worst_hundred.wall_ms, worst_hundred.cpu_ms / 2.0);
-    std::printf("same bytes from the same seed: %s\n", verdict(all_same));
+    auto* f = &sylva::bench::format;
+    std::string short_names;
+    for (const std::string& n : short_of)
+        short_names += (short_names.empty() ? "short: " : ", ") + n;
+    std::printf("\n");
+    sylva::bench::Table goals({"goal", "met", "figure"});
+    goals.row({"derivation <= 1 s", verdict(all_derive),
+               f("slowest %.0f ms wall, %.0f ms CPU", worst_derive.wall_ms, worst_derive.cpu_ms)});
+    goals.row({">= 90% differ from the example and every starter", verdict(all_differ), ""});
+    goals.row({">= 20 distinct structures of 50", verdict(all_distinct), ""});
+    goals.row({"every output planar and locally similar", verdict(all_valid), ""});
+    goals.row({"sizes within 20% of 2, 5 and 10 x the example", verdict(all_sizes), short_names});
+    goals.row({"100 variations at 10x <= 1 s on 2 threads", verdict(all_fast),
+               f("slowest %.0f ms wall, %.0f ms CPU / 2", worst_hundred.wall_ms,
+                 worst_hundred.cpu_ms / 2.0)});
+    goals.row({"same bytes from the same seed", verdict(all_same), ""});
+    goals.print(markdown);
     std::printf("exempt (the grammar is only its starter):");
     for (const std::string& n : exempt) std::printf(" %s", n.c_str());
     std::printf("\n");

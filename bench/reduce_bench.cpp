@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <limits>
 #include <string>
 #include <vector>
@@ -22,17 +21,7 @@
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
-namespace {
-
 using namespace sylva;
-
-double thread_cpu_ms() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     // Its exports, like the studio's, follow each other in one process.
@@ -74,11 +63,11 @@ int main(int argc, char** argv) {
             double best_cpu = best_wall;
             FinishedTree finished;
             for (int r = 0; r < repeat; ++r) {
-                const double cpu = thread_cpu_ms();
+                const double cpu = bench::thread_cpu_ms();
                 Stopwatch wall;
                 finished = finish_tree(tree, finish);
                 best_wall = std::min(best_wall, wall.lap_ms());
-                best_cpu = std::min(best_cpu, thread_cpu_ms() - cpu);
+                best_cpu = std::min(best_cpu, bench::thread_cpu_ms() - cpu);
             }
             const ReducedTree& level = finished.levels.at(0);
             cells.insert(cells.end(),

@@ -47,7 +47,7 @@ struct TreeParams {
     CrownBlend crown_blend = CrownBlend::Root;  // how crown spheres fuse
     bool crown_mesh = true;      // mesh the crown; off: leaves only (Heuer 2022, B.6)
     bool crown_merge = true;     // low budgets merge crown blobs (tree/crown_merge.h)
-    bool drop_hidden = false;    // game meshes leave out what the crown hides (pipeline.h)
+    bool drop_hidden = false;    // game meshes leave out what the crown hides (hidden_branches.h)
     double leaf_density = 60.0;  // leaves per cubic meter of crown
     double leaf_size = 0.25;     // leaf length, meters
     LeafShape leaf_shape = LeafShape::Round;

@@ -417,7 +417,7 @@ DecimateResult decimate_lanes(std::span<const Mesh* const> parts,
 // the other parts on the other core; collapse_together() keeps both lanes one part for the
 // part floor, and they are merged back at the end. Always two lanes, not one per core: the
 // same input gives the same output on every machine. A game mesh's trunk comes in pieces
-// for this (tree/pipeline.h).
+// for this (tree/trunk_pieces.h).
 struct Lanes {
     std::vector<Mesh> split;           // the split part's two lanes, if any
     std::vector<const Mesh*> meshes;   // a part or a lane of one, in part order

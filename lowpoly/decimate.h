@@ -9,7 +9,7 @@
 // Speed: about 1 us per input triangle on one core when no handle needs cutting (the bulk in
 // sorted passes, the last collapses from a heap). Both cores: each part is reduced on a
 // core of its own, a part with most of the triangles in two lanes of its connected
-// components (a game mesh's trunk is meshed in pieces for this, tree/pipeline.h), and the
+// components (a game mesh's trunk is meshed in pieces for this, tree/trunk_pieces.h), and the
 // shared order of the parts' last collapses runs in parallel up to an error bound.
 #pragma once
 

@@ -114,8 +114,8 @@ bool CollapseMesh::build(std::span<const Mesh* const> parts, std::size_t* bad_pa
     // The opposites and the fans are found on every core; a failure reports the part of the
     // first failing halfedge or vertex, as one pass in order would. The opposite of a -> b is
     // the one halfedge b -> a: entering a, so among a's own lists (read in order, where b's
-    // would be anywhere in memory: the search took 2.8 of the ternary trunk's 4.4 ms at 3000
-    // triangles). None is a boundary or misoriented, two or more non-manifold or misoriented.
+    // would be anywhere in memory, and a search there would cost most of the pass). None is
+    // a boundary or misoriented, two or more non-manifold or misoriented.
     opposite_.assign(halfedges, kNone);
     const std::size_t bad_halfedge = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, nv, 1024), std::size_t{halfedges},
@@ -678,8 +678,8 @@ namespace {
 
 // A pass's candidate as one number, the bits of its error above its vertex: the numbers
 // order as (error, vertex) pairs do (an error is never negative, and the bits of
-// non-negative floats order as the floats; -0 is made +0), and a pass picks and sorts them
-// in a quarter less time (19k candidates: 0.37 -> 0.28 ms).
+// non-negative floats order as the floats; -0 is made +0), and a pass picks and sorts one
+// number each faster than pairs.
 std::uint64_t candidate(float error, std::uint32_t v) {
     return std::uint64_t{std::bit_cast<std::uint32_t>(error + 0.0f)} << 32 | v;
 }
@@ -794,10 +794,8 @@ void collapse_together(std::span<CollapseMesh> meshes, std::size_t max_triangles
     // mesh makes more than it holds below the bound, nor takes its part below the floor: the
     // budget is never overshot. Rounds go on down to the last few dozen collapses, which go
     // one at a time in the shared order: those cost several microseconds each near the
-    // budget, where many fronts are illegal and filed again. (The ternary at 3000 triangles:
-    // 10 -> 5 ms with three rounds and the last few hundred one at a time, 4.7 -> 3.7 ms with
-    // up to 16 rounds; every template exports the same bytes as with the shared order all
-    // the way, at budgets 100 to 3000 and in LOD chains.)
+    // budget, where many fronts are illegal and filed again. (Every template exports the same
+    // bytes as with the shared order all the way, at budgets 100 to 3000 and in LOD chains.)
     constexpr std::size_t kSharedAtMost = 64;  // collapses
     constexpr int kMaxRounds = 16;
     std::vector<float> keys;

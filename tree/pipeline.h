@@ -18,6 +18,7 @@
 #include "sdf/cone_field.h"
 #include "sdf/sphere_field.h"
 #include "tree/branch_prisms.h"
+#include "tree/budget_resolution.h"
 #include "tree/organs.h"
 
 namespace sylva {
@@ -81,24 +82,6 @@ struct MeshOptions {
     // InputError past these. None by default; the CLI sets its --max-* limits.
     GrowthLimits growth_limits;
 };
-
-// The crown's marching-cubes resolution for a game mesh of `budget` trunk + crown
-// triangles: the template's, or less when the budget cannot show more (24 at 200, 40 at
-// 800, 56 at 3000); 0 (no budget) keeps the template's. The crown is smooth blobs, which a
-// coarse grid already draws as well as a small budget can; the trunk keeps more of its
-// resolution, since thin branches need it (trunk_resolution_for_budget).
-int crown_resolution_for_budget(int resolution, std::size_t budget);
-
-// The trunk's resolution for a game mesh of `budget` triangles: the template's from 800 up
-// (0: no budget, the template's too); below 800 the template's times sqrt(budget / 800)
-// (half at 200, at least 24 cells). When the crown hides most of the trunk (drop_hidden,
-// with a crown), at most one the budget can show, 3 sqrt(budget / 2) cells (1.5 times the
-// crown's up to 800: 30 at 200, 60 at 800; 117 at 3000, where the crown has 56), since such
-// a trunk ends near its floor of a quarter of the budget
-// (elm, fir, maple, spruce, willow, oak, cypress, windswept, ternary).
-int trunk_resolution_for_budget(const TreeParams& params, std::size_t budget);
-// The budget a template's trunk_resolution is made for (trunk_resolution_for_budget).
-inline constexpr std::size_t kTrunkDetailBudget = 800;
 
 // Runs the whole pipeline on a template (its params as the caller set them).
 // Throws InputError (GrammarError for the grammar) on bad input, Cancelled when cancelled.

@@ -115,9 +115,9 @@ TEST_F(CliForest, AnInterruptedBatchLeavesNothing) {
     EXPECT_FALSE(fs::exists(out));  // nor the folder made for it
 }
 
-// A batch or forest is estimated as a whole before any work: a billion trees ended in
-// bad_alloc after 26 s, a forest of many variants was checked one variant at a time, and an
-// orchard spacing of 1e-9 m hung. Each is refused at once (exit 3) with the figure.
+// A batch or forest is estimated as a whole before any work: else a billion trees would end
+// in bad_alloc, a forest of many variants would be checked one variant at a time, and an
+// orchard spacing of 1e-9 m would hang. Each is refused at once (exit 3) with the figure.
 TEST_F(CliForest, ManyTreeJobsAreRefusedWholeBeforeAnyWork) {
     const auto start = std::chrono::steady_clock::now();
     const Result billion = run("batch -t spruce --count 1000000000 -o " + path("b"), 20);

@@ -160,8 +160,8 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
         const bool in_crown = std::any_of(crown.begin(), crown.end(), [&](const Ball& b) {
             return glm::distance(p, b.center) < b.radius + margin;
         });
-        // A game mesh's trunk is several solids that overlap where they meet (trunk_groups in
-        // tree/pipeline.cpp): a branch's base inside its parent is no part of the surface.
+        // A game mesh's trunk is several solids that overlap where they meet (trunk_pieces in
+        // tree/trunk_pieces.h): a branch's base inside its parent is no part of the surface.
         if (in_crown || inside_a_branch(full.skeleton, p, cell, cell)) continue;
         ++shown;
         if (!near_kept(p)) ++lost;
@@ -170,7 +170,7 @@ TEST(Pipeline, AGameMeshLeavesOutOnlyTheBranchesTheCrownHides) {
     EXPECT_EQ(lost, 0u) << "of " << shown << " trunk vertices outside the crown";
 }
 
-// A game mesh's large trunk comes in pieces (trunk_groups in tree/pipeline.cpp, so that the
+// A game mesh's large trunk comes in pieces (tree/trunk_pieces.h, so that the
 // reduction works on both cores): several closed solids with the one-field trunk's surface
 // (the bush meshes at its template's resolution with a budget and without). Every vertex of
 // the one-field trunk has a piece's vertex within a cell and a half, and every piece's

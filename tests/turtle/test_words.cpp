@@ -22,7 +22,7 @@
 namespace sylva {
 namespace {
 
-// ABOP Fig. 1.26 (n = 5, delta = 18 degrees), as the issue gives it: modules apart.
+// ABOP Fig. 1.26 (n = 5, delta = 18 degrees), as ABOP writes it: modules apart.
 const char* const kAbopPlant = R"(axiom: plant
 plant -> internode + [plant + flower] - - // [- - leaf] internode [+ + leaf] - [plant flower] + + plant flower
 internode -> F seg [// & & leaf] [// ^ ^ leaf] F seg
