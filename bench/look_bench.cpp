@@ -22,10 +22,12 @@
 // With --images DIR, each measured tree's nine views go to DIR/<template>_<budget>.png (and
 // _LOD<i> for further levels), the views side by side: white where both trees cover a
 // pixel, red where only the full-detail tree does (what the game mesh lost), blue where only
-// the game mesh does.
+// the game mesh does. With --parts as well, the trunk's, the crown's and the leaves' views
+// each alone go beside it (<template>_<budget>_trunk.png, _crown, _leaves): which part lost
+// or added the outline.
 //
 // Usage: sylva-bench-look [--budgets 50,200,800,3000] [--lod] [--detail] [--images DIR]
-//                         [TEMPLATE...]
+//                         [--parts] [TEMPLATE...]
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
