@@ -22,10 +22,12 @@
 // With --images DIR, each measured tree's nine views go to DIR/<template>_<budget>.png (and
 // _LOD<i> for further levels), the views side by side: white where both trees cover a
 // pixel, red where only the full-detail tree does (what the game mesh lost), blue where only
-// the game mesh does.
+// the game mesh does. With --parts as well, the trunk's, the crown's and the leaves' views
+// each alone go beside it (<template>_<budget>_trunk.png, _crown, _leaves): which part lost
+// or added the outline.
 //
 // Usage: sylva-bench-look [--budgets 50,200,800,3000] [--lod] [--detail] [--images DIR]
-//                         [TEMPLATE...]
+//                         [--parts] [TEMPLATE...]
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
@@ -135,7 +137,7 @@ struct Costs {
 int main(int argc, char** argv) {
     bench::use_studio_heap();  // as the other benchmarks
     std::vector<std::size_t> budgets = {50, 200, 800, 3000};
-    bool lod = false, detail = false;
+    bool lod = false, detail = false, parts_too = false;
     std::string images;
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
@@ -146,6 +148,8 @@ int main(int argc, char** argv) {
             lod = true;
         else if (arg == "--detail")
             detail = true;
+        else if (arg == "--parts")
+            parts_too = true;
         else if (arg == "--images" && i + 1 < argc)
             images = argv[++i];
         else
@@ -215,6 +219,17 @@ int main(int argc, char** argv) {
                 const SilhouetteScore score = silhouette_iou(reference, seen);
                 const double silhouette_ms = measure.lap_ms();
                 row.iou = score.mean;
+                if (!images.empty() && parts_too) {
+                    const char* part_names[] = {"trunk", "crown", "leaves"};
+                    for (int part = 0; part < 3; ++part) {
+                        const Mesh* ref_part[] = {full_parts[part]};
+                        const Mesh* seen_part[] = {parts[part]};
+                        write_comparison(images + "/" + name + "_" + std::to_string(budgets[k]) +
+                                             "_" + part_names[part] + ".png",
+                                         rasterize_silhouettes(ref_part, frame, resolution),
+                                         rasterize_silhouettes(seen_part, frame, resolution));
+                    }
+                }
                 if (!images.empty())
                     write_comparison(images + "/" + name + "_" + std::to_string(budgets[k]) +
                                          (level ? "_LOD" + std::to_string(level) : "") + ".png",

@@ -32,7 +32,8 @@ void keep_between(const TubeAxis& axis, std::size_t first, std::size_t last, flo
         const float off =
             distance_to_segment(axis.points[i], axis.points[first], axis.points[last], t);
         const float radius = axis.radii[first] + t * (axis.radii[last] - axis.radii[first]);
-        const float error = std::max(off, std::abs(axis.radii[i] - radius));
+        // A radius error shows twice, on both sides of the branch.
+        const float error = std::max(off, 2.0f * std::abs(axis.radii[i] - radius));
         if (error > far_error) {
             far_error = error;
             far = i;

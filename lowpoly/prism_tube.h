@@ -30,7 +30,8 @@ struct TubeAxis {
 
 // The axis with fewer points: Douglas-Peucker on position and radius (a point stays when
 // it lies farther than `tolerance` from the line between the points kept around it, or its
-// radius differs from that line's by more), first and last point always kept.
+// radius differs from that line's by more than half of it: a width shows the radius twice),
+// first and last point always kept.
 TubeAxis simplify_axis(const TubeAxis& axis, float tolerance);
 
 // The axis cut into pieces that each make a tube whose faces do not cross: at every bend

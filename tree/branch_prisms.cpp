@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <numeric>
 #include <queue>
 #include <tuple>
@@ -22,11 +23,21 @@ glm::vec3 unit_direction(const Segment& s) {
 }
 
 // The sides of an axis of base radius `radius`: max_sides for the thickest, falling with
-// the square root of the radius.
-int sides_for(float radius, float thickest, int max_sides) {
+// the square root of the radius, and no more than keep the polygon within half the look's
+// `tolerance` of the round branch (a radius r polygon of n sides strays r (1 - cos(pi / n))):
+// a twig a pixel or two across reads the same as a triangle or a hexagon, and the
+// triangles it saves draw more twigs.
+int sides_for(float radius, float thickest, int max_sides, float tolerance) {
     const float share = thickest > 0.0f ? std::sqrt(radius / thickest) : 1.0f;
-    return std::clamp(static_cast<int>(std::lround(static_cast<float>(max_sides) * share)), 3,
-                      max_sides);
+    int sides = static_cast<int>(std::lround(static_cast<float>(max_sides) * share));
+    const float stray = 0.5f * tolerance;
+    if (radius > stray) {
+        const float enough = std::numbers::pi_v<float> / std::acos(1.0f - stray / radius);
+        sides = std::min(sides, static_cast<int>(std::ceil(enough)));
+    } else {
+        sides = 3;
+    }
+    return std::clamp(sides, 3, max_sides);
 }
 
 // A branch that does not fit at the look's tolerance is tried at twice and four times it;
@@ -174,7 +185,8 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
         const auto i = static_cast<std::size_t>(-ready.top().second);
         ready.pop();
         const BranchAxis& branch = axes.axes[i];
-        const int sides = sides_for(branch.axis.radii.front(), axes.thickest, look.max_sides);
+        const int sides =
+            sides_for(branch.axis.radii.front(), axes.thickest, look.max_sides, look.tolerance);
         // The look's tolerance, or coarser (twice, four times) where the branch would not
         // fit; the first branch (the trunk) is drawn however coarse it must be.
         const bool first = triangles == 0;
@@ -204,7 +216,8 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
             continue;
         }
         const BranchAxis& branch = axes.axes[i];
-        const int sides = sides_for(branch.axis.radii.front(), axes.thickest, look.max_sides);
+        const int sides =
+            sides_for(branch.axis.radii.front(), axes.thickest, look.max_sides, look.tolerance);
         // Each axis' polygon turned by a golden angle more than the one before: branches
         // that leave one point in mirrored directions would otherwise put corners on the same
         // spots, and a surface welded there would pass through itself.

@@ -22,6 +22,10 @@ constexpr float kMaxTurn = 0.6f;   // radians, about 34 degrees
 // A card's half-length and half-width over its leaves' farthest spread along and across it:
 // a diamond through the farthest leaf points would cover only half of the patch.
 constexpr float kCover = 1.25f;
+// Leaves of a patch lie alike (a frond's leaflets, a twig's leaves in a row) when their
+// normals, each turned to the outward side, sum to more than this share of their count:
+// then the card lies as they do, not facing out of the crown, and runs along them.
+constexpr float kAlike = 0.7f;
 // The grid grows by this factor until its occupied cells fit the budget, then is refined.
 constexpr float kGrowth = 1.2f;
 constexpr int kRefinements = 6;
@@ -50,6 +54,8 @@ class Outward {
         low_ = std::min(lo.y + radius, middle_.y);
         high_ = std::max(hi.y - radius, middle_.y);
     }
+    // The middle of the leaves' box.
+    const glm::vec3& middle() const { return middle_; }
     glm::vec3 operator()(const glm::vec3& p) const {
         const glm::vec3 d = p - glm::vec3(middle_.x, std::clamp(p.y, low_, high_), middle_.z);
         return glm::length(d) > 1e-6f ? glm::normalize(d) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -204,6 +210,18 @@ Mesh leaf_cards(const Mesh& leaves, const LeafCardSettings& settings) {
         const glm::vec3 away = centre - around.sum / around.count;
         if (glm::length(away) > 0.1f * cell) normal += glm::normalize(away);
         normal = glm::length(normal) > 1e-6f ? glm::normalize(normal) : glm::vec3(0, 1, 0);
+        // How the patch's leaves lie: their normals, each turned to the first's side, and
+        // their lengths; the card faces away from the leaves' middle (else out of the crown).
+        glm::vec3 lie(0.0f), lie_along(0.0f);
+        const glm::vec3 first = spots[keyed[begin].second].normal;
+        for (std::size_t i = begin; i < end; ++i) {
+            const LeafSpot& spot = spots[keyed[i].second];
+            lie += glm::dot(spot.normal, first) < 0.0f ? -spot.normal : spot.normal;
+            lie_along += spot.along;
+        }
+        const bool alike = glm::length(lie) > kAlike * static_cast<float>(end - begin);
+        const float facing = glm::dot(lie, centre - outward.middle());
+        if (facing < 0.0f || (facing == 0.0f && glm::dot(lie, normal) < 0.0f)) lie = -lie;
         const float u[3] = {static_cast<float>(random.uniform()),
                             static_cast<float>(random.uniform()),
                             static_cast<float>(random.uniform())};
@@ -211,12 +229,16 @@ Mesh leaf_cards(const Mesh& leaves, const LeafCardSettings& settings) {
         glm::vec3 side = std::abs(normal.y) < 0.9f ? glm::cross(normal, glm::vec3(0, 1, 0))
                                                    : glm::cross(normal, glm::vec3(1, 0, 0));
         side = turn(glm::normalize(side), normal, 2.0f * std::numbers::pi_v<float> * u[0]);
-        normal = glm::normalize(turn(normal, side, kMaxTilt * u[1]));
+        normal = alike ? glm::normalize(lie) : glm::normalize(turn(normal, side, kMaxTilt * u[1]));
         // Its length runs upwards where it can (as leaves hang from twigs), turned a little.
         glm::vec3 along = glm::vec3(0, 1, 0) - normal.y * normal;
         if (glm::length(along) < 1e-3f) along = glm::cross(side, normal);
         along =
             glm::normalize(turn(glm::normalize(along), normal, kMaxTurn * (2.0f * u[2] - 1.0f)));
+        if (alike) {
+            const glm::vec3 a = lie_along - glm::dot(lie_along, normal) * normal;
+            if (glm::length(a) > 1e-4f) along = glm::normalize(a);
+        }
         const glm::vec3 across = glm::cross(normal, along);
         // As far along and across as its leaves reach.
         float half_length = 0.25f * cell, half_width = 0.25f * cell;

@@ -27,7 +27,10 @@ struct LeafCardSettings {
 // until they fit, as little as they must), and a card per patch: centred on its leaves,
 // facing out of the crown (away from its spine and from the leaves around the patch), as
 // long and wide as the leaves spread along and across it, leaning and turned a little at
-// random. Same leaves and settings, same cards. No leaves, or a budget below two triangles,
+// random; where the patch's leaves lie alike (their normals, turned outwards, mostly agree:
+// a frond's leaflets, a row of leaves on a twig) the card lies in their mean plane instead
+// and runs along their mean direction, so it covers them as they show from the side.
+// Same leaves and settings, same cards. No leaves, or a budget below two triangles,
 // give none.
 Mesh leaf_cards(const Mesh& leaves, const LeafCardSettings& settings);
 

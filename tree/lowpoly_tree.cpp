@@ -141,9 +141,12 @@ constexpr std::size_t kTinyCrownBudget = 100;
 // `hull_source` is the crown the hulls are made of and measured against: the crown itself,
 // or in a LOD chain the finest level's (a coarser level's crown, already hulls, has as many
 // pieces as the level before kept, more than a smaller budget can draw).
+// `hull_count` is crown_hull_count(budget) unless the caller counts the lumps on a larger
+// budget (a prism trunk's tree counts them on the whole tree's, not on the crown's rest).
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
-                          const TreeBudget& budget, const DecimateSettings& settings) {
-    const std::size_t hull_count = crown_hull_count(budget);
+                          const TreeBudget& budget, const DecimateSettings& settings,
+                          std::optional<std::size_t> lumps = std::nullopt) {
+    const std::size_t hull_count = lumps.value_or(crown_hull_count(budget));
     // Clusters split where the crown parts (crown_hulls) add up to half as many hulls again
     // while the hulls are few; past kMostHullsToSplit the clusters are small enough that few
     // bridge a gap, and a split-off piece's small hull, reduced, folds (a spruce at 3000).
@@ -236,7 +239,12 @@ ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& 
     rest.trunk = rest.crown = std::nullopt;
     const std::size_t drawn = prisms.mesh.triangles.size();
     rest.total = budget.crown ? *budget.crown : (total > drawn + 4 ? total - drawn : 4);
-    ReducedTree out = reduce_shaped(Mesh{}, crown, hull_source, rest, settings);
+    // The lumps are counted on the whole budget (one per lump_triangles of it, as without
+    // prisms), not on the crown's rest: half the lumps, each twice as large, bridge the gaps
+    // between tiers and curtains the crown's outline shows (a willow at 800 kept 0.85 of its
+    // silhouette with them, 0.87 with these).
+    const std::size_t lumps = crown_hull_count(rest) > 0 ? crown_hull_count(budget) : 0;
+    ReducedTree out = reduce_shaped(Mesh{}, crown, hull_source, rest, settings, lumps);
     out.trunk = std::move(prisms.mesh);
     out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     out.within_budget = out.within_budget && out.triangles <= total;

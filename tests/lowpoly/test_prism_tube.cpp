@@ -124,5 +124,15 @@ TEST(PrismTube, SimplifyingKeepsBendsAndRadiusStepsAndDropsTheRest) {
     EXPECT_EQ(simplify_axis(axis, 10.0f).points.size(), 2u);
 }
 
+// A radius off the line by more than half the tolerance widens the branch by more than the
+// tolerance (on both sides): it stays; one off by less goes.
+TEST(PrismTube, ARadiusErrorCountsTwiceAsItShowsOnBothSides) {
+    TubeAxis axis = axis_of({{0, 0, 0}, {0, 1, 0}, {0, 2, 0}}, 0.1f);
+    axis.radii[1] = 0.1f + 0.6f * 0.01f;
+    EXPECT_EQ(simplify_axis(axis, 0.01f).points.size(), 3u);
+    axis.radii[1] = 0.1f + 0.4f * 0.01f;
+    EXPECT_EQ(simplify_axis(axis, 0.01f).points.size(), 2u);
+}
+
 }  // namespace
 }  // namespace sylva

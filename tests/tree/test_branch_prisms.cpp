@@ -45,6 +45,38 @@ TEST(BranchPrisms, AStraightRunIsOneAxisAndABranchItsChild) {
     EXPECT_EQ(branch_axes(twice, std::vector<std::uint8_t>(5, 1), 0.01f).axes.size(), 2u);
 }
 
+// A branch gets the square-root rule's sides (the thickest the look's most) unless fewer
+// keep its polygon within half the look's tolerance of round: a twig that thin is a
+// triangle, whatever the trunk's radius.
+TEST(BranchPrisms, ATwigTheBudgetCannotShowRoundIsATriangle) {
+    Skeleton s;
+    s.segments.push_back({{0, 0, 0}, {0, 10, 0}, 0.5f, 0.5f, -1, 0});  // the trunk
+    s.segments.push_back({{0, 5, 0}, {3, 5, 0}, 0.3f, 0.3f, 0, 1});    // a level branch
+    const BranchAxes axes = branch_axes(s, std::vector<std::uint8_t>(2, 1), 0.001f);
+    ASSERT_EQ(axes.axes.size(), 2u);
+    const PrismLook look = prism_look(axes, 800);  // 0.04 m on a 10 m tree: a stray of 0.02
+    ASSERT_EQ(look.max_sides, 6);
+    ASSERT_NEAR(look.tolerance, 0.04f, 1e-6f);
+    // The trunk ends in a cap (a branch grows from it), the branch in a point.
+    const auto triangles = [](int trunk_sides, int branch_sides) {
+        return tube_triangles(2, trunk_sides, false) + tube_triangles(2, branch_sides, true);
+    };
+    // Radius 0.3: 6 sqrt(0.6) = 4.6, 5 sides; round enough at 5 (pi / acos(1 - 0.02 / 0.3)
+    // asks for 9).
+    EXPECT_EQ(branch_prisms(axes, 800).mesh.triangles.size(), triangles(6, 5));
+    // A trunk and a branch of 0.02 and 0.015: the square-root rule gives 6 and 5, but
+    // neither radius is above the stray: triangles.
+    s.segments[0].ra = s.segments[0].rb = 0.02f;
+    s.segments[1].ra = s.segments[1].rb = 0.015f;
+    const BranchAxes thin = branch_axes(s, std::vector<std::uint8_t>(2, 1), 0.001f);
+    EXPECT_EQ(branch_prisms(thin, 800).mesh.triangles.size(), triangles(3, 3));
+    // At 3000 the look's tolerance is about half: 0.015 stays a triangle, 0.03 gets more.
+    s.segments[0].ra = s.segments[0].rb = 0.03f;
+    s.segments[1].ra = s.segments[1].rb = 0.03f;
+    const BranchAxes finer = branch_axes(s, std::vector<std::uint8_t>(2, 1), 0.001f);
+    EXPECT_GT(branch_prisms(finer, 3000).mesh.triangles.size(), triangles(3, 3));
+}
+
 class PrismsOfTemplate : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PrismsOfTemplate, AreSoundWithinTheirShareAndDrawParentsFirst) {

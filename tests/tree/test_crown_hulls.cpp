@@ -156,6 +156,28 @@ TEST(CrownHulls, ALowBudgetCrownIsAFewClosedPiecesAndNeitherPartIsStarved) {
     }
 }
 
+// A tree whose branches are prisms counts its lumps on the whole budget, as a tree without
+// them does, not on what the prisms leave the crown: a willow at 800 (from 400 on only the
+// hulls are drawn) has a lump per 25 triangles of the 800, more than its crown's rest buys.
+TEST(CrownHulls, APrismTreeCountsItsLumpsOnTheWholeBudget) {
+    TreeBudget budget;
+    budget.total = 800;
+    budget.leaves = 0;
+    MeshOptions options;
+    options.budget = budget.total;
+    const Tree tree = generate_tree(load_template("willow"), options);
+    ASSERT_FALSE(tree.branch_axes.axes.empty());
+    budget.lump_triangles = tree.crown_lump_triangles;
+    const ReducedTree reduced = reduce_tree(tree, budget);
+    const std::size_t pieces = component_volumes(reduced.crown).size();
+    TreeBudget rest = budget;
+    rest.total = budget.total - reduced.trunk.triangles.size();
+    EXPECT_GT(pieces, crown_hull_count(rest) * 3 / 2);  // more than the rest's most
+    EXPECT_GE(pieces, crown_hull_count(budget));
+    EXPECT_LE(pieces, crown_hull_count(budget) * 3 / 2);
+    EXPECT_LE(reduced.triangles, budget.total);
+}
+
 // The automatic choice for a crown of sphere-like pieces (pine: a cone of blobs, no tunnel):
 // its own surface, as CrownShape::Blobs gives it. (Crowns with handles, above, get hulls.)
 TEST(CrownHulls, ACrownWithoutHandlesKeepsItsOwnSurface) {

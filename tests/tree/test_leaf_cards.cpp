@@ -97,6 +97,34 @@ TEST(LeafCards, LieOnTheCrownAndFaceOut) {
     }
 }
 
+// A flat frond: leaflets all lying level in a row along x. Facing out of the crown (here
+// sideways) its cards would show their edges from above and their faces from the side; the
+// leaflets lie alike, so each card lies as they do and runs along them.
+TEST(LeafCards, ACardOfLeavesThatLieAlikeLiesAsTheyDo) {
+    Mesh leaves;
+    for (int i = 0; i < 80; ++i) {
+        const float x = 1.0f + 0.05f * static_cast<float>(i);
+        const float z = 0.1f * static_cast<float>((i * 7) % 5 - 2);
+        const glm::vec3 base(x, 1.0f, z);
+        const auto first = static_cast<std::uint32_t>(leaves.positions.size());
+        leaves.positions.push_back(base);
+        leaves.positions.push_back(base + glm::vec3(0.1f, 0.0f, -0.03f));
+        leaves.positions.push_back(base + glm::vec3(0.2f, 0.0f, 0.0f));
+        leaves.positions.push_back(base + glm::vec3(0.1f, 0.0f, 0.03f));
+        leaves.triangles.push_back({first, first + 1, first + 2});
+        leaves.triangles.push_back({first, first + 2, first + 3});
+    }
+    const Mesh cards = leaf_cards(leaves, {.max_triangles = 20});
+    ASSERT_GT(cards.triangles.size(), 0u);
+    ASSERT_LE(cards.triangles.size(), 20u);
+    for (std::size_t c = 0; c < cards.triangles.size() / 2; ++c) {
+        EXPECT_GT(std::abs(card_normal(cards, c).y), 0.99f) << "card " << c;
+        // Base to tip (the card's first and third corners) along the leaflets.
+        const glm::vec3 along = glm::normalize(cards.positions[4 * c + 2] - cards.positions[4 * c]);
+        EXPECT_GT(along.x, 0.99f) << "card " << c;
+    }
+}
+
 TEST(LeafCards, TheirUvsFillTheUnitSquareAsALeafs) {
     const Tree tree = game_tree("oak", 800);
     const Mesh cards = leaf_cards(tree.leaves, {.max_triangles = 200});
