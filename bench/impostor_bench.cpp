@@ -7,8 +7,12 @@
 // as wall time on the TBB pool (both cores) and CPU time of all threads (the steadier
 // figure on a busy machine: wall = cpu / 2 on two idle cores). An
 // export without --impostor calls none of this (its bytes are the golden ones).
+// With --fidelity, also the worst silhouette IoU from the capture directions and from the 8
+// between them, and the worst colour difference (impostor/impostor_fidelity.h); `all` for
+// every built-in template.
 //
-// Usage: sylva-bench-impostor [--repeat N] [--size PX] [--views N] [TEMPLATE...]
+// Usage: sylva-bench-impostor [--repeat N] [--size PX] [--views N] [--fidelity]
+//                             [all | TEMPLATE...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +24,7 @@
 #include "core/color_variation.h"
 #include "core/stopwatch.h"
 #include "export/export_tree.h"
+#include "impostor/impostor_fidelity.h"
 #include "impostor/impostor_files.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -59,6 +64,7 @@ int main(int argc, char** argv) {
     int repeat = 5;
     ImpostorSettings settings;
     std::vector<std::string> names;
+    bool fidelity = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--repeat" && i + 1 < argc)
@@ -67,6 +73,10 @@ int main(int argc, char** argv) {
             settings.size = std::atoi(argv[++i]);
         else if (arg == "--views" && i + 1 < argc)
             settings.views = std::atoi(argv[++i]);
+        else if (arg == "--fidelity")
+            fidelity = true;
+        else if (arg == "all")
+            for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
         else
             names.push_back(arg);
     }
@@ -76,8 +86,9 @@ int main(int argc, char** argv) {
     std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d, wall ms\n",
                 settings.views, settings.views, settings.size, settings.size / settings.views,
                 repeat);
-    std::printf("%-10s %9s %8s %8s %10s %10s %8s %9s\n", "template", "triangles", "atlas",
-                "atlas cpu", "billboard", "png", "png cpu", "png KiB");
+    std::printf("%-15s %9s %8s %8s %10s %10s %8s %9s%s\n", "template", "triangles", "atlas",
+                "atlas cpu", "billboard", "png", "png cpu", "png KiB",
+                fidelity ? "  IoU capture  between  colour/255" : "");
     double worst = 0.0, worst_cpu = 0.0;
     for (const std::string& name : names) {
         TreeTemplate t = load_template(name);
@@ -102,9 +113,14 @@ int main(int argc, char** argv) {
         });
         worst = std::max(worst, bake.wall);
         worst_cpu = std::max(worst_cpu, bake.cpu);
-        std::printf("%-10s %9zu %8.1f %8.1f %10.1f %10.1f %8.1f %9.0f\n", name.c_str(), triangles,
+        std::printf("%-15s %9zu %8.1f %8.1f %10.1f %10.1f %8.1f %9.0f", name.c_str(), triangles,
                     bake.wall, bake.cpu, billboard.wall, png.wall, png.cpu,
                     static_cast<double>(png_bytes) / 1024.0);
+        if (fidelity) {
+            const ImpostorFidelity f = impostor_fidelity(parts, atlas);
+            std::printf("        %.3f    %.3f  %6.2f", f.capture_iou, f.between_iou, f.color);
+        }
+        std::printf("\n");
     }
     // CPU time bounds the wall time of an idle machine from above (both threads' work,
     // as if done one after the other); on a busy machine the wall time is the scheduler's.

@@ -21,9 +21,8 @@ EngineModel variant_model_levels(const Tree& tree, const FinishedTree& finished,
     for (PartTextures& textures : model.textures) {
         const bool octahedral = textures.name == "impostor";
         textures.name = variant_name + "_" + textures.name;
-        textures.extras_json =
-            octahedral ? impostor_layout_json(&*model.atlas, nullptr, names)
-                       : impostor_layout_json(nullptr, &*model.billboard, names);
+        textures.extras_json = octahedral ? impostor_layout_json(&*model.atlas, nullptr, names)
+                                          : impostor_layout_json(nullptr, &*model.billboard, names);
     }
     return model;
 }

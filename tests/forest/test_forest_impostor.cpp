@@ -43,7 +43,8 @@ tinygltf::Model load(const fs::path& path) {
 
 // The bytes of an image stored in a buffer view (the PNG as written).
 std::string image_bytes(const tinygltf::Model& model, const tinygltf::Image& image) {
-    const tinygltf::BufferView& view = model.bufferViews.at(static_cast<std::size_t>(image.bufferView));
+    const tinygltf::BufferView& view =
+        model.bufferViews.at(static_cast<std::size_t>(image.bufferView));
     const auto& data = model.buffers.at(static_cast<std::size_t>(view.buffer)).data;
     return {data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
             data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength)};
