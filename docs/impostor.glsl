@@ -7,7 +7,7 @@
 //
 // Everything is in the model's own space (metres, Y up, right-handed: as exported): the
 // layout's center and radius, the camera position, the quad's corners.
-//   albedo atlas: sRGB colour, alpha = coverage (alpha-test at 0.5)
+//   albedo atlas: sRGB colour, alpha = coverage (blended, times 1.4, alpha-tested at 0.5)
 //   normal atlas: rgb = object-space normal * 0.5 + 0.5, a = 0.5 + depth / (2 radius)
 // View (i, j) of N x N fills column i, row j (rows top down); its direction is the
 // hemi-octahedral decoding of (i, j) / (N - 1) * 2 - 1. The three views around the
