@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/impostor_cli.h"
 #include "core/errors.h"
 #include "core/seed.h"
 #include "export/export.h"
@@ -46,7 +47,7 @@ Many trees:
                [--species NAME[:WEIGHT],... | --species-file FILE.json]
                [--variants K] [--spacing M] [--density D | --trees N] [--seed S]
                [--stand-size M] [--jitter J (default 0.2)] [--min-age A] [--scale-jitter S]
-               [--instancing nodes|gpu] [--budget N] [--lod] -o FOREST.glb
+               [--instancing nodes|gpu] [--budget N] [--lod] [--impostor...] -o FOREST.glb
       Plants a ground: a W x D meter rectangle (default 100x100) or the "forest" polygons
       of a JSON file {"polygons": [{"points": [[x, y], ...], "class": "forest"}]} (other
       classes are holes). Trees stand at least --spacing apart (default 4 m, Poisson disk),
@@ -57,6 +58,8 @@ Many trees:
       by 1 +- S (default 0.15) and aged from A (default 0.6) to 1 times the template's
       age. Writes FOREST.glb (meshes stored once: nodes sharing meshes, or with
       --instancing gpu EXT_mesh_gpu_instancing), FOREST.placements.csv and .json.
+      --impostor and --impostor-kind/-size/-views/-quads (as `sylva export`) add each
+      variant's far levels: one bake and one set of images per variant, shared by its trees.
       --layout FILE.json plants a plan from `sylva layout generate` (same form, each
       polygon's "class"): forest as above; orchard: rows along each polygon's longest
       edge, --row-spacing M (default 6) apart, --tree-spacing M (default 4) in a row, at
@@ -155,6 +158,12 @@ struct TreeFlags {
             max_seconds = static_cast<double>(parse_number<std::uint64_t>(arg, value()));
         } else if (arg == "-o" || arg == "--output") {
             output = value();
+        } else if (arg.starts_with("--impostor")) {
+            try {
+                return parse_impostor_flag(arg, value, export_options.impostor);
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(e.what());
+            }
         } else {
             return false;
         }
@@ -257,6 +266,8 @@ int run_batch_command(int argc, char** argv) {
     };
     return with_flags(argc, argv, parse, [&] {
         if (!count) throw UsageError("batch needs --count N");
+        if (flags.export_options.impostor.kind != ImpostorKind::None)
+            throw UsageError("--impostor applies to sylva export and sylva forest, not batch");
         if (flags.output.empty()) throw UsageError("batch needs -o DIR/");
         BatchSettings settings;
         settings.tree = flags.configured(tree_name);

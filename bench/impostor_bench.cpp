@@ -7,8 +7,12 @@
 // as wall time on the TBB pool (both cores) and CPU time of all threads (the steadier
 // figure on a busy machine: wall = cpu / 2 on two idle cores). An
 // export without --impostor calls none of this (its bytes are the golden ones).
+// With --fidelity, also the worst silhouette IoU from the capture directions and from the 8
+// between them, and the worst colour difference (impostor/impostor_fidelity.h); `all` for
+// every built-in template.
 //
-// Usage: sylva-bench-impostor [--markdown] [--repeat N] [--size PX] [--views N] [TEMPLATE...]
+// Usage: sylva-bench-impostor [--markdown] [--repeat N] [--size PX] [--views N] [--fidelity]
+//                             [all | TEMPLATE...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +22,7 @@
 #include "bench/common.h"
 #include "core/color_variation.h"
 #include "export/export_tree.h"
+#include "impostor/impostor_fidelity.h"
 #include "impostor/impostor_files.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -29,6 +34,7 @@ int main(int argc, char** argv) {
     ImpostorSettings settings;
     std::vector<std::string> names;
     bool markdown = false;
+    bool fidelity = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--repeat" && i + 1 < argc)
@@ -39,6 +45,10 @@ int main(int argc, char** argv) {
             settings.views = std::atoi(argv[++i]);
         else if (arg == "--markdown")
             markdown = true;
+        else if (arg == "--fidelity")
+            fidelity = true;
+        else if (arg == "all")
+            for (const TreeTemplate* t : builtin_templates()) names.push_back(t->name);
         else
             names.push_back(arg);
     }
@@ -47,8 +57,10 @@ int main(int argc, char** argv) {
 
     std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d\n", settings.views,
                 settings.views, settings.size, settings.size / settings.views, repeat);
-    bench::Table table({"template", "triangles", "atlas ms", "atlas cpu ms", "billboard ms",
-                        "png ms", "png cpu ms", "png KiB"});
+    std::vector<std::string> header{"template",     "triangles", "atlas ms",   "atlas cpu ms",
+                                    "billboard ms", "png ms",    "png cpu ms", "png KiB"};
+    if (fidelity) header.insert(header.end(), {"IoU capture", "IoU between", "colour/255"});
+    bench::Table table(header);
     double worst = 0.0, worst_cpu = 0.0;
     for (const std::string& name : names) {
         TreeTemplate t = load_template(name);
@@ -75,10 +87,22 @@ int main(int argc, char** argv) {
         });
         worst = std::max(worst, bake.wall_ms);
         worst_cpu = std::max(worst_cpu, bake.cpu_ms);
-        table.row({name, std::to_string(triangles), bench::format("%.1f", bake.wall_ms),
-                   bench::format("%.1f", bake.cpu_ms), bench::format("%.1f", billboard.wall_ms),
-                   bench::format("%.1f", png.wall_ms), bench::format("%.1f", png.cpu_ms),
-                   bench::format("%.0f", static_cast<double>(png_bytes) / 1024.0)});
+        std::vector<std::string> cells{
+            name,
+            std::to_string(triangles),
+            bench::format("%.1f", bake.wall_ms),
+            bench::format("%.1f", bake.cpu_ms),
+            bench::format("%.1f", billboard.wall_ms),
+            bench::format("%.1f", png.wall_ms),
+            bench::format("%.1f", png.cpu_ms),
+            bench::format("%.0f", static_cast<double>(png_bytes) / 1024.0)};
+        if (fidelity) {
+            const ImpostorFidelity f = impostor_fidelity(parts, atlas);
+            cells.insert(cells.end(),
+                         {bench::format("%.3f", f.capture_iou),
+                          bench::format("%.3f", f.between_iou), bench::format("%.2f", f.color)});
+        }
+        table.row(std::move(cells));
     }
     table.print(markdown);
     // CPU time bounds the wall time of an idle machine from above (both threads' work,

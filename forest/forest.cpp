@@ -22,6 +22,7 @@
 #include "core/random.h"
 #include "core/stopwatch.h"
 #include "forest/poisson_disk.h"
+#include "forest/variant_impostor.h"
 #include "forest/variation.h"
 #include "tree/parameters.h"
 
@@ -453,6 +454,15 @@ ForestResult plant_forest(const ForestSettings& s, const std::filesystem::path& 
     result.times.variants_ms = clock.lap_ms();
 
     std::vector<SceneVariant> scene_variants;
+    // Own the far levels' quads and textures (one impostor bake per variant) until written.
+    std::vector<EngineModel> variant_models(plan.variants.size());
+    tbb::parallel_for(std::size_t{0}, plan.variants.size(), [&](std::size_t v) {
+        TreeTemplate tree = s.species[plan.variants[v].species].tree;
+        tree.params = plan.variants[v].params;
+        variant_models[v] =
+            variant_model_levels(generated[v]->tree, generated[v]->finished, tree_colors(tree),
+                                 s.export_options, plan.variants[v].name);
+    });
     for (std::size_t v = 0; v < plan.variants.size(); ++v) {
         TreeTemplate tree = s.species[plan.variants[v].species].tree;
         tree.params = plan.variants[v].params;
@@ -460,7 +470,7 @@ ForestResult plant_forest(const ForestSettings& s, const std::filesystem::path& 
         sv.name = plan.variants[v].name;
         // One material set per species, or per variant when its colours vary by seed.
         sv.material_prefix = tree.params.color_variation > 0.0 ? sv.name : tree.name;
-        sv.levels = finished_parts(generated[v]->tree, generated[v]->finished, tree_colors(tree));
+        sv.levels = variant_models[v].levels;
         std::size_t triangles = 0;
         for (const NamedMesh& part : sv.levels[0]) triangles += part.mesh->triangles.size();
         result.variant_triangles.push_back(triangles);

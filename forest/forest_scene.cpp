@@ -25,6 +25,11 @@ tinygltf::Model variant_model(const SceneVariant& variant, const ExportOptions& 
     const std::string bytes = out.str();
     tinygltf::Model model;
     tinygltf::TinyGLTF gltf;
+    // Images (the impostor levels' atlases) stay the PNG bytes in their buffer views:
+    // merged as they are, never decoded.
+    gltf.SetImageLoader([](tinygltf::Image*, int, std::string*, std::string*, int, int,
+                           const unsigned char*, int, void*) { return true; },
+                        nullptr);
     std::string error, warning;
     if (!gltf.LoadBinaryFromMemory(&model, &error, &warning,
                                    reinterpret_cast<const unsigned char*>(bytes.data()),
@@ -49,9 +54,12 @@ class SceneBuilder {
         model_.defaultScene = 0;
     }
 
-    // Merges the variant's buffer, views, accessors, materials and meshes; returns the
-    // mesh index offset and keeps its nodes for cloning.
-    void add_variant(tinygltf::Model&& v, const std::string& material_prefix) {
+    // Merges the variant's buffer, views, accessors, images, materials and meshes; returns
+    // the mesh index offset and keeps its nodes for cloning. Materials with textures (the
+    // far levels) are the variant's own, named with `variant_name`; the others are shared
+    // by name with `material_prefix`.
+    void add_variant(tinygltf::Model&& v, const std::string& material_prefix,
+                     const std::string& variant_name) {
         align(4);
         const std::size_t byte_base = bytes_.size();
         const int view_base = static_cast<int>(model_.bufferViews.size());
@@ -67,9 +75,33 @@ class SceneBuilder {
             accessor.bufferView += view_base;
             model_.accessors.push_back(accessor);
         }
+        const int image_base = static_cast<int>(model_.images.size());
+        const int sampler_base = static_cast<int>(model_.samplers.size());
+        const int texture_base = static_cast<int>(model_.textures.size());
+        for (tinygltf::Image image : v.images) {
+            if (image.bufferView >= 0) image.bufferView += view_base;
+            model_.images.push_back(std::move(image));
+        }
+        for (const tinygltf::Sampler& sampler : v.samplers) model_.samplers.push_back(sampler);
+        for (tinygltf::Texture texture : v.textures) {
+            if (texture.source >= 0) texture.source += image_base;
+            if (texture.sampler >= 0) texture.sampler += sampler_base;
+            model_.textures.push_back(texture);
+        }
         std::vector<int> material_map;
         for (tinygltf::Material material : v.materials) {
-            material.name = material_prefix + "_" + material.name;
+            int* const textures[] = {&material.pbrMetallicRoughness.baseColorTexture.index,
+                                     &material.pbrMetallicRoughness.metallicRoughnessTexture.index,
+                                     &material.normalTexture.index,
+                                     &material.occlusionTexture.index,
+                                     &material.emissiveTexture.index};
+            bool textured = false;
+            for (int* index : textures)
+                if (*index >= 0) {
+                    *index += texture_base;
+                    textured = true;
+                }
+            material.name = (textured ? variant_name : material_prefix) + "_" + material.name;
             auto [found, added] =
                 materials_.try_emplace(material.name, static_cast<int>(model_.materials.size()));
             if (added) model_.materials.push_back(material);
@@ -164,6 +196,7 @@ class SceneBuilder {
             node.rotation = source.rotation;
             node.scale = source.scale;
             node.matrix = source.matrix;
+            node.extras = source.extras;  // an impostor's layout
             if (source.mesh >= 0) {
                 node.mesh = source.mesh + proto.mesh_base;
                 extend(node);
@@ -195,7 +228,7 @@ void write_forest_glb(std::ostream& out, std::span<const SceneVariant> variants,
                       const ExportOptions& options) {
     SceneBuilder builder;
     for (const SceneVariant& v : variants)
-        builder.add_variant(variant_model(v, options), v.material_prefix);
+        builder.add_variant(variant_model(v, options), v.material_prefix, v.name);
 
     // Every reader loads the default scene: a node per tree. Nodes share the variants' meshes.
     for (std::size_t i = 0; i < instances.size(); ++i) {

@@ -103,7 +103,7 @@ ViewImage render_impostor(const ImpostorAtlas& atlas, const ViewFrame& camera, i
                 sum.normal += w * t.normal;
             }
             const std::size_t p = static_cast<std::size_t>(y * size + x);
-            image.alpha[p] = sum.alpha;
+            image.alpha[p] = std::min(sum.alpha * kImpostorCoverageGain, 1.0f);
             if (sum.alpha <= 0.0f) continue;
             image.color[p] = sum.color;
             const float length = glm::length(sum.normal);

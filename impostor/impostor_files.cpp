@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "impostor/atlas_sampler.h"
 #include "impostor/impostor_mesh.h"
 
 namespace sylva {
@@ -79,7 +80,9 @@ std::string impostor_layout_json(const ImpostorAtlas* atlas, const BillboardText
              "g = (encode(direction) * 0.5 + 0.5) * (views - 1), cell = clamp(floor(g), 0, "
              "views - 2), f = g - cell; f.x + f.y <= 1: views cell, cell + (1, 0), cell + (0, "
              "1) weighted 1 - f.x - f.y, f.x, f.y; else cell + (1, 1), cell + (1, 0), cell + "
-             "(0, 1) weighted f.x + f.y - 1, 1 - f.y, 1 - f.x"},
+             "(0, 1) weighted f.x + f.y - 1, 1 - f.y, 1 - f.x; the blended alpha times "
+             "coverage_gain (at most 1) is alpha-tested at 0.5"},
+            {"coverage_gain", kImpostorCoverageGain},
             {"front_view", {front.x, front.y}},
             {"albedo",
              {{"image", images.atlas_albedo},

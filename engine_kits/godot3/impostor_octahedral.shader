@@ -87,7 +87,7 @@ void fragment() {
 	              w.z * sylva_view(cell + vec2(0.0, 1.0), quad_point, ray, nc);
 	vec3 n = w.x * na + w.y * nb + w.z * nc;
 	ALBEDO = albedo.rgb;
-	ALPHA = albedo.a;
+	ALPHA = min(albedo.a * 1.4, 1.0);  // the layout's coverage_gain, as the reference
 	ALPHA_SCISSOR = 0.5;
 	ROUGHNESS = 0.9;
 	if (dot(n, n) > 0.0)

@@ -90,6 +90,6 @@ void SylvaImpostorFragment_float(Texture2D albedo, Texture2D normal, SamplerStat
                w.z * SylvaView(albedo, normal, s, views, center, radius, cell + float2(0, 1), p, ray, nc);
     float3 n = w.x * na + w.y * nb + w.z * nc;
     color = c.rgb;
-    alpha = c.a;
+    alpha = min(c.a * 1.4, 1.0);  // the layout's coverage_gain, as the reference
     normal_os = SylvaMirror(dot(n, n) > 0.0 ? normalize(n) : float3(0, 1, 0), mirror_x);
 }

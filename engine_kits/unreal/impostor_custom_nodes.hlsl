@@ -82,4 +82,5 @@ for (int k = 0; k < 3; ++k) {
 }
 n = dot(n, n) > 0.0 ? normalize(n) : float3(0, 1, 0);
 NormalLocal = float3(n.x, n.z, n.y);  // back to Unreal's axes (a direction: no scale)
+color.a = min(color.a * 1.4, 1.0);  // the layout's coverage_gain, as the reference
 return color;

@@ -21,6 +21,7 @@
 #include "impostor/atlas_sampler.h"
 #include "impostor/hemi_octahedral.h"
 #include "impostor/impostor_bake.h"
+#include "impostor/impostor_fidelity.h"
 #include "impostor/impostor_mesh.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -217,70 +218,21 @@ TEST(ImpostorBake, TheSameTreeBakesTheSameBytesOnAnyNumberOfThreads) {
     EXPECT_EQ(c.normal.pixels, d.normal.pixels);
 }
 
-// Silhouettes (alpha >= 0.5) and colour of the impostor against the tree, one direction.
-struct Match {
-    double iou = 0.0;
-    double color = 0.0;  // mean |difference| of sRGB bytes inside both silhouettes
-};
-
-Match compare(const ViewImage& tree, const ViewImage& impostor) {
-    std::size_t both = 0, either = 0;
-    double color = 0.0;
-    for (std::size_t p = 0; p < tree.alpha.size(); ++p) {
-        const bool a = tree.alpha[p] >= 0.5f, b = impostor.alpha[p] >= 0.5f;
-        either += a || b;
-        if (!(a && b)) continue;
-        ++both;
-        for (int c = 0; c < 3; ++c)
-            color += std::abs(static_cast<int>(srgb_byte(tree.color[p][c])) -
-                              static_cast<int>(srgb_byte(impostor.color[p][c])));
-    }
-    return {either ? static_cast<double>(both) / static_cast<double>(either) : 1.0,
-            both ? color / (3.0 * static_cast<double>(both)) : 0.0};
-}
-
-// The 8 directions between the views of an 8 x 8 atlas: centroids of grid half-cells (where three
-// views weigh alike) spread from the horizon to near the top, all around.
-std::vector<glm::vec3> between_directions() {
-    const glm::vec2 cells[8] = {{0.33f, 0.33f}, {6.67f, 0.33f}, {0.67f, 6.67f}, {6.33f, 6.33f},
-                                {2.33f, 4.33f}, {3.67f, 3.67f}, {4.33f, 1.33f}, {1.67f, 2.67f}};
-    std::vector<glm::vec3> out;
-    for (glm::vec2 c : cells) out.push_back(hemi_octahedral_decode(c / 7.0f * 2.0f - 1.0f));
-    return out;
-}
-
 void check_fidelity(const std::string& name) {
     const GameTree& tree = game_tree(name);
     const ImpostorSettings settings;  // 8 x 8 views, 1024 px: tiles of 128
-    const ImpostorAtlas atlas = bake_impostor(tree.parts, settings);
-    const int size = atlas.tile;
-    // The 64 capture directions, then the 8 between them; compared on every core.
-    std::vector<glm::vec3> directions;
-    for (int j = 0; j < atlas.views; ++j)
-        for (int i = 0; i < atlas.views; ++i)
-            directions.push_back(view_direction(i, j, atlas.views));
-    const std::size_t captures = directions.size();
-    for (const glm::vec3& d : between_directions()) directions.push_back(d);
-    std::vector<Match> matches(directions.size());
-    tbb::parallel_for(std::size_t{0}, directions.size(), [&](std::size_t k) {
-        const ViewFrame frame = view_frame(directions[k]);
-        matches[k] = compare(render_view(tree.parts, frame, atlas.bounds, size, 2),
-                             render_impostor(atlas, frame, size));
-    });
-    double worst_capture = 1.0, worst_between = 1.0, worst_color = 0.0;
-    for (std::size_t k = 0; k < matches.size(); ++k) {
-        (k < captures ? worst_capture : worst_between) =
-            std::min(k < captures ? worst_capture : worst_between, matches[k].iou);
-        worst_color = std::max(worst_color, matches[k].color);
-        if (k >= captures && std::getenv("SYLVA_IMPOSTOR_VERBOSE"))
-            std::printf("  between (%.2f %.2f %.2f): IoU %.3f colour %.2f\n", directions[k].x,
-                        directions[k].y, directions[k].z, matches[k].iou, matches[k].color);
+    const ImpostorFidelity f = impostor_fidelity(tree.parts, bake_impostor(tree.parts, settings));
+    if (std::getenv("SYLVA_IMPOSTOR_VERBOSE")) {
+        const std::vector<glm::vec3> directions = between_directions();
+        for (std::size_t k = 0; k < directions.size(); ++k)
+            std::printf("  between (%.2f %.2f %.2f): IoU %.3f\n", directions[k].x, directions[k].y,
+                        directions[k].z, f.between[k]);
     }
     std::printf("%s: silhouette IoU at captures >= %.3f, between >= %.3f; colour <= %.2f/255\n",
-                name.c_str(), worst_capture, worst_between, worst_color);
-    EXPECT_GE(worst_capture, 0.90) << name;
-    EXPECT_GE(worst_between, 0.85) << name;
-    EXPECT_LE(worst_color, 10.0) << name;
+                name.c_str(), f.capture_iou, f.between_iou, f.color);
+    EXPECT_GE(f.capture_iou, 0.90) << name;
+    EXPECT_GE(f.between_iou, 0.85) << name;
+    EXPECT_LE(f.color, 10.0) << name;
 }
 
 TEST(ImpostorFidelity, Oak) {
@@ -292,9 +244,20 @@ TEST(ImpostorFidelity, Spruce) {
 TEST(ImpostorFidelity, Willow) {
     check_fidelity("willow");
 }
+// Palm's fronds are a texel thin in a 128-pixel tile: the three views, lined up with one
+// depth per texel, disagree by about a texel there, and without the coverage gain
+// (kImpostorCoverageGain) the blend drops them (0.76 between views). It does not reach 0.85.
+TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
+    const GameTree& tree = game_tree("palm");
+    const ImpostorFidelity f =
+        impostor_fidelity(tree.parts, bake_impostor(tree.parts, ImpostorSettings{}));
+    EXPECT_GE(f.capture_iou, 0.90);
+    EXPECT_GE(f.between_iou, 0.80);
+    EXPECT_LE(f.color, 10.0);
+}
 // Every template, with the figures printed (--gtest_also_run_disabled_tests): feathery
-// crowns (palm, seed_spruce) have parts a pixel thin in a 128-pixel tile, whose silhouette
-// moved by half a pixel already scores below 0.85.
+// crowns (bush, honda, palm, seed_spruce, flowering_shrub) have parts a pixel thin in a
+// 128-pixel tile, whose silhouette moved by half a pixel already scores below 0.85.
 TEST(ImpostorFidelity, DISABLED_EveryTemplate) {
     for (const TreeTemplate* t : builtin_templates()) check_fidelity(t->name);
 }
