@@ -30,7 +30,9 @@
 #include "ui/state/scale_figure.h"
 #include "ui/state/studio_options.h"
 #include "ui/state/studio_state.h"
+#include "ui/state/typing_bench.h"
 #include "ui/state/wind_view.h"
+#include "ui/template_picker.h"
 #include "ui/variants_strip.h"
 
 #define GLFW_INCLUDE_NONE
@@ -78,8 +80,12 @@ void remember_glfw_error(int /*code*/, const char* description) {
 // (ImGui's backend chains it); ui/shortcuts.h acts on them.
 std::vector<KeyPress> g_key_presses;
 
+// When each key was read (GLFW_PRESS only), for the typing bench.
+std::vector<std::chrono::steady_clock::time_point> g_key_times;
+
 void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
     if (action != GLFW_RELEASE) g_key_presses.push_back({key, mods});
+    if (action == GLFW_PRESS) g_key_times.push_back(std::chrono::steady_clock::now());
 }
 
 // Files dropped on the window since the last frame (GLFW's drop callback).
@@ -413,10 +419,27 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     state.view.wind = options.wind_seconds.has_value();
     state.view.forest = options.forest_preview;
     state.wake = [] { glfwPostEmptyEvent(); };
+    TemplatePicker& picker = template_picker();  // ui/template_picker.h
+    picker.wake = state.wake;
+    // A scripted screenshot leaves the user's cache folder alone.
+    if (!options.screenshot_path) picker.folder = thumbnail_cache_folder();
+    picker.open_requested = options.template_picker;
     std::optional<ReleaseBench> bench;
     if (options.bench_release) {
         bench = parse_release_bench(*options.bench_release);
         bench->hold_ms = options.bench_hold_ms;
+    }
+    TypingBench typing;  // ui/state/typing_bench.h
+    if (options.bench_typing > 0) {
+        // A comment line to type into: every prefix parses, and nothing is applied while the
+        // keys come faster than the typing pause.
+        typing.keys = options.bench_typing;
+        state.tree_template.grammar += "\n# typed: ";
+        state.committed = state.tree_template;
+        const auto lines = std::count(state.tree_template.grammar.begin(),
+                                      state.tree_template.grammar.end(), '\n');
+        reveal(editor, {static_cast<int>(lines) + 1, 1 << 20});
+        ImGui::GetIO().ConfigInputTextCursorBlink = false;  // only the keys change the line
     }
     start_generation(state);
     ForestPreview forest;  // ui/forest_preview.h
@@ -450,7 +473,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // spends both cores on every frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
                              state.export_job.valid() || forest_preview_running(forest) ||
-                             infer_running(infer);
+                             infer_running(infer) || template_picker_busy(picker);
         const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
                                state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
                                (bench && bench->phase == ReleaseBench::Drag);
@@ -460,9 +483,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                 std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
                     .count(),
                 0.0, timeout);
-        if (state.rules.pending)  // apply typed rules when the pause ends
-            timeout = std::clamp(seconds_until_apply(state, std::chrono::steady_clock::now()), 0.01,
-                                 timeout);
+        if (state.rules.pending) {  // lint, then apply typed rules when the pauses end
+            const auto now = std::chrono::steady_clock::now();
+            const double lint = seconds_until_lint(state, now);
+            timeout =
+                std::clamp(lint > 0.0 ? lint : seconds_until_apply(state, now), 0.01, timeout);
+        }
         if (animating || input_events_waiting())
             glfwPollEvents();
         else
@@ -482,7 +508,16 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const ViewRect rect = view_rect(layout);
         const float aspect = rect.aspect();
 
+        if (typing.keys > 0) {
+            for (const auto& at : g_key_times)
+                typing_key_pressed(typing, at, generation_running(state));
+        }
+        g_key_times.clear();
         poll_jobs(state);
+        if (typing.keys > 0 && typing.ready) {
+            if (state.tree_changed) typing.job_ms.push_back(state.last_wall_ms);
+            if (!generation_running(state)) start_generation(state);  // a job always runs
+        }
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
 #ifdef SYLVA_HAS_LAYOUT
@@ -527,6 +562,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         update_colonization(viewport, state, false);
         update_variants_strip(strip);
+        update_template_picker(picker, state);
         update_infer_panel(infer, state);
         if (update_forest_preview(forest, state) ||
             (state.frame_requested && forest_preview_shown(forest, state))) {
@@ -549,9 +585,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 
         const bool variants_were_open = strip.open;
 #ifdef SYLVA_HAS_LAYOUT
-        draw_menu_bar(state, strip.open, &layout_panel.open);
+        draw_menu_bar(state, strip.open, infer.open, &layout_panel.open);
 #else
-        draw_menu_bar(state, strip.open, nullptr);
+        draw_menu_bar(state, strip.open, infer.open, nullptr);
 #endif
         if (strip.open && !variants_were_open && strip.thumbnails.empty() && !strip.job.valid())
             start_variants(strip, state.tree_template);
@@ -622,6 +658,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
             !variants_running(strip) && !infer_running(infer) &&
+            (!options.template_picker || (picker.open && !template_picker_busy(picker))) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&
             !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
@@ -629,6 +666,28 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         glfwSwapBuffers(window);
         frame_seconds = glfwGetTime() - frame_start;
+        if (typing.keys > 0) {
+            glFinish();  // on screen before the clock is read
+            typing_frame_shown(typing, state.rules.text.size(), std::chrono::steady_clock::now(),
+                               1000.0 * (glfwGetTime() - frame_start));
+            if (!typing.ready && state.tree && editor.active && editor.line_height > 0.0f) {
+                int x = 0, y = 0;
+                glfwGetWindowPos(window, &x, &y);
+                std::printf(
+                    "typing bench: ready %d %d %d %d\n", x + static_cast<int>(editor.line_x),
+                    y + static_cast<int>(editor.line_y), static_cast<int>(editor.line_width),
+                    static_cast<int>(editor.line_height));
+                std::fflush(stdout);
+                typing.ready = true;
+                typing.waiting.clear();
+                start_generation(state);
+            }
+            if (typing_bench_done(typing)) {
+                std::printf("%s\n", typing_bench_report(typing).c_str());
+                std::fflush(stdout);
+                break;
+            }
+        }
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
@@ -702,6 +761,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "sylva-studio: %s\n", e.what());
         exit_code = 1;
     }
+
+    release_template_picker(template_picker());  // while its GL context is current
 
     // Shutdown, in reverse order of init.
     ImGui_ImplOpenGL3_Shutdown();
