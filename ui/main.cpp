@@ -423,7 +423,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     picker.wake = state.wake;
     // A scripted screenshot leaves the user's cache folder alone.
     if (!options.screenshot_path) picker.folder = thumbnail_cache_folder();
-    picker.open_requested = options.template_picker;
+    bool picker_opened = false;  // --template-picker: opened once the first tree is shown
     std::optional<ReleaseBench> bench;
     if (options.bench_release) {
         bench = parse_release_bench(*options.bench_release);
@@ -563,6 +563,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         update_colonization(viewport, state, false);
         update_variants_strip(strip);
         update_template_picker(picker, state);
+        // Later than the first frames: a window appearing takes the focus, closing popups.
+        if (options.template_picker && !picker_opened && state.tree && !generation_running(state))
+            picker.open_requested = picker_opened = true;
         update_infer_panel(infer, state);
         if (update_forest_preview(forest, state) ||
             (state.frame_requested && forest_preview_shown(forest, state))) {

@@ -58,9 +58,15 @@ bool cell(TemplatePicker& picker, const ThumbnailSource& source, bool current, f
         ImGui::GetWindowDrawList()->AddRect(
             top_left, ImVec2(top_left.x + side + 4.0f, top_left.y + side + 4.0f),
             ImGui::GetColorU32(ImGuiCol_CheckMark), 0.0f, 0, 2.0f);
+    // The name under it, centred and clipped to the cell, so every cell is as wide.
+    const float width = side + 4.0f;
+    const ImVec2 name_at = ImGui::GetCursorScreenPos();
     const ImVec2 name = ImGui::CalcTextSize(source.name.c_str());
-    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.5f * (side + 4.0f - name.x), 0.0f));
-    ImGui::TextUnformatted(source.name.c_str());
+    const ImVec4 clip(name_at.x, name_at.y, name_at.x + width, name_at.y + name.y);
+    ImGui::GetWindowDrawList()->AddText(
+        nullptr, 0.0f, ImVec2(name_at.x + std::max(0.5f * (width - name.x), 0.0f), name_at.y),
+        ImGui::GetColorU32(ImGuiCol_Text), source.name.c_str(), nullptr, 0.0f, &clip);
+    ImGui::Dummy(ImVec2(width, name.y));
     ImGui::EndGroup();
     if (ImGui::IsItemHovered()) {
         const std::string& why = entry ? entry->error : std::string();
