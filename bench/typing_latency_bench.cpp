@@ -4,8 +4,14 @@
 // for each reads the editor's line back from the X server until its pixels change. Prints
 // the figures, then the studio's own (key read to frame on screen, the jobs' times).
 //
-//   xvfb-run -a -s "-screen 0 1280x800x24" build/bench/sylva-bench-typing \
-//       [--studio build/ui/sylva-studio] [--keys 40] [--template NAME] [-- STUDIO ARGS]
+//   xvfb-run -a -s "-screen 0 1280x800x24" build/bench/sylva-bench-typing
+//       [--studio build/ui/sylva-studio] [--keys 40] [--template templates/spruce.toml]
+//       [--set KEY=VALUE]... [-- STUDIO ARGS]
+//
+// The default tree is the spruce at crown_resolution 320 with no triangle budget (meshed at
+// that resolution): a growth job of about a second on two cores. `-- --bench-no-job` gives
+// the same figures with nothing growing. --set rewrites a [params] line of the template file (a
+// copy in /tmp).
 //
 // Needs an X display. libXtst is loaded at run time (its headers are not needed to build).
 #include <X11/Xlib.h>
@@ -21,7 +27,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -77,12 +85,38 @@ std::vector<char> grab(Display* display, Window root, int x, int y, int w, int h
     return pixels;
 }
 
+// A copy of the template file at `path` with each "KEY=VALUE" as its [params] line.
+std::string template_with(const std::string& path, const std::vector<std::string>& sets) {
+    std::ifstream in(path);
+    if (!in) {
+        std::fprintf(stderr, "sylva-bench-typing: cannot read %s\n", path.c_str());
+        std::exit(2);
+    }
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    for (const std::string& set : sets) {
+        const std::size_t eq = set.find('=');
+        const std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+        std::erase_if(lines, [&key](const std::string& line) {
+            return line.rfind(key + " ", 0) == 0 || line.rfind(key + "=", 0) == 0;
+        });
+        auto params = std::find(lines.begin(), lines.end(), "[params]");
+        if (params == lines.end()) params = lines.insert(lines.end(), "[params]");
+        lines.insert(params + 1, key + " = " + value);
+    }
+    const std::string out = "/tmp/sylva-bench-typing-" + std::to_string(getpid()) + ".toml";
+    std::ofstream file(out);
+    for (const std::string& line : lines) file << line << "\n";
+    return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string studio_path = "build/ui/sylva-studio", tree = "default";
+    std::string studio_path = "build/ui/sylva-studio", tree = "templates/spruce.toml";
     int keys = 40;
-    std::vector<std::string> extra;
+    std::vector<std::string> extra, sets;
+    bool sets_given = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--studio" && i + 1 < argc)
@@ -91,12 +125,14 @@ int main(int argc, char** argv) {
             keys = std::max(std::atoi(argv[++i]), 1);
         else if (arg == "--template" && i + 1 < argc)
             tree = argv[++i];
+        else if (arg == "--set" && i + 1 < argc && std::strchr(argv[i + 1], '='))
+            sets.push_back(argv[++i]), sets_given = true;
         else if (arg == "--")
             extra.assign(argv + i + 1, argv + argc), i = argc;
         else {
             std::fprintf(stderr,
-                         "usage: sylva-bench-typing [--studio PATH] [--keys N] [--template NAME] "
-                         "[-- STUDIO ARGS]\n");
+                         "usage: sylva-bench-typing [--studio PATH] [--keys N] [--template FILE] "
+                         "[--set KEY=VALUE]... [-- STUDIO ARGS]\n");
             return 2;
         }
     }
@@ -113,7 +149,12 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    std::vector<std::string> args = {studio_path, "--template", tree, "--bench-typing",
+    if (!sets_given && tree == "templates/spruce.toml")
+        sets = {"crown_resolution=320", "triangle_budget=0"};
+    const std::string file = template_with(tree, sets);
+    std::printf("growing %s with %zu change(s) in a loop, typing %d keys\n", tree.c_str(),
+                sets.size(), keys);
+    std::vector<std::string> args = {studio_path, "--template", file, "--bench-typing",
                                      std::to_string(keys)};
     args.insert(args.end(), extra.begin(), extra.end());
     Studio studio = start_studio(args);
@@ -124,6 +165,7 @@ int main(int argc, char** argv) {
         kill(studio.pid, SIGTERM);
         return 1;
     }
+    std::printf("%s", ready.c_str());
     const Window root = DefaultRootWindow(display);
     // The keys go where the pointer is (no window manager: focus follows the pointer).
     XWarpPointer(display, None, root, 0, 0, 0, 0, x + w / 2, y + h / 2);
@@ -173,6 +215,7 @@ int main(int argc, char** argv) {
     int status = 0;
     if (report.empty()) kill(studio.pid, SIGTERM);
     waitpid(studio.pid, &status, 0);
+    std::remove(file.c_str());
     XCloseDisplay(display);
     return missed == 0 && !report.empty() ? 0 : 1;
 }

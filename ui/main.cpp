@@ -34,6 +34,7 @@
 #include "ui/state/wind_view.h"
 #include "ui/template_picker.h"
 #include "ui/variants_strip.h"
+#include "ui/view_cache.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -130,8 +131,23 @@ GLFWwindow* create_window() {
     glfwWindowHint(GLFW_SAMPLES, 4);
     GLFWwindow* window =
         glfwCreateWindow(kWindowWidth, kWindowHeight, "Sylva Studio", nullptr, nullptr);
+    if (window) {
+        // A software rasteriser (Mesa's llvmpipe under Xvfb or a remote desktop) pays every
+        // sample of every pixel on the CPU: four per pixel make each frame, and the wait from
+        // a key to its character, several times longer. It gets a window without.
+        glfwMakeContextCurrent(window);
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        const std::string name = renderer ? renderer : "";
+        glfwMakeContextCurrent(nullptr);
+        if (name.find("llvmpipe") != std::string::npos ||
+            name.find("softpipe") != std::string::npos ||
+            name.find("swrast") != std::string::npos) {
+            glfwDestroyWindow(window);
+            window = nullptr;
+        }
+    }
     if (!window) {
-        // Some X servers (Xvfb among them) offer no multisampled visual.
+        // Some X servers offer no multisampled visual.
         glfwWindowHint(GLFW_SAMPLES, 0);
         window = glfwCreateWindow(kWindowWidth, kWindowHeight, "Sylva Studio", nullptr, nullptr);
     }
@@ -326,11 +342,9 @@ ViewRect view_rect(const PanelLayout& layout) {
     return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom - top, 1)};
 }
 
-void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
-                     const ViewRect& rect, const ForestPreview& forest, const InferPanel& infer) {
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+// Draws the 3D view into the bound framebuffer at `rect`.
+void draw_view(const Viewport& viewport, const StudioState& state, const ViewRect& rect,
+               const ForestPreview& forest, const InferPanel& infer) {
     glViewport(rect.x, rect.y, rect.width, rect.height);
     viewport.backdrop.draw();
     float aspect = rect.aspect();
@@ -369,6 +383,45 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         if (show.points) viewport.points.draw_points(view, projection, kPointColor, kPointSize);
     }
     if (!planted) draw_infer_overlay(infer, view, projection);
+}
+
+// The window cleared and the 3D view drawn into it. While a text field has the keyboard
+// and nothing moves in the view (ui/view_cache.h), the view is drawn once into the cache and
+// copied on the frames after, so typing costs the panels' drawing, not the tree's.
+void render_or_copy_view(const Viewport& viewport, const StudioState& state, int width, int height,
+                         const ViewRect& rect, const ForestPreview& forest, const InferPanel& infer,
+                         ViewCache& cache, long scene) {
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const ViewToggles& v = state.view;
+    // What the key does not follow is never cached: animation, the forest, the overlays of
+    // space colonization and of rules from a tree, the impostor.
+    const bool still = !v.wind && !v.turntable && !forest_preview_shown(forest, state) &&
+                       !infer.open && !grows_by_colonization(state.shown_template) &&
+                       !impostor_slot_shown(v);
+    cache.copied_last = false;
+    if (!cache.available() || !still || !ImGui::GetIO().WantTextInput) {
+        cache.invalidate();
+        draw_view(viewport, state, rect, forest, infer);
+        return;
+    }
+    ViewCacheKey key;
+    key.camera = state.camera;
+    key.x = rect.x, key.y = rect.y, key.width = rect.width, key.height = rect.height;
+    key.scene = scene;
+    key.toggles = (v.skeleton ? 1u : 0u) | (v.trunk ? 2u : 0u) | (v.crown ? 4u : 0u) |
+                  (v.leaves ? 8u : 0u) | (v.wireframe ? 16u : 0u) | (v.low_poly ? 32u : 0u) |
+                  (v.scale_figure ? 64u : 0u) | static_cast<unsigned>(v.lod_level) << 8;
+    const sylva::PartColors colors = sylva::tree_colors(state.shown_template);
+    key.trunk = colors.trunk, key.crown = colors.crown, key.leaves = colors.leaves;
+    cache.copied_last = cache.holds(key);
+    if (!cache.copied_last) {
+        cache.begin(key);
+        draw_view(viewport, state, {0, 0, rect.width, rect.height}, forest, infer);
+    }
+    cache.copy();
+    glViewport(0, 0, width, height);
 }
 
 // The window's loop; returns main's exit code. In screenshot mode it stops after the
@@ -429,7 +482,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         bench = parse_release_bench(*options.bench_release);
         bench->hold_ms = options.bench_hold_ms;
     }
-    TypingBench typing;  // ui/state/typing_bench.h
+    TypingBench typing;                          // ui/state/typing_bench.h
+    const GeneratedTree* typing_tree = nullptr;  // the last tree it counted
     if (options.bench_typing > 0) {
         // A comment line to type into: every prefix parses, and nothing is applied while the
         // keys come faster than the typing pause.
@@ -458,6 +512,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         start_variants(strip, state.tree_template);
     }
 
+    ViewCache view_cache;   // ui/view_cache.h
+    long scene_serial = 0;  // raised with every upload to the 3D view's renderers
     int frames_with_tree = 0;
     int frames_asking = 0;
     bool swaying = false;  // the viewport holds swayed parts
@@ -515,8 +571,13 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         g_key_times.clear();
         poll_jobs(state);
         if (typing.keys > 0 && typing.ready) {
-            if (state.tree_changed) typing.job_ms.push_back(state.last_wall_ms);
-            if (!generation_running(state)) start_generation(state);  // a job always runs
+            if (state.tree.get() != typing_tree) typing.job_ms.push_back(state.last_wall_ms);
+            typing_tree = state.tree.get();
+            if (!generation_running(state) && !options.bench_no_job) {
+                // A job always runs, growing and meshing anew.
+                state.tree_template.params.crown_resolution ^= 1;
+                start_generation(state);
+            }
         }
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
@@ -538,9 +599,16 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         g_dropped_files.clear();
         if (state.view.turntable) state.camera.yaw_deg += 0.5f;
-        if (state.tree_changed) {
+        // A tree that arrives while keys come into the rules editor is shown at the typing's
+        // next pause (kLintPauseSeconds): uploading and drawing a full-detail tree takes
+        // hundreds of milliseconds under a software rasteriser, and a key must not wait for it.
+        const bool typing_now = state.rules.pending &&
+                                seconds_until_lint(state, std::chrono::steady_clock::now()) > 0.0;
+        if (typing_now) {
+        } else if (state.tree_changed) {
             place_scale_figure(viewport, *state.tree);
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
             update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
@@ -548,6 +616,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         } else if (state.tree &&
                    shown_parts(*state.tree, mesh_level(state.view)).level != uploaded_level) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
         }
         if (state.tree && impostor_slot_shown(state.view) && state.tree->reduced())
             viewport.impostor.update(state.tree, tree_colors(state.shown_template));
@@ -558,6 +627,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             swaying = true;
         } else if (state.tree && swaying) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
             swaying = false;
         }
         update_colonization(viewport, state, false);
@@ -620,7 +690,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
-        render_viewport(viewport, state, width, height, rect, forest, infer);
+        render_or_copy_view(viewport, state, width, height, rect, forest, infer, view_cache,
+                            scene_serial);
         if (state.screenshot_requested) {
             // The 3D view alone, before the panels are drawn over the frame.
             state.screenshot_requested = false;
@@ -672,18 +743,20 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (typing.keys > 0) {
             glFinish();  // on screen before the clock is read
             typing_frame_shown(typing, state.rules.text.size(), std::chrono::steady_clock::now(),
-                               1000.0 * (glfwGetTime() - frame_start));
+                               1000.0 * (glfwGetTime() - frame_start), view_cache.copied_last);
             if (!typing.ready && state.tree && editor.active && editor.line_height > 0.0f) {
                 int x = 0, y = 0;
                 glfwGetWindowPos(window, &x, &y);
+                GLint samples = 0;
+                glGetIntegerv(GL_SAMPLES, &samples);
                 std::printf(
-                    "typing bench: ready %d %d %d %d\n", x + static_cast<int>(editor.line_x),
-                    y + static_cast<int>(editor.line_y), static_cast<int>(editor.line_width),
-                    static_cast<int>(editor.line_height));
+                    "typing bench: ready %d %d %d %d (%s, %d samples per pixel)\n",
+                    x + static_cast<int>(editor.line_x), y + static_cast<int>(editor.line_y),
+                    static_cast<int>(editor.line_width), static_cast<int>(editor.line_height),
+                    reinterpret_cast<const char*>(glGetString(GL_RENDERER)), samples);
                 std::fflush(stdout);
                 typing.ready = true;
                 typing.waiting.clear();
-                start_generation(state);
             }
             if (typing_bench_done(typing)) {
                 std::printf("%s\n", typing_bench_report(typing).c_str());

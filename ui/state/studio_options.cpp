@@ -93,6 +93,8 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--bench-hold takes milliseconds of at least 0, got '" +
                                  std::string(text) + "'");
             options.bench_hold_ms = ms;
+        } else if (arg == "--bench-no-job") {
+            options.bench_no_job = true;
         } else if (arg == "--template-picker") {
             options.template_picker = true;
         } else if (arg == "--bench-typing") {
@@ -131,7 +133,7 @@ std::string studio_usage() {
            "                    [--forest-preview] [--infer tree|SKELETON]\n"
            "                    [--screenshot PATH [--frames N]]\n"
            "                    [--bench-release KEY=VALUE [--bench-hold MS]]\n"
-           "                    [--template-picker] [--bench-typing KEYS]\n"
+           "                    [--template-picker] [--bench-typing KEYS [--bench-no-job]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -171,6 +173,7 @@ std::string studio_usage() {
            "                     KEYS typed characters are on screen print the time from each\n"
            "                     key to its frame and exit (bench/typing_latency_bench.cpp\n"
            "                     types them)\n"
+           "  --bench-no-job     the typing bench without the growth job, to compare\n"
            "  -h, --help         show this help\n"
            "\n"
            "Without a display, use the command-line tool instead: sylva export -o tree.obj\n";

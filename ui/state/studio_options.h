@@ -37,6 +37,8 @@ struct StudioOptions {
     // rules editor focused; prints the editor's place, then the figures once this many
     // typed characters are on screen, and exits. 0: off.
     int bench_typing = 0;
+    // ... without the growth job (the same figures with nothing growing, to compare).
+    bool bench_no_job = false;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

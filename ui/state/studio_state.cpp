@@ -23,6 +23,7 @@
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 #include "ui/state/leaves_only.h"
+#include "ui/state/thread_priority.h"
 
 namespace sylva::studio {
 namespace {
@@ -150,6 +151,7 @@ GenerationJob launch(GenerationJob job) {
     job.worker = std::jthread([promise = std::move(promise), tree_template = job.tree_template,
                                budget = job.budget, progress = job.progress, base = job.base,
                                leaves_base = job.leaves_base, previous = job.previous]() mutable {
+        lower_thread_priority();  // the UI's frames first (ui/state/thread_priority.h)
         try {
             promise.set_value(
                 generate(tree_template, budget, progress, base, leaves_base, previous));

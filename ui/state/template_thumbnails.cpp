@@ -12,6 +12,7 @@
 #include "core/color_variation.h"
 #include "export/export_tree.h"
 #include "tree/pipeline.h"
+#include "ui/state/thread_priority.h"
 
 namespace sylva::studio {
 namespace {
@@ -127,6 +128,7 @@ void TemplateThumbnails::request(const std::vector<ThumbnailSource>& templates) 
 }
 
 void TemplateThumbnails::work(std::stop_token stop) {
+    lower_thread_priority();
     while (true) {
         Queued next;
         {

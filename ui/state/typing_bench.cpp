@@ -11,12 +11,13 @@ void typing_key_pressed(TypingBench& bench, TypingBench::Clock::time_point at, b
 }
 
 void typing_frame_shown(TypingBench& bench, std::size_t length, TypingBench::Clock::time_point now,
-                        double frame_ms) {
+                        double frame_ms, bool copied_view) {
     if (!bench.ready) {
         bench.shown_length = length;
         return;
     }
     bench.frame_ms.push_back(frame_ms);
+    bench.copied_frames += copied_view ? 1 : 0;
     for (std::size_t n = bench.shown_length; n < length && !bench.waiting.empty(); ++n) {
         const TypingBench::Press press = bench.waiting.front();
         bench.waiting.pop_front();
@@ -49,10 +50,11 @@ std::string typing_bench_report(const TypingBench& bench) {
     std::snprintf(text, sizeof text,
                   "typing bench: %zu keys, %d while a growth job ran (%zu jobs finished meanwhile, "
                   "median %.0f ms); key read to its frame on screen: median %.1f ms, 90%% %.1f ms, "
-                  "max %.1f ms; frames: median %.1f ms, max %.1f ms",
+                  "max %.1f ms; frames: median %.1f ms, max %.1f ms, %d of %zu copied the 3D view",
                   bench.samples.size(), during, bench.job_ms.size(), percentile(bench.job_ms, 0.5),
                   percentile(ms, 0.5), percentile(ms, 0.9), percentile(ms, 1.0),
-                  percentile(bench.frame_ms, 0.5), percentile(bench.frame_ms, 1.0));
+                  percentile(bench.frame_ms, 0.5), percentile(bench.frame_ms, 1.0),
+                  bench.copied_frames, bench.frame_ms.size());
     return text;
 }
 
