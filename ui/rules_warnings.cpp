@@ -24,14 +24,26 @@ void rules_warnings(const RulesDraft& draft, RulesEditorState& editor) {
     ImGui::TextColored(kWarning, "%zu warning%s (click one to go there)", warnings.size(),
                        warnings.size() == 1 ? "" : "s");
     ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
-    ImGui::PushTextWrapPos(0.0f);
     for (std::size_t i = 0; i < warnings.size(); ++i) {
         const LintWarning& w = warnings[i];
-        const std::string text = std::to_string(w.line) + ":" + std::to_string(w.column) + "  " +
-                                 w.message + "##warning" + std::to_string(i);
-        if (ImGui::Selectable(text.c_str(), false)) reveal(editor, {w.line, w.column});
+        const std::string text =
+            std::to_string(w.line) + ":" + std::to_string(w.column) + "  " + w.message;
+        // A selectable as tall as the message wrapped at the panel's edge, the message over
+        // it: the whole of it shows, and a click anywhere on it goes there.
+        const float width = ImGui::GetContentRegionAvail().x;
+        const float height = ImGui::CalcTextSize(text.c_str(), nullptr, false, width).y;
+        const ImVec2 at = ImGui::GetCursorPos();
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::Selectable("##warning", false, 0, ImVec2(width, height)))
+            reveal(editor, {w.line, w.column});
+        ImGui::PopID();
+        const ImVec2 after = ImGui::GetCursorPos();
+        ImGui::SetCursorPos(at);
+        ImGui::PushTextWrapPos(at.x + width);
+        ImGui::TextUnformatted(text.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::SetCursorPos(after);
     }
-    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
 }
 
