@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -176,6 +177,7 @@ int main(int argc, char** argv) {
     std::uniform_int_distribution<int> gap_ms(120, 260);  // below the editor's pauses
     std::vector<double> ms;
     int missed = 0;
+    std::string slow;  // "key:ms" of the keys over 50 ms
     for (int i = 0; i < keys; ++i) {
         std::this_thread::sleep_for(std::chrono::milliseconds(gap_ms(random)));
         const char letter[2] = {static_cast<char>('a' + i % 26), 0};
@@ -198,6 +200,8 @@ int main(int argc, char** argv) {
             continue;
         }
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - pressed).count());
+        if (ms.back() > 50.0)
+            slow += " " + std::to_string(i + 1) + ":" + std::to_string(std::lround(ms.back()));
     }
     int over = 0;
     for (double v : ms) over += v > 50.0 ? 1 : 0;
@@ -210,6 +214,7 @@ int main(int argc, char** argv) {
         "key to glyph on screen (X key event to the editor's pixels changing): %zu keys, "
         "median %.1f ms, 90%% %.1f ms, max %.1f ms, %d over 50 ms, %d never shown\n",
         ms.size(), at(0.5), at(0.9), ms.empty() ? 0.0 : ms.back(), over, missed);
+    if (!slow.empty()) std::printf("over 50 ms (key:ms):%s\n", slow.c_str());
     const std::string report = bench_line(studio);
     std::printf("%s", report.empty() ? "the studio printed no report\n" : report.c_str());
     int status = 0;

@@ -599,11 +599,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         g_dropped_files.clear();
         if (state.view.turntable) state.camera.yaw_deg += 0.5f;
-        // A tree that arrives while keys come into the rules editor is shown at the typing's
-        // next pause (kLintPauseSeconds): uploading and drawing a full-detail tree takes
-        // hundreds of milliseconds under a software rasteriser, and a key must not wait for it.
+        // A tree that arrives while keys come into the rules editor is shown when the typing
+        // pauses (kRulesPauseSeconds, as the rules are applied): uploading and drawing a
+        // full-detail tree takes hundreds of milliseconds under a software rasteriser, and a
+        // key must not wait for it.
         const bool typing_now = state.rules.pending &&
-                                seconds_until_lint(state, std::chrono::steady_clock::now()) > 0.0;
+                                seconds_until_apply(state, std::chrono::steady_clock::now()) > 0.0;
         if (typing_now) {
         } else if (state.tree_changed) {
             place_scale_figure(viewport, *state.tree);
