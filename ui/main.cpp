@@ -635,7 +635,10 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         update_variants_strip(strip);
         update_template_picker(picker, state);
         // Later than the first frames: a window appearing takes the focus, closing popups.
-        if (options.template_picker && !picker_opened && state.tree && !generation_running(state))
+        // A screenshot opens it again until it is drawn (whatever closed it).
+        if (options.template_picker &&
+            (!picker_opened || (options.screenshot_path && !picker.open)) && state.tree &&
+            !generation_running(state))
             picker.open_requested = picker_opened = true;
         update_infer_panel(infer, state);
         if (update_forest_preview(forest, state) ||
