@@ -283,18 +283,22 @@ void update_infer_panel(InferPanel& panel, StudioState& state) {
 
 void draw_infer_panel(InferPanel& panel, StudioState& state, const PanelLayout& layout) {
     labels(panel, state, layout);
-    ImGui::SetNextWindowPos(ImVec2(layout.left + 6.0f, 6.0f), ImGuiCond_Always);
+    // Closed, nothing of it shows over the 3D view: the View menu opens it. Open, it sits at
+    // the view's top left corner, under the menu bar.
+    panel.covered = 0.0f;
+    if (!panel.open) return;
+    ImGui::SetNextWindowPos(ImVec2(layout.left + 6.0f, layout.top + 6.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f),
                                         ImVec2(kPanelWidth, layout.height * 0.8f));
-    ImGui::SetNextWindowCollapsed(!panel.open, ImGuiCond_Once);
-    panel.open = ImGui::Begin("Rules from a tree", nullptr,
-                              ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
-                                  ImGuiWindowFlags_NoSavedSettings);
+    const bool shown =
+        ImGui::Begin("Rules from a tree", &panel.open,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
+                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     const float view_height = layout.height - layout.bottom;
     panel.covered = std::clamp(
         (ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) / std::max(view_height, 1.0f), 0.0f,
         0.6f);
-    if (!panel.open) {
+    if (!shown || !panel.open) {
         ImGui::End();
         return;
     }

@@ -38,7 +38,7 @@ struct InferOutcome {
 enum class InferOverlay { Beside, OnTop, Off };
 
 struct InferPanel {
-    bool open = false;  // the window starts collapsed to its title bar
+    bool open = false;  // the window shows (the View menu opens it, its close button closes it)
     int up = 0;         // a CSV's or OBJ's up axis: 0 as the format says, 1 y, 2 z
     int max_rules = 12;
     // Derive from the tree on screen as soon as one is shown and nothing grows

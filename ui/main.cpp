@@ -30,8 +30,11 @@
 #include "ui/state/scale_figure.h"
 #include "ui/state/studio_options.h"
 #include "ui/state/studio_state.h"
+#include "ui/state/typing_bench.h"
 #include "ui/state/wind_view.h"
+#include "ui/template_picker.h"
 #include "ui/variants_strip.h"
+#include "ui/view_cache.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -78,8 +81,12 @@ void remember_glfw_error(int /*code*/, const char* description) {
 // (ImGui's backend chains it); ui/shortcuts.h acts on them.
 std::vector<KeyPress> g_key_presses;
 
+// When each key was read (GLFW_PRESS only), for the typing bench.
+std::vector<std::chrono::steady_clock::time_point> g_key_times;
+
 void remember_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
     if (action != GLFW_RELEASE) g_key_presses.push_back({key, mods});
+    if (action == GLFW_PRESS) g_key_times.push_back(std::chrono::steady_clock::now());
 }
 
 // Files dropped on the window since the last frame (GLFW's drop callback).
@@ -124,8 +131,23 @@ GLFWwindow* create_window() {
     glfwWindowHint(GLFW_SAMPLES, 4);
     GLFWwindow* window =
         glfwCreateWindow(kWindowWidth, kWindowHeight, "Sylva Studio", nullptr, nullptr);
+    if (window) {
+        // A software rasteriser (Mesa's llvmpipe under Xvfb or a remote desktop) pays every
+        // sample of every pixel on the CPU: four per pixel make each frame, and the wait from
+        // a key to its character, several times longer. It gets a window without.
+        glfwMakeContextCurrent(window);
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        const std::string name = renderer ? renderer : "";
+        glfwMakeContextCurrent(nullptr);
+        if (name.find("llvmpipe") != std::string::npos ||
+            name.find("softpipe") != std::string::npos ||
+            name.find("swrast") != std::string::npos) {
+            glfwDestroyWindow(window);
+            window = nullptr;
+        }
+    }
     if (!window) {
-        // Some X servers (Xvfb among them) offer no multisampled visual.
+        // Some X servers offer no multisampled visual.
         glfwWindowHint(GLFW_SAMPLES, 0);
         window = glfwCreateWindow(kWindowWidth, kWindowHeight, "Sylva Studio", nullptr, nullptr);
     }
@@ -320,11 +342,9 @@ ViewRect view_rect(const PanelLayout& layout) {
     return {left, bottom, std::max(width - left - right, 1), std::max(height - bottom - top, 1)};
 }
 
-void render_viewport(const Viewport& viewport, const StudioState& state, int width, int height,
-                     const ViewRect& rect, const ForestPreview& forest, const InferPanel& infer) {
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+// Draws the 3D view into the bound framebuffer at `rect`.
+void draw_view(const Viewport& viewport, const StudioState& state, const ViewRect& rect,
+               const ForestPreview& forest, const InferPanel& infer) {
     glViewport(rect.x, rect.y, rect.width, rect.height);
     viewport.backdrop.draw();
     float aspect = rect.aspect();
@@ -363,6 +383,45 @@ void render_viewport(const Viewport& viewport, const StudioState& state, int wid
         if (show.points) viewport.points.draw_points(view, projection, kPointColor, kPointSize);
     }
     if (!planted) draw_infer_overlay(infer, view, projection);
+}
+
+// The window cleared and the 3D view drawn into it. While a text field has the keyboard
+// and nothing moves in the view (ui/view_cache.h), the view is drawn once into the cache and
+// copied on the frames after, so typing costs the panels' drawing, not the tree's.
+void render_or_copy_view(const Viewport& viewport, const StudioState& state, int width, int height,
+                         const ViewRect& rect, const ForestPreview& forest, const InferPanel& infer,
+                         ViewCache& cache, long scene) {
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const ViewToggles& v = state.view;
+    // What the key does not follow is never cached: animation, the forest, the overlays of
+    // space colonization and of rules from a tree, the impostor.
+    const bool still = !v.wind && !v.turntable && !forest_preview_shown(forest, state) &&
+                       !infer.open && !grows_by_colonization(state.shown_template) &&
+                       !impostor_slot_shown(v);
+    cache.copied_last = false;
+    if (!cache.available() || !still || !ImGui::GetIO().WantTextInput) {
+        cache.invalidate();
+        draw_view(viewport, state, rect, forest, infer);
+        return;
+    }
+    ViewCacheKey key;
+    key.camera = state.camera;
+    key.x = rect.x, key.y = rect.y, key.width = rect.width, key.height = rect.height;
+    key.scene = scene;
+    key.toggles = (v.skeleton ? 1u : 0u) | (v.trunk ? 2u : 0u) | (v.crown ? 4u : 0u) |
+                  (v.leaves ? 8u : 0u) | (v.wireframe ? 16u : 0u) | (v.low_poly ? 32u : 0u) |
+                  (v.scale_figure ? 64u : 0u) | static_cast<unsigned>(v.lod_level) << 8;
+    const sylva::PartColors colors = sylva::tree_colors(state.shown_template);
+    key.trunk = colors.trunk, key.crown = colors.crown, key.leaves = colors.leaves;
+    cache.copied_last = cache.holds(key);
+    if (!cache.copied_last) {
+        cache.begin(key);
+        draw_view(viewport, state, {0, 0, rect.width, rect.height}, forest, infer);
+    }
+    cache.copy();
+    glViewport(0, 0, width, height);
 }
 
 // The window's loop; returns main's exit code. In screenshot mode it stops after the
@@ -413,10 +472,28 @@ int run(GLFWwindow* window, const StudioOptions& options) {
     state.view.wind = options.wind_seconds.has_value();
     state.view.forest = options.forest_preview;
     state.wake = [] { glfwPostEmptyEvent(); };
+    TemplatePicker& picker = template_picker();  // ui/template_picker.h
+    picker.wake = state.wake;
+    // A scripted screenshot leaves the user's cache folder alone.
+    if (!options.screenshot_path) picker.folder = thumbnail_cache_folder();
+    bool picker_opened = false;  // --template-picker: opened once the first tree is shown
     std::optional<ReleaseBench> bench;
     if (options.bench_release) {
         bench = parse_release_bench(*options.bench_release);
         bench->hold_ms = options.bench_hold_ms;
+    }
+    TypingBench typing;                          // ui/state/typing_bench.h
+    const GeneratedTree* typing_tree = nullptr;  // the last tree it counted
+    if (options.bench_typing > 0) {
+        // A comment line to type into: every prefix parses, and nothing is applied while the
+        // keys come faster than the typing pause.
+        typing.keys = options.bench_typing;
+        state.tree_template.grammar += "\n# typed: ";
+        state.committed = state.tree_template;
+        const auto lines = std::count(state.tree_template.grammar.begin(),
+                                      state.tree_template.grammar.end(), '\n');
+        reveal(editor, {static_cast<int>(lines) + 1, 1 << 20});
+        ImGui::GetIO().ConfigInputTextCursorBlink = false;  // only the keys change the line
     }
     start_generation(state);
     ForestPreview forest;  // ui/forest_preview.h
@@ -435,6 +512,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         start_variants(strip, state.tree_template);
     }
 
+    ViewCache view_cache;   // ui/view_cache.h
+    long scene_serial = 0;  // raised with every upload to the 3D view's renderers
     int frames_with_tree = 0;
     int frames_asking = 0;
     bool swaying = false;  // the viewport holds swayed parts
@@ -450,7 +529,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         // spends both cores on every frame) would otherwise take the worker's cores.
         const bool waiting = generation_running(state) || !state.stale.empty() ||
                              state.export_job.valid() || forest_preview_running(forest) ||
-                             infer_running(infer);
+                             infer_running(infer) || template_picker_busy(picker);
         const bool animating = (options.screenshot_path && !bench) || state.view.wind ||
                                state.view.turntable || (ImGui::IsAnyItemActive() && !waiting) ||
                                (bench && bench->phase == ReleaseBench::Drag);
@@ -460,9 +539,12 @@ int run(GLFWwindow* window, const StudioOptions& options) {
                 std::chrono::duration<double>(bench->hold_until - std::chrono::steady_clock::now())
                     .count(),
                 0.0, timeout);
-        if (state.rules.pending)  // apply typed rules when the pause ends
-            timeout = std::clamp(seconds_until_apply(state, std::chrono::steady_clock::now()), 0.01,
-                                 timeout);
+        if (state.rules.pending) {  // lint, then apply typed rules when the pauses end
+            const auto now = std::chrono::steady_clock::now();
+            const double lint = seconds_until_lint(state, now);
+            timeout =
+                std::clamp(lint > 0.0 ? lint : seconds_until_apply(state, now), 0.01, timeout);
+        }
         if (animating || input_events_waiting())
             glfwPollEvents();
         else
@@ -482,7 +564,21 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         const ViewRect rect = view_rect(layout);
         const float aspect = rect.aspect();
 
+        if (typing.keys > 0) {
+            for (const auto& at : g_key_times)
+                typing_key_pressed(typing, at, generation_running(state));
+        }
+        g_key_times.clear();
         poll_jobs(state);
+        if (typing.keys > 0 && typing.ready) {
+            if (state.tree.get() != typing_tree) typing.job_ms.push_back(state.last_wall_ms);
+            typing_tree = state.tree.get();
+            if (!generation_running(state) && !options.bench_no_job) {
+                // A job always runs, growing and meshing anew.
+                state.tree_template.params.crown_resolution ^= 1;
+                start_generation(state);
+            }
+        }
         for (const std::string& file : g_dropped_files) {
             const std::string ext = std::filesystem::path(file).extension().string();
 #ifdef SYLVA_HAS_LAYOUT
@@ -503,9 +599,17 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         g_dropped_files.clear();
         if (state.view.turntable) state.camera.yaw_deg += 0.5f;
-        if (state.tree_changed) {
+        // A tree that arrives while keys come into the rules editor is shown when the typing
+        // pauses (kRulesPauseSeconds, as the rules are applied): uploading and drawing a
+        // full-detail tree takes hundreds of milliseconds under a software rasteriser, and a
+        // key must not wait for it.
+        const bool typing_now = state.rules.pending &&
+                                seconds_until_apply(state, std::chrono::steady_clock::now()) > 0.0;
+        if (typing_now) {
+        } else if (state.tree_changed) {
             place_scale_figure(viewport, *state.tree);
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
             update_colonization(viewport, state, true);
             state.tree_changed = false;
             state.frame_requested |= state.frame_next_tree;
@@ -513,6 +617,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         } else if (state.tree &&
                    shown_parts(*state.tree, mesh_level(state.view)).level != uploaded_level) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
         }
         if (state.tree && impostor_slot_shown(state.view) && state.tree->reduced())
             viewport.impostor.update(state.tree, tree_colors(state.shown_template));
@@ -523,10 +628,18 @@ int run(GLFWwindow* window, const StudioOptions& options) {
             swaying = true;
         } else if (state.tree && swaying) {
             uploaded_level = upload_tree(viewport, *state.tree, mesh_level(state.view));
+            ++scene_serial;
             swaying = false;
         }
         update_colonization(viewport, state, false);
         update_variants_strip(strip);
+        update_template_picker(picker, state);
+        // Later than the first frames: a window appearing takes the focus, closing popups.
+        // A screenshot opens it again until it is drawn (whatever closed it).
+        if (options.template_picker &&
+            (!picker_opened || (options.screenshot_path && !picker.open)) && state.tree &&
+            !generation_running(state))
+            picker.open_requested = picker_opened = true;
         update_infer_panel(infer, state);
         if (update_forest_preview(forest, state) ||
             (state.frame_requested && forest_preview_shown(forest, state))) {
@@ -549,9 +662,9 @@ int run(GLFWwindow* window, const StudioOptions& options) {
 
         const bool variants_were_open = strip.open;
 #ifdef SYLVA_HAS_LAYOUT
-        draw_menu_bar(state, strip.open, &layout_panel.open);
+        draw_menu_bar(state, strip.open, infer.open, &layout_panel.open);
 #else
-        draw_menu_bar(state, strip.open, nullptr);
+        draw_menu_bar(state, strip.open, infer.open, nullptr);
 #endif
         if (strip.open && !variants_were_open && strip.thumbnails.empty() && !strip.job.valid())
             start_variants(strip, state.tree_template);
@@ -581,7 +694,8 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         if (state.live && edit_pending(state)) start_generation(state);
         if (!ImGui::IsAnyItemActive()) commit_edit(state);
 
-        render_viewport(viewport, state, width, height, rect, forest, infer);
+        render_or_copy_view(viewport, state, width, height, rect, forest, infer, view_cache,
+                            scene_serial);
         if (state.screenshot_requested) {
             // The 3D view alone, before the panels are drawn over the frame.
             state.screenshot_requested = false;
@@ -622,6 +736,7 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         if (options.screenshot_path && !bench && state.tree && !generation_running(state) &&
             !variants_running(strip) && !infer_running(infer) &&
+            (!options.template_picker || (picker.open && !template_picker_busy(picker))) &&
             (!state.view.forest || forest_preview_shown(forest, state)) &&
             !forest_preview_running(forest) && ++frames_with_tree == options.screenshot_frames) {
             save_back_buffer_png(*options.screenshot_path, width, height);
@@ -629,6 +744,30 @@ int run(GLFWwindow* window, const StudioOptions& options) {
         }
         glfwSwapBuffers(window);
         frame_seconds = glfwGetTime() - frame_start;
+        if (typing.keys > 0) {
+            glFinish();  // on screen before the clock is read
+            typing_frame_shown(typing, state.rules.text.size(), std::chrono::steady_clock::now(),
+                               1000.0 * (glfwGetTime() - frame_start), view_cache.copied_last);
+            if (!typing.ready && state.tree && editor.active && editor.line_height > 0.0f) {
+                int x = 0, y = 0;
+                glfwGetWindowPos(window, &x, &y);
+                GLint samples = 0;
+                glGetIntegerv(GL_SAMPLES, &samples);
+                std::printf(
+                    "typing bench: ready %d %d %d %d (%s, %d samples per pixel)\n",
+                    x + static_cast<int>(editor.line_x), y + static_cast<int>(editor.line_y),
+                    static_cast<int>(editor.line_width), static_cast<int>(editor.line_height),
+                    reinterpret_cast<const char*>(glGetString(GL_RENDERER)), samples);
+                std::fflush(stdout);
+                typing.ready = true;
+                typing.waiting.clear();
+            }
+            if (typing_bench_done(typing)) {
+                std::printf("%s\n", typing_bench_report(typing).c_str());
+                std::fflush(stdout);
+                break;
+            }
+        }
     }
     // Cancelled workers stop at their next check; the window goes away meanwhile.
     glfwHideWindow(window);
@@ -702,6 +841,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "sylva-studio: %s\n", e.what());
         exit_code = 1;
     }
+
+    release_template_picker(template_picker());  // while its GL context is current
 
     // Shutdown, in reverse order of init.
     ImGui_ImplOpenGL3_Shutdown();

@@ -27,6 +27,7 @@
 #include "ui/state/colonization_view.h"
 #include "ui/state/forest_export.h"
 #include "ui/state/template_controls.h"
+#include "ui/template_picker.h"
 
 namespace sylva::studio {
 namespace {
@@ -158,15 +159,7 @@ void save_or_ask(StudioState& state) {
 void template_section(StudioState& state) {
     // The unsaved-changes mark (the window's title carries it too, main).
     section(unsaved_changes(state) ? "Template  * unsaved changes" : "Template");
-    if (ImGui::BeginCombo("template", state.tree_template.name.c_str(),
-                          ImGuiComboFlags_HeightLargest)) {
-        for (const TreeTemplate* t : builtin_templates()) {
-            if (ImGui::Selectable(t->name.c_str(), t->name == state.tree_template.name))
-                switch_template(state, {*t, {}, {}});
-            tooltip(t->description.c_str());
-        }
-        ImGui::EndCombo();
-    }
+    template_picker_row(template_picker(), state);  // ui/template_picker.h
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", state.tree_template.description.c_str());
     ImGui::PopTextWrapPos();
@@ -211,7 +204,18 @@ void this_tree_section(StudioState& state) {
     for (const GrammarConstant& c : constants) {
         const std::string label = constant_label(c);
         if (!search_finds(query, label + " " + c.name + " " + c.help)) continue;
-        const std::string id = label + "##define " + c.name;
+        // A label longer than the column beside the sliders goes above its slider, wrapped,
+        // so it is never cut at the panel's edge.
+        const float label_room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() -
+                                 ImGui::GetStyle().ItemInnerSpacing.x;
+        const bool label_above = ImGui::CalcTextSize(label.c_str()).x > label_room;
+        if (label_above) {
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextUnformatted(label.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::SetNextItemWidth(-1.0f);
+        }
+        const std::string id = (label_above ? "" : label) + "##define " + c.name;
         bool changed = false;
         double value = c.value;
         if (c.integer) {
@@ -530,10 +534,12 @@ void rules_section(StudioState& state, RulesEditorState& editor, float height) {
     const TextMark mark = refused ? TextMark{draft.error_line, draft.error_column}
                                   : TextMark{state.error_line, state.error_column};
     const bool ctrl_enter = ctrl_enter_in_editor(editor);
-    if (rules_editor("rules", draft.text, mark, editor, height))
+    if (rules_editor("rules", draft.text, mark, editor, height, warning_marks(draft)))
         rules_typed(state, std::chrono::steady_clock::now());
-    apply_rules_draft(state, std::chrono::steady_clock::now(), ctrl_enter);
-    rules_warnings(state.tree_template, editor);
+    const auto now = std::chrono::steady_clock::now();
+    lint_rules_draft(state, now);
+    apply_rules_draft(state, now, ctrl_enter);
+    rules_warnings(draft, editor);
     if (draft.pending) {
         ImGui::TextDisabled("typing: applied after a pause, or Ctrl+Enter");
     } else if (mark.line > 0) {
@@ -833,7 +839,7 @@ PanelLayout panel_layout(float width, float height) {
     return layout;
 }
 
-void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open) {
+void draw_menu_bar(StudioState& state, bool& variants_open, bool& infer_open, bool* layout_open) {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("Open...", "Ctrl+O")) request_file_dialog(false);
@@ -871,6 +877,9 @@ void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open) {
     if (ImGui::BeginMenu("View")) {
         ImGui::MenuItem("Variants strip", nullptr, &variants_open);
         if (layout_open) ImGui::MenuItem("Layout panel", nullptr, layout_open);
+        ImGui::MenuItem("Rules from a tree", nullptr, &infer_open);
+        tooltip(
+            "rules that regrow a tree you already have (a skeleton file, or the one on screen)");
         ImGui::MenuItem("Forest preview", nullptr, &state.view.forest);
         ImGui::MenuItem("Low poly (game mesh)", nullptr, &state.view.low_poly);
         ImGui::MenuItem("Wind", nullptr, &state.view.wind);

@@ -21,10 +21,11 @@ PanelLayout panel_layout(float width, float height);
 void request_file_dialog(bool saving);
 
 // Along the top: File (open, save, export the tree or the forest preview's square), Edit
-// (undo, redo, reset) and View (the Variants strip, the layout panel, the forest preview,
-// the shortcut list). `variants_open` / `layout_open` are those windows' open flags;
-// `layout_open` is null when the studio is built without the layout module.
-void draw_menu_bar(StudioState& state, bool& variants_open, bool* layout_open);
+// (undo, redo, reset) and View (the Variants strip, "Rules from a tree", the layout panel,
+// the forest preview, the shortcut list). `variants_open` / `infer_open` / `layout_open` are
+// those windows' open flags; `layout_open` is null when the studio is built without the
+// layout module.
+void draw_menu_bar(StudioState& state, bool& variants_open, bool& infer_open, bool* layout_open);
 
 // Left: Generate / live / undo / redo, the template picker, open / save, and the parameters.
 void draw_tree_panel(StudioState& state, const PanelLayout& layout);

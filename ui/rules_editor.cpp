@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <string_view>
 
@@ -12,6 +13,21 @@ namespace {
 
 const ImU32 kErrorBand = IM_COL32(220, 60, 50, 70);
 const ImU32 kErrorBar = IM_COL32(255, 95, 80, 255);
+const ImU32 kWarningLine = IM_COL32(255, 190, 60, 255);
+
+// The width of what a mark at 1-based `column` of `line` points at: the name or number
+// starting there, else one character.
+float marked_width(std::string_view line, int column, float char_width) {
+    const std::size_t start = static_cast<std::size_t>(std::max(column - 1, 0));
+    if (start >= line.size()) return char_width;
+    std::size_t end = start;
+    auto word = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+    };
+    while (end < line.size() && word(line[end])) ++end;
+    if (end == start) end = start + 1;
+    return ImGui::CalcTextSize(line.data() + start, line.data() + end).x;
+}
 
 // The text of a 1-based line, without its newline; empty past the end.
 std::string_view line_text(std::string_view text, int line) {
@@ -107,7 +123,7 @@ bool ctrl_enter_in_editor(const RulesEditorState& editor) {
 }
 
 bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorState& editor,
-                  float height) {
+                  float height, const std::vector<TextMark>& underlines) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float line_height = ImGui::GetTextLineHeight();
     const float char_width = ImGui::CalcTextSize("M").x;
@@ -148,6 +164,18 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
                              ImVec2(x + 8.0f * char_width, y + 2.0f * line_height));
     }
 
+    // The warnings: an orange underline under the word each points at.
+    for (const TextMark& w : underlines) {
+        if (w.line <= 0 || w.line > extent.lines) continue;
+        const std::string_view line = line_text(text, w.line);
+        const float y = text_origin.y + static_cast<float>(w.line) * line_height;
+        const float x = text_origin.x + (w.column > 0 ? column_x(line, w.column) : 0.0f);
+        const float width = w.column > 0
+                                ? marked_width(line, w.column, char_width)
+                                : ImGui::CalcTextSize(line.data(), line.data() + line.size()).x;
+        draw->AddLine(ImVec2(x, y), ImVec2(x + std::max(width, 4.0f), y), kWarningLine, 2.0f);
+    }
+
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
     if (editor.select_line > 0) ImGui::SetKeyboardFocusHere();
     const bool changed = ImGui::InputTextMultiline("##text", &text, field_size,
@@ -171,6 +199,10 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
         const float y = text_origin.y + line * line_height;
         scroll_into_view(ImVec2(x - 4.0f * char_width, y),
                          ImVec2(x + 4.0f * char_width, y + line_height));
+        editor.line_x = ImGui::GetWindowPos().x;
+        editor.line_y = y;
+        editor.line_width = ImGui::GetWindowSize().x;
+        editor.line_height = line_height;
     } else {
         editor.cursor = -1;
     }
@@ -189,12 +221,17 @@ bool rules_editor(const char* id, std::string& text, TextMark mark, RulesEditorS
         char number[16];
         std::snprintf(number, sizeof number, "%d", i);
         const bool error_line = marked && i == mark.line;
+        const bool warning_line = std::any_of(underlines.begin(), underlines.end(),
+                                              [i](const TextMark& w) { return w.line == i; });
         if (error_line)
             panel->AddRectFilled(ImVec2(top_left.x, y), ImVec2(gutter_max.x, y + line_height),
                                  kErrorBand);
         panel->AddText(
             ImVec2(gutter_max.x - style.FramePadding.x - ImGui::CalcTextSize(number).x, y),
-            error_line ? kErrorBar : ImGui::GetColorU32(ImGuiCol_TextDisabled), number);
+            error_line     ? kErrorBar
+            : warning_line ? kWarningLine
+                           : ImGui::GetColorU32(ImGuiCol_TextDisabled),
+            number);
     }
     panel->PopClipRect();
     return changed;

@@ -5,14 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <glm/common.hpp>
-#include <glm/ext/matrix_clip_space.hpp>
-#include <glm/ext/matrix_transform.hpp>
 
 #include "core/cancel.h"
 #include "core/color_variation.h"
 #include "forest/variation.h"
-#include "ui/mesh_renderer.h"
+#include "ui/thumbnail_render.h"
 
 namespace sylva::studio {
 namespace {
@@ -49,53 +46,6 @@ void free_textures(std::vector<VariantThumbnail>& thumbnails) {
     thumbnails.clear();
 }
 
-// Draws the tree into a new texture, framed from the front and a little above.
-GLuint render_thumbnail(const VariantThumbnail& t, MeshRenderer& trunk, MeshRenderer& crown,
-                        MeshRenderer& leaves) {
-    GLuint texture = 0, depth = 0, framebuffer = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kThumbnailSize, kThumbnailSize, 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glGenRenderbuffers(1, &depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kThumbnailSize, kThumbnailSize);
-    glGenFramebuffers(1, &framebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const Mesh* m : {&t.trunk, &t.crown, &t.leaves})
-        for (const glm::vec3& p : m->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 0.1f);
-    const float distance = radius / std::sin(glm::radians(17.0f));
-    const glm::vec3 eye = centre + distance * glm::normalize(glm::vec3(0.35f, 0.25f, 1.0f));
-    const glm::mat4 view = glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
-    const glm::mat4 projection =
-        glm::perspective(glm::radians(36.0f), 1.0f, 0.05f * distance, 4.0f * distance);
-
-    glViewport(0, 0, kThumbnailSize, kThumbnailSize);
-    glClearColor(0.20f, 0.22f, 0.25f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    trunk.upload(t.trunk);
-    crown.upload(t.crown);
-    leaves.upload(t.leaves);
-    const PartColors colors = tree_colors(t.tree);
-    trunk.draw(view, projection, colors.trunk);
-    crown.draw(view, projection, colors.crown);
-    leaves.draw(view, projection, colors.leaves);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &framebuffer);
-    glDeleteRenderbuffers(1, &depth);
-    return texture;
-}
-
 }  // namespace
 
 void start_variants(VariantsStrip& strip, const TreeTemplate& tree) {
@@ -126,9 +76,11 @@ void update_variants_strip(VariantsStrip& strip) {
         }
     }
     if (!strip.render_pending) return;
-    MeshRenderer trunk, crown, leaves;
+    ThumbnailRenderers renderers;
     for (VariantThumbnail& t : strip.thumbnails)
-        if (!t.texture) t.texture = render_thumbnail(t, trunk, crown, leaves);
+        if (!t.texture)
+            t.texture = render_tree_thumbnail(t.trunk, t.crown, t.leaves, tree_colors(t.tree),
+                                              kThumbnailSize, renderers);
     strip.render_pending = false;
 }
 

@@ -110,6 +110,32 @@ TEST(RulesDraft, ARefusedTextKeepsTheTreeAndNamesTheLine) {
     EXPECT_EQ(state.tree, good);
 }
 
+// The draft is linted after a typing pause, before it is applied: a rule that can never
+// fire is warned about while the grammar on screen is still the old one; a half-typed rule
+// that does not parse gives no warnings, and an unchanged text is not linted again.
+TEST(RulesDraft, TheDraftIsLintedOnAPauseBeforeItIsApplied) {
+    StudioState state = opened(kDoubling);
+    Clock::time_point t = Clock::now();
+    ASSERT_TRUE(lint_rules_draft(state, t));  // the opened rules
+    EXPECT_TRUE(state.rules.warnings.empty());
+    const std::string before = state.tree_template.grammar;
+    t = type(state, "\nX -> FF", t, milliseconds(100));            // no word ever holds an X
+    EXPECT_FALSE(lint_rules_draft(state, t + milliseconds(100)));  // still typing
+    EXPECT_GT(seconds_until_lint(state, t), 0.0);
+    ASSERT_TRUE(lint_rules_draft(state, t + milliseconds(400)));
+    ASSERT_EQ(state.rules.warnings.size(), 1u);
+    EXPECT_EQ(state.rules.warnings[0].line, 3);
+    EXPECT_EQ(state.rules.linted, state.rules.text);
+    EXPECT_EQ(state.tree_template.grammar, before);                // parses, and is not applied yet
+    EXPECT_FALSE(lint_rules_draft(state, t + milliseconds(500)));  // the same text
+    ASSERT_EQ(apply_rules_draft(state, t + milliseconds(700), false), RulesApply::Applied);
+    EXPECT_EQ(state.rules.warnings.size(), 1u);                      // still of the text shown
+    t = type(state, "[", t + milliseconds(700), milliseconds(100));  // does not parse
+    ASSERT_TRUE(lint_rules_draft(state, t + milliseconds(400)));
+    EXPECT_TRUE(state.rules.warnings.empty());
+    EXPECT_EQ(state.rules.linted, state.rules.text);
+}
+
 TEST(RulesDraft, CtrlEnterAppliesAtOnce) {
     StudioState state = opened(kDoubling);
     state.rules.text += "\nG -> F";

@@ -754,5 +754,24 @@ TEST(StudioState, ExportAsksToCreateAMissingFolder) {
     std::filesystem::remove_all(dir);
 }
 
+// A failed export into folders it made leaves none of them behind.
+TEST(StudioState, FailedExportRemovesTheFolderItMade) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_test_failed_export";
+    std::filesystem::remove_all(dir);
+    StudioState state = state_with(small_tree());
+    start_generation(state);
+    ASSERT_TRUE(wait_for_generations(state));
+    state.export_settings.path = (dir / "deeper" / "tree.unknown").string();  // no such format
+    start_export(state);
+    ASSERT_FALSE(state.export_missing_folder.empty());
+    create_export_folder(state);
+    ASSERT_TRUE(state.export_job.valid());
+    state.export_job.wait();
+    poll_jobs(state);
+    EXPECT_TRUE(state.export_failed) << state.export_message;
+    EXPECT_FALSE(std::filesystem::exists(dir));
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace sylva::studio

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/errors.h"
+#include "tree/organ_surfaces.h"
 #include "turtle/lsystem_growth.h"
 #include "turtle/lsystem_parser.h"
 #include "ui/state/studio_state.h"
@@ -55,6 +56,47 @@ RulesApply apply_rules_draft(StudioState& state, std::chrono::steady_clock::time
     draft.quiet = !explicit_apply;
     state.tree_template.grammar = draft.grammar = draft.text;
     return RulesApply::Applied;
+}
+
+namespace {
+
+// What the lint reads besides the text: the parameters parse_lsystem sees as constants, and
+// the growth method (a method without a grammar is not linted).
+std::string lint_key(const StudioState& state) {
+    std::string key = state.tree_template.growth;
+    for (const auto& [name, value] : param_constants(state.tree_template.params))
+        key += "|" + name + "=" + std::to_string(value);
+    return key;
+}
+
+double seconds_since_typing(const StudioState& state, std::chrono::steady_clock::time_point now) {
+    return std::chrono::duration<double>(now - state.rules.typed_at).count();
+}
+
+}  // namespace
+
+double seconds_until_lint(const StudioState& state, std::chrono::steady_clock::time_point now) {
+    if (!state.rules.pending) return 0.0;
+    return std::max(kLintPauseSeconds - seconds_since_typing(state, now), 0.0);
+}
+
+bool lint_rules_draft(StudioState& state, std::chrono::steady_clock::time_point now) {
+    RulesDraft& draft = state.rules;
+    if (seconds_until_lint(state, now) > 0.0) return false;
+    std::string key = lint_key(state);
+    if (draft.lint_done && draft.linted == draft.text && draft.linted_key == key) return false;
+    draft.linted = draft.text;
+    draft.linted_key = std::move(key);
+    draft.lint_done = true;
+    draft.warnings.clear();
+    if (state.tree_template.growth != lsystem_growth.name) return true;
+    try {
+        draft.warnings = lint_grammar(draft.text, param_constants(state.tree_template.params),
+                                      organ_surface_names());
+    } catch (const InputError&) {
+        // The parser's error is the editor's mark once the draft is applied.
+    }
+    return true;
 }
 
 double seconds_until_apply(const StudioState& state, std::chrono::steady_clock::time_point now) {

@@ -9,6 +9,9 @@
 
 #include <chrono>
 #include <string>
+#include <vector>
+
+#include "turtle/lint.h"
 
 namespace sylva::studio {
 
@@ -17,6 +20,10 @@ struct StudioState;
 // Typing must pause this long before the rules are applied: long enough that a word in
 // progress is not grown, short enough that the tree still follows the typing.
 inline constexpr double kRulesPauseSeconds = 0.6;
+// The draft is linted (turtle/lint.h) after a shorter pause: its warnings are under the
+// editor before the rules are applied, and for a draft that parses but is never applied (a
+// held-back estimate) too.
+inline constexpr double kLintPauseSeconds = 0.3;
 
 struct RulesDraft {
     std::string text;      // what the editor shows, perhaps half typed
@@ -30,6 +37,13 @@ struct RulesDraft {
     // The last apply came from a pause, not from the user: an estimate over the limits is
     // then shown beside the editor and the "run anyway?" dialog does not open mid-typing.
     bool quiet = false;
+    // The lint of the draft as it stood when typing last paused (lint_rules_draft()),
+    // whether it is applied or not: empty when it does not parse (`error` says why once it
+    // is applied) or the growth method reads no grammar.
+    std::vector<LintWarning> warnings;
+    std::string linted;      // the text `warnings` are of: their lines and columns are in it
+    std::string linted_key;  // what else the lint read: growth method, template parameters
+    bool lint_done = false;
 };
 
 // Takes a grammar changed outside the editor (undo, a template picked or opened, a #define
@@ -51,6 +65,15 @@ enum class RulesApply {
 // "run anyway?" dialog), as the user asked for the rules to run.
 RulesApply apply_rules_draft(StudioState& state, std::chrono::steady_clock::time_point now,
                              bool explicit_apply);
+
+// Lints the draft when typing has paused kLintPauseSeconds at `now` and its text (or the
+// template's parameters it reads, or the growth method) changed since the last lint; a
+// grammar error leaves no warnings. Returns true when it linted. A few milliseconds (one
+// parse).
+bool lint_rules_draft(StudioState& state, std::chrono::steady_clock::time_point now);
+
+// Seconds until the draft is due to be linted (0 when due or nothing waits).
+double seconds_until_lint(const StudioState& state, std::chrono::steady_clock::time_point now);
 
 // Seconds until a pending draft is applied (0 when due or nothing waits): how long the main
 // loop may sleep.

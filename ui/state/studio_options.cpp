@@ -93,6 +93,18 @@ StudioOptions parse_studio_options(int argc, const char* const* argv) {
                 throw UsageError("--bench-hold takes milliseconds of at least 0, got '" +
                                  std::string(text) + "'");
             options.bench_hold_ms = ms;
+        } else if (arg == "--bench-no-job") {
+            options.bench_no_job = true;
+        } else if (arg == "--template-picker") {
+            options.template_picker = true;
+        } else if (arg == "--bench-typing") {
+            std::string_view text = value();
+            int keys = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), keys);
+            if (error != std::errc() || end != text.data() + text.size() || keys < 1)
+                throw UsageError("--bench-typing takes a count of keys of at least 1, got '" +
+                                 std::string(text) + "'");
+            options.bench_typing = keys;
         } else if (arg == "--frames") {
             std::string_view text = value();
             int frames = 0;
@@ -121,6 +133,7 @@ std::string studio_usage() {
            "                    [--forest-preview] [--infer tree|SKELETON]\n"
            "                    [--screenshot PATH [--frames N]]\n"
            "                    [--bench-release KEY=VALUE [--bench-hold MS]]\n"
+           "                    [--template-picker] [--bench-typing KEYS [--bench-no-job]]\n"
            "\n"
            "Opens the Sylva tree modeler window (OpenGL 3.3) with the built-in default tree.\n"
            "\n"
@@ -152,6 +165,15 @@ std::string studio_usage() {
            "                     to the new game mesh on screen, and exit (with --screenshot:\n"
            "                     saving that frame)\n"
            "  --bench-hold MS    hold the slider still at VALUE this long before letting go\n"
+           "  --template-picker  open the template picker's thumbnails (with --screenshot:\n"
+           "                     once every thumbnail is drawn)\n"
+           "  --bench-typing KEYS\n"
+           "                     keep a growth job running, focus the rules editor, print\n"
+           "                     'typing bench: ready X Y W H' (the editor's place), and once\n"
+           "                     KEYS typed characters are on screen print the time from each\n"
+           "                     key to its frame and exit (bench/typing_latency_bench.cpp\n"
+           "                     types them)\n"
+           "  --bench-no-job     the typing bench without the growth job, to compare\n"
            "  -h, --help         show this help\n"
            "\n"
            "Without a display, use the command-line tool instead: sylva export -o tree.obj\n";

@@ -31,6 +31,14 @@ struct StudioOptions {
     // prints the time from release to the game mesh on screen and exits.
     std::optional<std::string> bench_release;
     double bench_hold_ms = 0;  // held still at the value this long before release
+    // Open the template picker's grid (a screenshot waits until every thumbnail is drawn).
+    bool template_picker = false;
+    // The typing latency bench (ui/state/typing_bench.h): a growth job always running, the
+    // rules editor focused; prints the editor's place, then the figures once this many
+    // typed characters are on screen, and exits. 0: off.
+    int bench_typing = 0;
+    // ... without the growth job (the same figures with nothing growing, to compare).
+    bool bench_no_job = false;
 };
 
 // A malformed command line; main prints the message and the usage, and exits with 2.

@@ -14,6 +14,7 @@
 #include "core/color_variation.h"
 #include "core/errors.h"
 #include "core/input_file.h"
+#include "core/output_folder.h"
 #include "export/export_tree.h"
 #include "marching/marching_cubes.h"
 #include "tree/cost.h"
@@ -22,6 +23,7 @@
 #include "tree/template_file.h"
 #include "tree/template_library.h"
 #include "ui/state/leaves_only.h"
+#include "ui/state/thread_priority.h"
 
 namespace sylva::studio {
 namespace {
@@ -154,6 +156,7 @@ GenerationJob launch(GenerationJob job) {
     job.worker = std::jthread([promise = std::move(promise), tree_template = job.tree_template,
                                budget = job.budget, progress = job.progress, base = job.base,
                                leaves_base = job.leaves_base, previous = job.previous]() mutable {
+        lower_thread_priority();  // the UI's frames first (ui/state/thread_priority.h)
         try {
             promise.set_value(
                 generate(tree_template, budget, progress, base, leaves_base, previous));
@@ -187,8 +190,12 @@ std::string files_text(const std::vector<std::filesystem::path>& files) {
 // The export, on a worker: trunk and crown reduced to `budget` (0 keeps every triangle),
 // or a LOD chain; returns the message the panel shows. The preview's reduction is reused
 // when it has the same budget.
+// `make_folder`: the path's folder is made first (core/output_folder.h) and removed again
+// when the export fails, so a failed export leaves no empty folder behind.
 std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const TreeTemplate& tmpl,
-                        std::size_t budget, const ExportSettings& settings) {
+                        std::size_t budget, const ExportSettings& settings, bool make_folder) {
+    std::optional<OutputFolder> folder;
+    if (make_folder) folder.emplace(std::filesystem::path(settings.path).parent_path());
     const Tree& tree = shown->tree;
     FinishedTree finished;
     if (budget > 0 && shown->reduced() && shown->budget == budget &&
@@ -213,6 +220,7 @@ std::string export_tree(const std::shared_ptr<const GeneratedTree>& shown, const
     options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
     options.engine.wind_motion = wind_motion(tmpl.params);
     const auto files = write_tree(settings.path, tree, finished, tree_colors(tmpl), options);
+    if (folder) folder->keep();
     if (finished.lod)
         return "wrote " + files_text(files) + ": LOD0-LOD" +
                std::to_string(finished.levels.size() - 1) + ", " +
@@ -694,7 +702,10 @@ void undo_refused_edit(StudioState& state) {
     state.frame_next_tree = true;
 }
 
-void start_export(StudioState& state) {
+namespace {
+
+// start_export(), and with `make_folder` the folder made on the worker (export_tree()).
+void start_export_job(StudioState& state, bool make_folder) {
     if (!state.tree) {
         state.export_message = "nothing to export yet";
         state.export_failed = true;
@@ -704,7 +715,7 @@ void start_export(StudioState& state) {
     const std::filesystem::path folder =
         std::filesystem::path(state.export_settings.path).parent_path();
     std::error_code ec;
-    if (!folder.empty() && !std::filesystem::is_directory(folder, ec)) {
+    if (!make_folder && !folder.empty() && !std::filesystem::is_directory(folder, ec)) {
         state.export_missing_folder = folder.string();
         state.export_message = "the folder " + folder.string() + " does not exist";
         state.export_failed = true;
@@ -715,21 +726,20 @@ void start_export(StudioState& state) {
     state.export_failed = false;
     const std::size_t budget = export_budget(state);
     state.export_job = std::async(std::launch::async, export_tree, state.tree, state.shown_template,
-                                  budget, state.export_settings);
+                                  budget, state.export_settings, make_folder);
+}
+
+}  // namespace
+
+void start_export(StudioState& state) {
+    start_export_job(state, false);
 }
 
 void create_export_folder(StudioState& state) {
     if (state.export_missing_folder.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(state.export_missing_folder, ec);
-    if (ec) {
-        state.export_message =
-            "cannot make the folder " + state.export_missing_folder + ": " + ec.message();
-        state.export_failed = true;
-        return;
-    }
-    state.export_missing_folder.clear();
-    start_export(state);
+    // The worker makes the folder (an IoError naming it when it cannot) and removes it
+    // again when the export fails.
+    start_export_job(state, true);
 }
 
 void save_template_to_file(StudioState& state) {

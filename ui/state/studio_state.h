@@ -384,8 +384,9 @@ void keep_export_budget(StudioState& state);
 // folder does not exist writes nothing: export_missing_folder names it, for the panel to ask.
 void start_export(StudioState& state);
 
-// Makes export_missing_folder (and the folders above it) and starts the export it held
-// back; the message names the folder when it cannot be made.
+// Starts the export held back by a missing folder; its worker makes the folder and the ones
+// above it (core/output_folder.h: removed again when the export fails, so a failed export
+// leaves no empty folder). The message names the folder when it cannot be made.
 void create_export_folder(StudioState& state);
 
 // Saves the edited template to template_path; loads one from it. Messages go to file_message.

@@ -9,11 +9,12 @@
 #include <cstdlib>
 #include <map>
 #include <mutex>
+#include <utility>
 
+#include "tree/grammar_constants.h"
 #include "tree/parameters.h"
 #include "tree/pipeline.h"
 #include "tree/unread_params.h"
-#include "turtle/grammar_reads.h"
 
 namespace sylva::studio {
 namespace {
@@ -25,68 +26,23 @@ std::string_view trim(std::string_view s) {
     return s.substr(first, last - first + 1);
 }
 
-bool is_name_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+// Where the comment after a #define's value starts in its line (the '#' after the one of
+// "#define"); npos without one.
+std::size_t comment_column(std::string_view line) {
+    const std::size_t define = line.find('#');
+    return define == std::string_view::npos ? define : line.find('#', define + 1);
 }
 
-// A plain number, all of `text`.
-bool parse_number(std::string_view text, double& value) {
-    text = trim(text);
-    if (text.empty()) return false;
-    if (text.front() == '+') text.remove_prefix(1);
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
-}
-
-// One #define line taken apart: where its value stands (offsets into the line) and its
-// comment. False for any other line.
-struct DefineLine {
-    std::string name;
-    std::size_t value_begin = 0, value_end = 0;
-    std::string_view comment;  // after the '#' that starts it; empty without one
-};
-bool parse_define_line(std::string_view line, DefineLine& out) {
-    std::size_t i = line.find_first_not_of(" \t");
-    if (i == std::string_view::npos || line[i] != '#') return false;
-    i = line.find_first_not_of(" \t", i + 1);
-    if (i == std::string_view::npos || line.substr(i, 6) != "define") return false;
-    i += 6;
-    if (i >= line.size() || (line[i] != ' ' && line[i] != '\t')) return false;
-    i = line.find_first_not_of(" \t", i);
-    if (i == std::string_view::npos) return false;
-    const std::size_t name_begin = i;
-    while (i < line.size() && is_name_char(line[i])) ++i;
-    if (i == name_begin) return false;
-    out.name = std::string(line.substr(name_begin, i - name_begin));
-    const std::size_t hash = line.find('#', i);
-    const std::string_view rest =
-        line.substr(i, hash == std::string_view::npos ? line.npos : hash - i);
-    const auto value_first = rest.find_first_not_of(" \t");
-    if (value_first == std::string_view::npos) return false;
-    const auto value_last = rest.find_last_not_of(" \t\r");
-    out.value_begin = i + value_first;
-    out.value_end = i + value_last + 1;
-    out.comment = hash == std::string_view::npos ? std::string_view{} : line.substr(hash + 1);
-    return true;
-}
-
-// "[10, 60] fork angle" -> 10, 60, "fork angle".
-bool parse_range_comment(std::string_view comment, double& min, double& max, std::string& help) {
-    comment = trim(comment);
-    if (comment.empty() || comment.front() != '[') return false;
-    const auto close = comment.find(']');
-    const auto comma = comment.find(',');
-    if (close == std::string_view::npos || comma == std::string_view::npos || comma > close)
-        return false;
-    if (!parse_number(comment.substr(1, comma - 1), min) ||
-        !parse_number(comment.substr(comma + 1, close - comma - 1), max) || !(min < max))
-        return false;
-    help = std::string(trim(comment.substr(close + 1)));
-    return true;
-}
-
-bool whole(double v) {
-    return std::floor(v) == v && std::abs(v) < 1e9;
+// Offsets of the 1-based `line`'s first character and its end in `text`.
+std::pair<std::size_t, std::size_t> line_span(std::string_view text, int line) {
+    std::size_t start = 0;
+    for (int i = 1; i < line && start <= text.size(); ++i) {
+        const std::size_t newline = text.find('\n', start);
+        start = newline == std::string_view::npos ? text.size() + 1 : newline + 1;
+    }
+    if (start > text.size()) return {text.size(), text.size()};
+    const std::size_t end = text.find('\n', start);
+    return {start, end == std::string_view::npos ? text.size() : end};
 }
 
 }  // namespace
@@ -112,54 +68,41 @@ double round_for_range(double value, double min, double max) {
 
 std::vector<GrammarConstant> grammar_constants(std::string_view grammar) {
     std::vector<GrammarConstant> constants;
-    int number = 0;
-    for (std::string_view line : grammar_lines(grammar)) {
-        ++number;
-        DefineLine define;
-        if (!parse_define_line(line, define)) continue;
-        GrammarConstant c;
-        if (!parse_number(line.substr(define.value_begin, define.value_end - define.value_begin),
-                          c.value) ||
-            !parse_range_comment(define.comment, c.min, c.max, c.help))
-            continue;
-        c.name = define.name;
-        c.integer = whole(c.value) && whole(c.min) && whole(c.max);
-        c.line = number;
-        constants.push_back(std::move(c));
+    for (const GrammarDefine& d : grammar_defines(grammar)) {
+        if (!d.value || !d.min || !d.max) continue;  // an expression, or no range: text only
+        constants.push_back({d.name, *d.value, *d.min, *d.max, d.help, d.integer, d.line});
     }
     return constants;
 }
 
 bool set_grammar_constant(std::string& grammar, std::string_view name, double value) {
-    std::size_t start = 0;
-    while (start <= grammar.size()) {
-        std::size_t end = grammar.find('\n', start);
-        if (end == std::string::npos) end = grammar.size();
-        const std::string_view line(grammar.data() + start, end - start);
-        DefineLine define;
-        if (parse_define_line(line, define) && define.name == name) {
-            const std::string text = shortest_number(value);
-            std::size_t old_width = define.value_end - define.value_begin;
-            std::string replacement = text;
-            // Keep the comment's column: pad a shorter value, and let a longer one take the
-            // spaces after it (one stays).
-            if (define.value_end < line.size()) {
-                if (text.size() < old_width) {
-                    replacement.append(old_width - text.size(), ' ');
-                } else {
-                    std::size_t spaces = 0;
-                    while (define.value_end + spaces < line.size() &&
-                           line[define.value_end + spaces] == ' ')
-                        ++spaces;
-                    old_width += std::min(text.size() - old_width, spaces > 0 ? spaces - 1 : 0);
-                }
-            }
-            grammar.replace(start + define.value_begin, old_width, replacement);
-            return true;
-        }
-        start = end + 1;
+    // The comments' columns before the value is rewritten (tree/grammar_constants.h), so they
+    // stay aligned: a shorter value is padded, a longer one takes the spaces after it (one
+    // stays).
+    std::vector<std::pair<int, std::size_t>> columns;  // line, comment column
+    for (const GrammarDefine& d : grammar_defines(grammar)) {
+        if (d.name != name) continue;
+        const auto [begin, end] = line_span(grammar, d.line);
+        columns.emplace_back(d.line,
+                             comment_column(std::string_view(grammar).substr(begin, end - begin)));
     }
-    return false;
+    if (!set_grammar_define(grammar, name, value)) return false;
+    for (const auto& [line, column] : columns) {
+        if (column == std::string_view::npos) continue;
+        const auto [begin, end] = line_span(grammar, line);
+        const std::size_t now =
+            comment_column(std::string_view(grammar).substr(begin, end - begin));
+        if (now == std::string_view::npos) continue;
+        if (now < column) {
+            grammar.insert(begin + now, column - now, ' ');
+        } else {
+            std::size_t spaces = 0;
+            while (spaces < now && grammar[begin + now - 1 - spaces] == ' ') ++spaces;
+            const std::size_t drop = std::min(now - column, spaces > 0 ? spaces - 1 : 0);
+            grammar.erase(begin + now - drop, drop);
+        }
+    }
+    return true;
 }
 
 std::map<std::string, std::string, std::less<>> inert_params(const TreeTemplate& tree) {
