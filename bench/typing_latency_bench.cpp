@@ -8,10 +8,10 @@
 //       [--studio build/ui/sylva-studio] [--keys 40] [--template templates/spruce.toml]
 //       [--set KEY=VALUE]... [-- STUDIO ARGS]
 //
-// The default tree is the spruce at crown_resolution 320 with no triangle budget (meshed at
-// that resolution): a growth job of about a second on two cores. `-- --bench-no-job` gives
-// the same figures with nothing growing. --set rewrites a [params] line of the template file (a
-// copy in /tmp).
+// The default tree is the spruce at crown_resolution 800 and trunk_resolution 360 with no
+// triangle budget (meshed at those resolutions): a growth job of about a second on two idle
+// cores. `-- --bench-no-job` gives the same figures with nothing growing. --set rewrites a
+// [params] line of the template file (a copy in /tmp).
 //
 // Needs an X display. libXtst is loaded at run time (its headers are not needed to build).
 #include <X11/Xlib.h>
@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
     }
 
     if (!sets_given && tree == "templates/spruce.toml")
-        sets = {"crown_resolution=320", "triangle_budget=0"};
+        sets = {"crown_resolution=800", "trunk_resolution=360", "triangle_budget=0"};
     const std::string file = template_with(tree, sets);
     std::printf("growing %s with %zu change(s) in a loop, typing %d keys\n", tree.c_str(),
                 sets.size(), keys);
