@@ -47,7 +47,8 @@ ImpostorFidelity impostor_fidelity(std::span<const BakePart> parts, const Impost
     const int size = atlas.tile;
     std::vector<glm::vec3> directions;
     for (int j = 0; j < atlas.views; ++j)
-        for (int i = 0; i < atlas.views; ++i) directions.push_back(view_direction(i, j, atlas.views));
+        for (int i = 0; i < atlas.views; ++i)
+            directions.push_back(view_direction(i, j, atlas.views));
     const std::size_t captures = directions.size();
     for (const glm::vec3& d : between_directions()) directions.push_back(d);
     std::vector<Match> matches(directions.size());

@@ -15,9 +15,9 @@ namespace sylva {
 
 // Silhouettes are alpha >= 0.5 (the shaders' alpha test).
 struct ImpostorFidelity {
-    double capture_iou = 1.0;  // the worst silhouette IoU over the capture directions
-    double between_iou = 1.0;  // the worst over the directions between them
-    double color = 0.0;        // the worst mean |difference| of sRGB bytes inside both
+    double capture_iou = 1.0;     // the worst silhouette IoU over the capture directions
+    double between_iou = 1.0;     // the worst over the directions between them
+    double color = 0.0;           // the worst mean |difference| of sRGB bytes inside both
     std::vector<double> between;  // each in-between direction's IoU, in between_directions() order
 };
 
