@@ -42,8 +42,8 @@ TEST(CrownBridges, ShortStrutsAreAsThickAsTheirSpheres) {
         EXPECT_FLOAT_EQ(c.rb, 0.2f);
     }
     // Spheres thinner than half a cell get half a cell.
-    for (const CappedCone& c : crown_bridge_cones(row_of(0.1f, 0.35f).field, 400, row.params,
-                                                  row.box))
+    for (const CappedCone& c :
+         crown_bridge_cones(row_of(0.1f, 0.35f).field, 400, row.params, row.box))
         EXPECT_FLOAT_EQ(c.ra, 0.15f);
 }
 
