@@ -1,10 +1,10 @@
 // Reduced pieces grown back to the size they had. A reduction keeps its vertices on (or
 // near) the surface it simplifies, so a closed piece drawn with few triangles lies inside
 // the piece it was made from: a ball of eight triangles is an inscribed octahedron, which
-// shows about 60% of the ball's outline. By Cauchy's surface area formula the mean area a
-// convex body shows from all directions is a quarter of its surface area, so a piece scaled
-// about its centroid until its surface area is the source's again shows, on average over
-// views, the outline the source piece showed.
+// shows about 60% of the ball's outline. By Cauchy's surface area formula (Santaló 1976)
+// the mean area a convex body shows from all directions is a quarter of its surface area,
+// so a piece scaled about its centroid until its surface area is the source's again shows,
+// on average over views, the outline the source piece showed.
 #pragma once
 
 #include <cstddef>
