@@ -211,7 +211,13 @@ void append_tube(Mesh& mesh, const TubeAxis& axis, int sides, glm::vec3 side) {
         }
     if (axis.pointed) {
         const auto apex = static_cast<std::uint32_t>(mesh.positions.size());
-        mesh.positions.push_back(axis.points.back());
+        // The point lies past the tip by a quarter of the last segment times the tip's share
+        // of the radius before it: a cone thins to nothing where the branch keeps that
+        // radius (its field ends in a round cap), and the longer point gives back part of
+        // the outline the cone loses.
+        const glm::vec3 last = axis.points[n - 1] - axis.points[n - 2];
+        mesh.positions.push_back(axis.points.back() +
+                                 kTipReach * last * (axis.radii[n - 1] / axis.radii[n - 2]));
         for (std::uint32_t j = 0; j < k; ++j)
             mesh.triangles.push_back({ring(rings - 1, j), ring(rings - 1, j + 1), apex});
     } else {

@@ -22,10 +22,14 @@ namespace sylva {
 // at the bend: a sharper mitre stretches the polygon into a blade.
 inline constexpr float kMaxTubeBendDegrees = 70.0f;
 
+// A pointed tube's point lies past its last axis point by this share of the last segment,
+// times the tip's radius over the radius before it (append_tube).
+inline constexpr float kTipReach = 0.25f;
+
 struct TubeAxis {
     std::vector<glm::vec3> points;  // the centre line, base first; at least two points
     std::vector<float> radii;       // one per point, each above zero: half the mean width
-    bool pointed = false;           // the tube ends in its last point (a tip), not a cap
+    bool pointed = false;           // the tube ends in a point (a tip), not a cap
 };
 
 // The axis with fewer points: Douglas-Peucker on position and radius (a point stays when
@@ -51,7 +55,8 @@ std::size_t tube_triangles(std::size_t points, int sides, bool pointed);
 // radius); at a bend its corners lie in the plane halving the bend (a mitre), so each face
 // of a segment is flat where the radius does not change. `side` points where the first
 // corner points at the base (it is made perpendicular to the first segment; any direction
-// not along it will do), and is carried along the axis without twist. The base is drawn 3%
+// not along it will do), and is carried along the axis without twist. A pointed tube's
+// point lies just past its last axis point (kTipReach). The base is drawn 3%
 // thinner: it lies inside another tube (a parent, or the piece before a cut), and no corner
 // of the two then meets.
 void append_tube(Mesh& mesh, const TubeAxis& axis, int sides, glm::vec3 side);

@@ -24,7 +24,10 @@ namespace sylva {
 // The bridges that let a budget of `budget` trunk + crown triangles draw the crown: with
 // crown_merge on and more blobs than half the budget leaves kTrianglesPerCrownPiece each,
 // struts between the nearest blobs (crown_merge.h), each a cone from one sphere's centre to
-// the other's, at each end as thick as its sphere (and at least a cell, so the grid sees it).
+// the other's, at each end as thick as its sphere and at least half a cell (so the grid
+// sees it), or at least a cell where the struts are slender (on average longer than four
+// times the larger sphere's radius, or joining the crown into fewer than four pieces: thin,
+// they would take the crown's triangles).
 // Empty without a budget, with crown_merge off, or when the blobs are few enough.
 std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
                                            const TreeParams& p, const Box& box);

@@ -14,6 +14,7 @@
 #include "lowpoly/handle_cutting.h"
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
+#include "lowpoly/piece_scaling.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
 #include "tree/crown_hulls.h"
@@ -124,6 +125,10 @@ class SampledHausdorff {
     std::vector<glm::vec3> source_samples_;
 };
 
+// A reduced crown piece grows by at most this linear factor (an octahedron inscribed in a
+// ball needs 1.35 to show the ball's mean outline).
+constexpr float kMostPieceGrowth = 2.0f;
+
 // A crown reduced alone (its branches drawn as prisms) to fewer triangles than this is
 // drawn as hulls in the automatic mode even without handles.
 constexpr std::size_t kTinyCrownBudget = 100;
@@ -143,9 +148,11 @@ constexpr std::size_t kTinyCrownBudget = 100;
 // pieces as the level before kept, more than a smaller budget can draw).
 // `hull_count` is crown_hull_count(budget) unless the caller counts the lumps on a larger
 // budget (a prism trunk's tree counts them on the whole tree's, not on the crown's rest).
+// `grow_pieces`: a crown reduced as itself (no hulls) has its pieces grown back to the area
+// they had (not a crown of bridged blobs).
 ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull_source,
                           const TreeBudget& budget, const DecimateSettings& settings,
-                          std::optional<std::size_t> lumps = std::nullopt) {
+                          bool grow_pieces, std::optional<std::size_t> lumps = std::nullopt) {
     const std::size_t hull_count = lumps.value_or(crown_hull_count(budget));
     // Clusters split where the crown parts (crown_hulls) add up to half as many hulls again
     // while the hulls are few; past kMostHullsToSplit the clusters are small enough that few
@@ -158,8 +165,16 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
         CrownHulls::WithHandles;
     // Blobs reduced to very few triangles fold into spikes as surely as blobs with handles.
     const bool tiny = solid_budget(budget) < kTinyCrownBudget && trunk.triangles.empty();
-    if (hull_count == 0 || (only_with_handles && !tiny && genus(hull_source) == 0))
-        return reduce_solids(trunk, crown, budget, settings);
+    if (hull_count == 0 || (only_with_handles && !tiny && genus(hull_source) == 0)) {
+        ReducedTree out = reduce_solids(trunk, crown, budget, settings);
+        // Blobs reduced to a few triangles each are inscribed polyhedra showing little more
+        // than half their outline: grown back to the area of `hull_source`'s (the finest
+        // crown, so a LOD level does not grow on the level before's growth;
+        // lowpoly/piece_scaling.h). Not bridged blobs: grown, their struts would fill more
+        // of the gaps between them.
+        if (grow_pieces) restore_piece_areas(out.crown, hull_source, kMostPieceGrowth);
+        return out;
+    }
     // From kCrownHullBudget on the budget draws the hulls well, and half as many again kept
     // no closer: they alone.
     if (solid_budget(budget) >= kCrownHullBudget)
@@ -244,7 +259,8 @@ ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& 
     // between tiers and curtains the crown's outline shows (a willow at 800 kept 0.85 of its
     // silhouette with them, 0.87 with these).
     const std::size_t lumps = crown_hull_count(rest) > 0 ? crown_hull_count(budget) : 0;
-    ReducedTree out = reduce_shaped(Mesh{}, crown, hull_source, rest, settings, lumps);
+    ReducedTree out =
+        reduce_shaped(Mesh{}, crown, hull_source, rest, settings, tree.crown_bridges == 0, lumps);
     out.trunk = std::move(prisms.mesh);
     out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     out.within_budget = out.within_budget && out.triangles <= total;
@@ -357,7 +373,8 @@ ReducedTree reduce_tree(const Tree& tree, const TreeBudget& budget,
     ReducedTree out =
         tree.branch_axes.axes.empty()
             ? reduce_shaped(solids.trunk(), solids.crown(), solids.crown(),
-                            shaped_for(budget, tree), with_foot(settings, tree.trunk))
+                            shaped_for(budget, tree), with_foot(settings, tree.trunk),
+                            tree.crown_bridges == 0)
             : reduce_with_prisms(tree, solids.crown(), solids.crown(), shaped_for(budget, tree),
                                  settings, std::numeric_limits<std::size_t>::max());
     pin_to_ground(out.trunk, lowest_y(tree.trunk));
@@ -399,7 +416,7 @@ std::vector<ReducedTree> make_lod_chain(const Tree& tree, std::span<const TreeBu
         ReducedTree level =
             tree.branch_axes.axes.empty()
                 ? reduce_shaped(trunk, crown, finest.crown(), shaped_for(budget, tree),
-                                with_foot(settings, tree.trunk))
+                                with_foot(settings, tree.trunk), tree.crown_bridges == 0)
                 : reduce_with_prisms(tree, crown, finest.crown(), shaped_for(budget, tree),
                                      settings, trunk.triangles.size());
         // A reduction only removes triangles, but cutting a handle caps it with new ones.

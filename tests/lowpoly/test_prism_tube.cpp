@@ -47,10 +47,18 @@ TEST(PrismTube, AStraightTubeIsAClosedOutwardPrism) {
     }
 }
 
-TEST(PrismTube, APointedTubeEndsInItsLastPoint) {
+TEST(PrismTube, APointedTubeEndsJustPastItsLastPoint) {
     const Mesh mesh =
         expect_sound_tubes(axis_of({{0, 0, 0}, {0, 1, 0}, {0.2f, 2, 0}}, 0.1f, true), 3);
-    EXPECT_EQ(mesh.positions.back(), glm::vec3(0.2f, 2, 0));
+    // A quarter of the last segment on (the tip as thick as the point before it), so the
+    // cone shows more of the branch's last segment than one ending on the tip would.
+    const glm::vec3 point = mesh.positions.back();
+    EXPECT_NEAR(point.x, 0.25f, 1e-5f);
+    EXPECT_NEAR(point.y, 2.25f, 1e-5f);
+    // A tip half as thick as the point before it: an eighth of the segment on.
+    TubeAxis thinning = axis_of({{0, 0, 0}, {0, 1, 0}}, 0.1f, true);
+    thinning.radii.back() = 0.05f;
+    EXPECT_NEAR(expect_sound_tubes(thinning, 4).positions.back().y, 1.125f, 1e-5f);
     // One segment of a triangle ending in a point is a tetrahedron.
     EXPECT_EQ(expect_sound_tubes(axis_of({{0, 0, 0}, {0, 1, 0}}, 0.1f, true), 3).triangles.size(),
               4u);

@@ -340,6 +340,25 @@ TEST(CrownMerge, BridgesAreThoseOfTheBisectedGrowth) {
     }
 }
 
+// The seed spruce at 800: its small balls, every one kept, each reduced to a few triangles, grown
+// back to the area of the balls the crown was meshed from (without, an inscribed polyhedron keeps
+// little more than half of it), each still closed and outward.
+TEST(CrownBlobs, BallsReducedToAFewTrianglesKeepTheirArea) {
+    TreeBudget budget;
+    budget.total = 800;
+    MeshOptions options;
+    options.budget = budget.total;
+    const Tree tree = generate_tree(load_template("seed_spruce"), options);
+    ASSERT_EQ(tree.crown_bridges, 0u);
+    const ReducedTree reduced = reduce_tree(tree, budget);
+    const std::size_t pieces = component_volumes(reduced.crown).size();
+    ASSERT_GE(pieces, 30u);
+    EXPECT_EQ(pieces, component_volumes(tree.crown).size()) << "every ball kept";
+    ASSERT_LE(reduced.crown.triangles.size(), 10 * pieces);  // a few triangles a ball
+    expect_closed_outward(reduced.crown, "crown");
+    EXPECT_GE(surface_area(reduced.crown), 0.95 * surface_area(tree.crown));
+}
+
 TEST(CrownMerge, EmptyAndSingleCrownsNeedNoBridges) {
     EXPECT_TRUE(crown_bridges({}, 1).empty());
     const std::vector<Ball> one = {{{0, 0, 0}, 1.0f}};
