@@ -70,8 +70,9 @@ glm::vec3 billboard_direction(int k, int quads);
 // Dilation: within each `tile` x `tile` square of `coverage` (an Image8 whose alpha is
 // channel 3), every pixel of alpha 0 gets the colour channels (0-2) of its nearest pixel
 // of alpha > 0 (breadth first over 4-neighbours, ties by scan order), in `coverage`, and
-// every channel of that pixel in each of `others` (same size: the normals, and the depth
-// the shaders' parallax reads). Coverage's alpha stays; a tile with no covered pixel stays.
+// every channel of that pixel in each of `others` (same size: the normals and depth, which
+// filtered reads near an edge mix in). Coverage's alpha stays; a tile with no covered pixel
+// stays.
 void dilate_tiles(Image8& coverage, int tile, std::span<Image8* const> others = {});
 
 // Linear [0, 1] to an sRGB byte, and back.

@@ -244,9 +244,11 @@ TEST(ImpostorFidelity, Spruce) {
 TEST(ImpostorFidelity, Willow) {
     check_fidelity("willow");
 }
-// Palm's fronds are a texel thin in a 128-pixel tile: the three views, lined up with one
-// depth per texel, disagree by about a texel there, and without the coverage gain
-// (kImpostorCoverageGain) the blend drops them (0.76 between views). It does not reach 0.85.
+TEST(ImpostorFidelity, Honda) {
+    check_fidelity("honda");
+}
+// Palm's fronds are a texel thin in a 128-pixel tile, where the tree's own silhouette moved
+// by a quarter of a pixel scores 0.84 between views: it does not reach 0.85.
 TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
     const GameTree& tree = game_tree("palm");
     const ImpostorFidelity f =
@@ -255,9 +257,28 @@ TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
     EXPECT_GE(f.between_iou, 0.80);
     EXPECT_LE(f.color, 10.0);
 }
+// Sparse crowns of thin parts at many depths: sampled on one plane per view (or stepped
+// toward the depth read there), a ray that passes beside a branch in one view lands on
+// another part, and the branches ghost (seed_spruce scored 0.68 between views) and the
+// flowers take the leaves' colour (flowering_shrub 10.8/255). The march through each view's
+// depth finds the part the ray meets. Neither reaches IoU 0.85 between views: their own
+// silhouettes moved by a quarter of a pixel score 0.87 and 0.65.
+TEST(ImpostorFidelity, ThinCrownsLineUpAtEveryDepth) {
+    const GameTree& spruce = game_tree("seed_spruce");
+    const ImpostorFidelity s =
+        impostor_fidelity(spruce.parts, bake_impostor(spruce.parts, ImpostorSettings{}));
+    EXPECT_GE(s.capture_iou, 0.90);
+    EXPECT_GE(s.between_iou, 0.80);
+    EXPECT_LE(s.color, 10.0);
+    const GameTree& shrub = game_tree("flowering_shrub");
+    const ImpostorFidelity f =
+        impostor_fidelity(shrub.parts, bake_impostor(shrub.parts, ImpostorSettings{}));
+    EXPECT_GE(f.capture_iou, 0.90);
+    EXPECT_LE(f.color, 10.0);
+}
 // Every template, with the figures printed (--gtest_also_run_disabled_tests): feathery
-// crowns (bush, honda, palm, seed_spruce, flowering_shrub) have parts a pixel thin in a
-// 128-pixel tile, whose silhouette moved by half a pixel already scores below 0.85.
+// crowns (bush, palm, seed_spruce, flowering_shrub) have parts a pixel thin in a 128-pixel
+// tile, whose silhouette moved by half a pixel already scores below 0.85.
 TEST(ImpostorFidelity, DISABLED_EveryTemplate) {
     for (const TreeTemplate* t : builtin_templates()) check_fidelity(t->name);
 }
