@@ -96,6 +96,7 @@ std::string impostor_layout_json(const ImpostorAtlas* atlas, const BillboardText
             {"surface_texels", kImpostorSurfaceTexels},
             {"coverage_gain", kImpostorCoverageGain},
             {"front_view", {front.x, front.y}},
+            {"layout_choice", atlas->layout.empty() ? std::string("as asked") : atlas->layout},
             {"albedo",
              {{"image", images.atlas_albedo},
               {"color", "sRGB"},
