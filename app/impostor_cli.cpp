@@ -1,7 +1,10 @@
 #include "app/impostor_cli.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+
+#include "impostor/impostor_layout.h"
 
 namespace sylva {
 namespace {
@@ -34,7 +37,8 @@ bool parse_impostor_flag(const std::string& arg, const std::function<std::string
             throw std::invalid_argument(
                 "--impostor-kind expects octahedral, billboard or both, not '" + name + "'");
     } else if (arg == "--impostor-size") {
-        options.size = whole_number(arg, value(), 64, 8192);
+        const std::string size = value();  // auto: chosen per tree (impostor/impostor_layout.h)
+        options.size = size == "auto" ? 0 : whole_number(arg, size, 64, 8192);
     } else if (arg == "--impostor-views") {
         options.views = whole_number(arg, value(), 2, 32);
     } else if (arg == "--impostor-quads") {
@@ -51,6 +55,14 @@ void print_far_levels(const ImpostorOptions& options, std::size_t levels) {
     if (kind == ImpostorKind::Billboard || kind == ImpostorKind::Both)
         std::printf("  LOD%zu: billboard, %d crossed quads\n", levels++, options.billboard_quads);
     if (kind == ImpostorKind::Octahedral || kind == ImpostorKind::Both) {
+        if (options.size == 0) {
+            std::printf(
+                "  LOD%zu: octahedral impostor, %d x %d views of 128 px, or %d x %d views at %d "
+                "px for a thin tree (the layout JSON says which and why)\n",
+                levels, options.views, options.views, std::max(kThinViews, options.views),
+                std::max(kThinViews, options.views), kThinSize);
+            return;
+        }
         const int tile = options.size / options.views;
         std::printf("  LOD%zu: octahedral impostor, %d x %d views of %d px (a %d px atlas)\n",
                     levels, options.views, options.views, tile, tile * options.views);

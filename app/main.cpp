@@ -107,7 +107,7 @@ constexpr const char* kOptions = R"(
                    octahedral (default), billboard (crossed quads any importer shows) or
                    both (billboard, then octahedral); implies --impostor
   --impostor-size PX, --impostor-views N, --impostor-quads Q
-                   atlas side (default 1024), N x N views (default 8, 2 to 32),
+                   atlas side (default auto: per tree), N x N views (default 8, 2 to 32),
                    billboard quads (default 3, or 2)
   --format F       @FORMATS@ (default: from the extension of OUT)
   --shading S      flat (default, faceted) or smooth normals

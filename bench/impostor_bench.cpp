@@ -7,11 +7,13 @@
 // as wall time on the TBB pool (both cores) and CPU time of all threads (the steadier
 // figure on a busy machine: wall = cpu / 2 on two idle cores). An
 // export without --impostor calls none of this (its bytes are the golden ones).
+// `--size auto` bakes the layout chosen per tree (impostor/impostor_layout.h: "layout" is the
+// one chosen, "thin %" the thin share that chose it; the bake time includes both bakes).
 // With --fidelity, also the worst silhouette IoU from the capture directions and from the 8
 // between them, and the worst colour difference (impostor/impostor_fidelity.h); `all` for
 // every built-in template.
 //
-// Usage: sylva-bench-impostor [--markdown] [--repeat N] [--size PX] [--views N] [--fidelity]
+// Usage: sylva-bench-impostor [--markdown] [--repeat N] [--size PX|auto] [--views N] [--fidelity]
 //                             [all | TEMPLATE...]
 #include <algorithm>
 #include <cstdio>
@@ -24,6 +26,7 @@
 #include "export/export_tree.h"
 #include "impostor/impostor_fidelity.h"
 #include "impostor/impostor_files.h"
+#include "impostor/impostor_layout.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
 
@@ -39,9 +42,10 @@ int main(int argc, char** argv) {
         const std::string arg = argv[i];
         if (arg == "--repeat" && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
-        else if (arg == "--size" && i + 1 < argc)
-            settings.size = std::atoi(argv[++i]);
-        else if (arg == "--views" && i + 1 < argc)
+        else if (arg == "--size" && i + 1 < argc) {
+            const std::string v = argv[++i];
+            settings.size = v == "auto" ? 0 : std::atoi(v.c_str());
+        } else if (arg == "--views" && i + 1 < argc)
             settings.views = std::atoi(argv[++i]);
         else if (arg == "--markdown")
             markdown = true;
@@ -53,12 +57,19 @@ int main(int argc, char** argv) {
             names.push_back(arg);
     }
     if (names.empty()) names = {"oak", "spruce", "palm", "willow"};
-    settings = clamped(settings);
+    const bool automatic = settings.size == 0;
+    if (!automatic) settings = clamped(settings);
 
-    std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d\n", settings.views,
-                settings.views, settings.size, settings.size / settings.views, repeat);
-    std::vector<std::string> header{"template",     "triangles", "atlas ms",   "atlas cpu ms",
-                                    "billboard ms", "png ms",    "png cpu ms", "png KiB"};
+    if (automatic)
+        std::printf("impostor bake, layout chosen per tree (impostor_layout.h), best of %d\n",
+                    repeat);
+    else
+        std::printf("impostor bake, %d x %d views at %d px (tiles of %d), best of %d\n",
+                    settings.views, settings.views, settings.size, settings.size / settings.views,
+                    repeat);
+    std::vector<std::string> header{"template",   "triangles",    "thin %",       "layout",
+                                    "atlas ms",   "atlas cpu ms", "billboard ms", "png ms",
+                                    "png cpu ms", "png KiB"};
     if (fidelity) header.insert(header.end(), {"IoU capture", "IoU between", "colour/255"});
     bench::Table table(header);
     double worst = 0.0, worst_cpu = 0.0;
@@ -79,6 +90,7 @@ int main(int argc, char** argv) {
         ImpostorAtlas atlas;
         const bench::Times bake =
             bench::best_of(repeat, [&] { atlas = bake_impostor(parts, settings); });
+        const double thin = atlas.thin >= 0.0 ? atlas.thin : thin_share(atlas);
         const bench::Times billboard =
             bench::best_of(repeat, [&] { (void)bake_billboard(parts, settings); });
         std::size_t png_bytes = 0;
@@ -90,6 +102,8 @@ int main(int argc, char** argv) {
         std::vector<std::string> cells{
             name,
             std::to_string(triangles),
+            bench::format("%.1f", thin * 100.0),
+            bench::format("%dx%d@%d", atlas.views, atlas.views, atlas.tile * atlas.views),
             bench::format("%.1f", bake.wall_ms),
             bench::format("%.1f", bake.cpu_ms),
             bench::format("%.1f", billboard.wall_ms),
@@ -100,7 +114,7 @@ int main(int argc, char** argv) {
             const ImpostorFidelity f = impostor_fidelity(parts, atlas);
             cells.insert(cells.end(),
                          {bench::format("%.3f", f.capture_iou),
-                          bench::format("%.3f", f.between_iou), bench::format("%.2f", f.color)});
+                          bench::format("%.4f", f.between_iou), bench::format("%.2f", f.color)});
         }
         table.row(std::move(cells));
     }

@@ -12,7 +12,10 @@
 // View (i, j) of N x N fills column i, row j (rows top down); its direction is the
 // hemi-octahedral decoding of (i, j) / (N - 1) * 2 - 1. The three views around the
 // camera's direction are blended; each is read where the camera's ray meets that view's
-// surface (two parallax steps on the stored depth), so they line up.
+// surface, found by marching the ray through the view's depth (relief mapping: 64 steps
+// from radius in front of the centre to radius behind it, then 3 halvings), so they line
+// up at every depth. A texel is surface from its depth back to 5 texels plus a step behind
+// it (the layout's relief_steps, relief_refinements, surface_texels).
 
 uniform sampler2D impostor_albedo;  // an sRGB texture (GL_SRGB8_ALPHA8), mipmapped
 uniform sampler2D impostor_normal;  // linear (GL_RGBA8), mipmapped
@@ -66,31 +69,65 @@ in vec3 quad_point;
 out vec4 sylva_color;
 uniform vec3 light_direction;  // toward the light, model space, unit
 
-// One view's texel where the camera's ray through `point` meets its surface: albedo in
-// .albedo, object-space normal in .normal.
+// One view's texel where the camera's ray through `point` first meets its surface: albedo
+// in .albedo, object-space normal in .normal; both zero where the ray misses it.
 struct SylvaTexel {
     vec4 albedo;
     vec3 normal;
 };
 
+const int SYLVA_RELIEF_STEPS = 64;       // the layout's relief_steps
+const int SYLVA_RELIEF_REFINEMENTS = 3;  // relief_refinements
+const float SYLVA_SURFACE_TEXELS = 5.0;  // surface_texels
+
+// Whether `p` (from the centre) lies on the view's surface: its texel (read unfiltered, at
+// its centre) is covered, and p lies from `band` behind the texel's depth to that depth.
+// `uv` is p's place in the atlas.
+bool sylva_on_surface(vec2 view, vec3 p, vec3 direction, vec3 right, vec3 up, float tile_px,
+                      float band, out vec2 uv) {
+    vec2 tile = vec2(dot(p, right), -dot(p, up)) / impostor_radius * 0.5 + 0.5;
+    uv = (view + tile) / impostor_views;
+    if (any(lessThan(tile, vec2(0.0))) || any(greaterThanEqual(tile, vec2(1.0)))) return false;
+    vec2 texel = (view * tile_px + floor(tile * tile_px) + 0.5) / (impostor_views * tile_px);
+    if (textureLod(impostor_albedo, texel, 0.0).a <= 0.0) return false;
+    float depth = (textureLod(impostor_normal, texel, 0.0).a - 0.5) * 2.0 * impostor_radius;
+    float along = dot(p, direction);
+    return along <= depth && along >= depth - band;
+}
+
 SylvaTexel sylva_impostor_view(vec2 view, vec3 point, vec3 ray) {
     vec3 direction = sylva_view_direction(view), right, up;
     sylva_view_frame(direction, right, up);
     vec3 from_center = point - impostor_center;
-    float facing = dot(ray, direction);  // < 0: the ray runs into the view
-    float depth = 0.0;
-    vec2 uv = vec2(0.0);
-    vec4 normal_depth = vec4(0.5);
-    for (int step = 0; step <= 2; ++step) {  // parallax: two steps onto the stored depth
-        vec3 hit = from_center + ray * ((depth - dot(from_center, direction)) / min(facing, -1e-4));
-        vec2 tile = vec2(dot(hit, right), -dot(hit, up)) / impostor_radius * 0.5 + 0.5;
-        uv = (view + clamp(tile, 0.0, 1.0)) / impostor_views;
-        normal_depth = texture(impostor_normal, uv);
-        depth = (normal_depth.a - 0.5) * 2.0 * impostor_radius;
-        if (any(lessThan(tile, vec2(0.0))) || any(greaterThan(tile, vec2(1.0))))
-            return SylvaTexel(vec4(0.0), vec3(0.0));
+    // The hit is read with the mip level of the quad's own footprint: the march branches per
+    // pixel, where implicit derivatives are undefined.
+    vec2 on_plane = (view + vec2(dot(from_center, right), -dot(from_center, up)) /
+                                impostor_radius * 0.5 + 0.5) / impostor_views;
+    vec2 du = dFdx(on_plane), dv = dFdy(on_plane);
+    SylvaTexel none = SylvaTexel(vec4(0.0), vec3(0.0));
+    if (dot(ray, direction) >= -1e-4) return none;  // the view looks at the quad edge-on
+    float tile_px = float(textureSize(impostor_normal, 0).x) / impostor_views;
+    float step_length = 2.0 * impostor_radius / float(SYLVA_RELIEF_STEPS);
+    float band = SYLVA_SURFACE_TEXELS * 2.0 * impostor_radius / tile_px + step_length;
+    vec2 uv;
+    for (int i = 0; i <= SYLVA_RELIEF_STEPS; ++i) {
+        float s = impostor_radius - step_length * float(i);  // toward the camera from the quad
+        if (!sylva_on_surface(view, from_center - ray * s, direction, right, up, tile_px, band, uv))
+            continue;
+        float front = s + step_length, back = s;  // the first hit lies between
+        for (int k = 0; i > 0 && k < SYLVA_RELIEF_REFINEMENTS; ++k) {
+            float middle = 0.5 * (front + back);
+            if (sylva_on_surface(view, from_center - ray * middle, direction, right, up, tile_px,
+                                 band, uv))
+                back = middle;
+            else
+                front = middle;
+        }
+        sylva_on_surface(view, from_center - ray * back, direction, right, up, tile_px, band, uv);
+        return SylvaTexel(textureGrad(impostor_albedo, uv, du, dv),
+                          textureGrad(impostor_normal, uv, du, dv).rgb * 2.0 - 1.0);
     }
-    return SylvaTexel(texture(impostor_albedo, uv), normal_depth.rgb * 2.0 - 1.0);
+    return none;
 }
 
 // The blend of the three views around the camera's direction.
@@ -112,8 +149,11 @@ SylvaTexel sylva_impostor(vec3 point, vec3 camera) {
     SylvaTexel ta = sylva_impostor_view(a, point, ray);
     SylvaTexel tb = sylva_impostor_view(b, point, ray);
     SylvaTexel tc = sylva_impostor_view(c, point, ray);
+    // A view the ray misses adds no coverage; colour averages the views it hits.
+    vec3 hits = w * vec3(ta.albedo.a > 0.0, tb.albedo.a > 0.0, tc.albedo.a > 0.0);
     SylvaTexel sum;
     sum.albedo = w.x * ta.albedo + w.y * tb.albedo + w.z * tc.albedo;
+    sum.albedo.rgb /= max(hits.x + hits.y + hits.z, 1e-6);
     // Coverage gain (the layout's coverage_gain): thin parts the three views do not quite
     // line up keep only a share of their coverage each; the test passes them from 0.36 on.
     sum.albedo.a = min(sum.albedo.a * 1.4, 1.0);

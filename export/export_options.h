@@ -48,7 +48,7 @@ struct EngineSettings {
 enum class ImpostorKind { None, Octahedral, Billboard, Both };
 struct ImpostorOptions {
     ImpostorKind kind = ImpostorKind::None;
-    int size = 1024;          // atlas side in pixels
+    int size = 0;             // atlas side in pixels; 0: per tree (impostor/impostor_layout.h)
     int views = 8;            // N x N views
     bool depth = true;        // depth in the normal atlas's alpha (the shaders' parallax)
     int billboard_quads = 3;  // 2 or 3

@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "impostor/impostor_layout.h"
+
 namespace sylva {
 namespace {
 
@@ -79,9 +81,9 @@ float srgb_to_linear(std::uint8_t value) {
 ImpostorSettings clamped(ImpostorSettings s) {
     s.views = std::clamp(s.views, 2, 32);
     s.samples = std::clamp(s.samples, 1, 8);
-    s.size = std::max(s.size, 8 * s.views);
+    if (s.size != 0) s.size = std::max(s.size, 8 * s.views);
     s.billboard_quads = std::clamp(s.billboard_quads, 2, 3);
-    if (s.billboard_tile <= 0) s.billboard_tile = s.size / 4;
+    if (s.billboard_tile <= 0) s.billboard_tile = (s.size != 0 ? s.size : 1024) / 4;
     s.billboard_tile = std::max(s.billboard_tile, 8);
     return s;
 }
@@ -93,6 +95,7 @@ glm::vec3 billboard_direction(int k, int quads) {
 
 ImpostorAtlas bake_impostor(std::span<const BakePart> parts, const ImpostorSettings& settings) {
     const ImpostorSettings s = clamped(settings);
+    if (s.size == 0) return bake_impostor_auto(parts, s);
     ImpostorAtlas atlas;
     atlas.views = s.views;
     atlas.tile = s.size / s.views;

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "impostor/view_rasterizer.h"
@@ -17,8 +18,10 @@
 namespace sylva {
 
 struct ImpostorSettings {
-    int views = 8;    // N: N x N views (2 to 32)
-    int size = 1024;  // the atlas side in pixels; a tile is size / N (at least 8)
+    int views = 8;  // N: N x N views (2 to 32)
+    // The atlas side in pixels; a tile is size / N (at least 8). 0: automatic, the layout
+    // chosen per tree by its thinness (impostor_layout.h), `views` the default's count.
+    int size = 1024;
     int samples = 2;  // per pixel and axis (1 to 8): anti-aliased alpha edges
     // The normal atlas carries depth in alpha (RGBA instead of RGB), which the shaders use to
     // line the three views up (atlas_sampler.h); without it they blend the views as captured
@@ -43,6 +46,8 @@ struct ImpostorAtlas {
     int tile = 0;  // pixels a view
     BakeBounds bounds;
     bool depth = false;
+    double thin = -1.0;  // thin_share() of the default layout, when the layout was automatic
+    std::string layout;  // when automatic: one line saying what was chosen and why
     Image8 albedo;
     Image8 normal;
 };
@@ -58,7 +63,8 @@ struct BillboardTexture {
     Image8 normal;
 };
 
-// Clamps settings to their ranges (views 2-32, samples 1-8, tile >= 8, quads 2-3).
+// Clamps settings to their ranges (views 2-32, samples 1-8, tile >= 8, quads 2-3); size 0
+// (automatic) stays, its billboard tiles of 256 px.
 ImpostorSettings clamped(ImpostorSettings settings);
 
 ImpostorAtlas bake_impostor(std::span<const BakePart> parts, const ImpostorSettings& settings);
@@ -70,8 +76,9 @@ glm::vec3 billboard_direction(int k, int quads);
 // Dilation: within each `tile` x `tile` square of `coverage` (an Image8 whose alpha is
 // channel 3), every pixel of alpha 0 gets the colour channels (0-2) of its nearest pixel
 // of alpha > 0 (breadth first over 4-neighbours, ties by scan order), in `coverage`, and
-// every channel of that pixel in each of `others` (same size: the normals, and the depth
-// the shaders' parallax reads). Coverage's alpha stays; a tile with no covered pixel stays.
+// every channel of that pixel in each of `others` (same size: the normals and depth, which
+// filtered reads near an edge mix in). Coverage's alpha stays; a tile with no covered pixel
+// stays.
 void dilate_tiles(Image8& coverage, int tile, std::span<Image8* const> others = {});
 
 // Linear [0, 1] to an sRGB byte, and back.

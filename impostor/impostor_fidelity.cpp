@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
 #include "impostor/atlas_sampler.h"
@@ -35,11 +36,17 @@ Match compare(const ViewImage& tree, const ViewImage& impostor) {
 
 }  // namespace
 
-std::vector<glm::vec3> between_directions() {
+std::vector<glm::vec3> between_directions(int views) {
     const glm::vec2 cells[8] = {{0.33f, 0.33f}, {6.67f, 0.33f}, {0.67f, 6.67f}, {6.33f, 6.33f},
                                 {2.33f, 4.33f}, {3.67f, 3.67f}, {4.33f, 1.33f}, {1.67f, 2.67f}};
     std::vector<glm::vec3> out;
-    for (glm::vec2 c : cells) out.push_back(hemi_octahedral_decode(c / 7.0f * 2.0f - 1.0f));
+    const float last = static_cast<float>(std::max(views, 2) - 1);
+    for (glm::vec2 c : cells) {
+        // The same half-cell at the layout's scale: the cell scaled, its place inside kept.
+        const glm::vec2 inside = c - glm::floor(c);
+        const glm::vec2 cell = glm::min(glm::floor(c / 7.0f * last), glm::vec2(last - 1.0f));
+        out.push_back(hemi_octahedral_decode((cell + inside) / last * 2.0f - 1.0f));
+    }
     return out;
 }
 
@@ -50,7 +57,7 @@ ImpostorFidelity impostor_fidelity(std::span<const BakePart> parts, const Impost
         for (int i = 0; i < atlas.views; ++i)
             directions.push_back(view_direction(i, j, atlas.views));
     const std::size_t captures = directions.size();
-    for (const glm::vec3& d : between_directions()) directions.push_back(d);
+    for (const glm::vec3& d : between_directions(atlas.views)) directions.push_back(d);
     std::vector<Match> matches(directions.size());
     tbb::parallel_for(std::size_t{0}, directions.size(), [&](std::size_t k) {
         const ViewFrame frame = view_frame(directions[k]);

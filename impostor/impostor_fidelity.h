@@ -21,9 +21,10 @@ struct ImpostorFidelity {
     std::vector<double> between;  // each in-between direction's IoU, in between_directions() order
 };
 
-// The 8 directions between the views of an 8 x 8 layout: centroids of grid half-cells
-// (where the three views weigh alike), from the horizon to near the top, all around.
-std::vector<glm::vec3> between_directions();
+// The 8 directions between the views of an N x N layout: centroids of grid half-cells
+// (where the three views weigh alike), from the horizon to near the top, all around; the
+// same cells of the layout's grid whatever N, so layouts compare at like places.
+std::vector<glm::vec3> between_directions(int views = 8);
 
 ImpostorFidelity impostor_fidelity(std::span<const BakePart> parts, const ImpostorAtlas& atlas);
 

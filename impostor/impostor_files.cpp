@@ -80,10 +80,23 @@ std::string impostor_layout_json(const ImpostorAtlas* atlas, const BillboardText
              "g = (encode(direction) * 0.5 + 0.5) * (views - 1), cell = clamp(floor(g), 0, "
              "views - 2), f = g - cell; f.x + f.y <= 1: views cell, cell + (1, 0), cell + (0, "
              "1) weighted 1 - f.x - f.y, f.x, f.y; else cell + (1, 1), cell + (1, 0), cell + "
-             "(0, 1) weighted f.x + f.y - 1, 1 - f.y, 1 - f.x; the blended alpha times "
-             "coverage_gain (at most 1) is alpha-tested at 0.5"},
+             "(0, 1) weighted f.x + f.y - 1, 1 - f.y, 1 - f.x; each view is read (bilinear) "
+             "where the camera's ray first meets its surface, a view the ray misses counting as "
+             "transparent; the blended alpha times coverage_gain (at most 1) is alpha-tested at "
+             "0.5, colour is averaged over the views the ray meets"},
+            {"relief",
+             "the ray is tested at relief_steps + 1 points evenly from radius toward the camera "
+             "to radius away from it, measured from the quad; a point is on the view's surface "
+             "where its texel (unfiltered) has alpha > 0 and the point's distance toward the "
+             "view from the plane through the center lies from (surface_texels * 2 radius / tile "
+             "+ 2 radius / relief_steps) below the texel's depth to that depth; the first such "
+             "step is refined by relief_refinements halvings between it and the step before"},
+            {"relief_steps", kImpostorReliefSteps},
+            {"relief_refinements", kImpostorReliefRefinements},
+            {"surface_texels", kImpostorSurfaceTexels},
             {"coverage_gain", kImpostorCoverageGain},
             {"front_view", {front.x, front.y}},
+            {"layout_choice", atlas->layout.empty() ? std::string("as asked") : atlas->layout},
             {"albedo",
              {{"image", images.atlas_albedo},
               {"color", "sRGB"},

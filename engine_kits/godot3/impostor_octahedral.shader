@@ -32,30 +32,69 @@ void sylva_frame(vec3 direction, out vec3 right, out vec3 up) {
 	up = cross(direction, right);
 }
 
-// One view's albedo where the ray through `point` meets its surface; its normal in `n`.
+const int SYLVA_RELIEF_STEPS = 64;       // the layout's relief_steps
+const int SYLVA_RELIEF_REFINEMENTS = 3;  // relief_refinements
+const float SYLVA_SURFACE_TEXELS = 5.0;  // surface_texels
+
+// Whether `p` (from the centre) lies on the view's surface: its texel (read unfiltered, at
+// its centre) is covered, and p lies from `band` behind the texel's depth to that depth.
+bool sylva_on_surface(vec2 view, vec3 p, vec3 direction, vec3 right, vec3 up, float tile_px,
+		float band, out vec2 uv) {
+	vec2 tile = vec2(dot(p, right), -dot(p, up)) / impostor_radius * 0.5 + 0.5;
+	uv = (view + tile) / impostor_views;
+	if (tile.x < 0.0 || tile.y < 0.0 || tile.x >= 1.0 || tile.y >= 1.0) {
+		return false;
+	}
+	vec2 texel = (view * tile_px + floor(tile * tile_px) + 0.5) / (impostor_views * tile_px);
+	if (textureLod(impostor_albedo, texel, 0.0).a <= 0.0) {
+		return false;
+	}
+	float depth = (textureLod(impostor_normal, texel, 0.0).a - 0.5) * 2.0 * impostor_radius;
+	float along = dot(p, direction);
+	return along <= depth && along >= depth - band;
+}
+
+// One view's albedo where the ray through `point` first meets its surface (a march through
+// the view's depth, then halvings); its normal in `n`. Zero where the ray misses it.
 vec4 sylva_view(vec2 view, vec3 point, vec3 ray, out vec3 n) {
 	vec3 direction = sylva_decode(view / (impostor_views - 1.0) * 2.0 - 1.0);
 	vec3 right;
 	vec3 up;
 	sylva_frame(direction, right, up);
 	vec3 from_center = point - impostor_center;
-	float facing = min(dot(ray, direction), -1e-4);
-	float depth = 0.0;
-	vec2 uv = vec2(0.0);
-	vec4 nd = vec4(0.5);
-	for (int step = 0; step <= 2; step++) {
-		vec3 hit = from_center + ray * ((depth - dot(from_center, direction)) / facing);
-		vec2 tile = vec2(dot(hit, right), -dot(hit, up)) / impostor_radius * 0.5 + 0.5;
-		if (tile.x < 0.0 || tile.y < 0.0 || tile.x > 1.0 || tile.y > 1.0) {
-			n = vec3(0.0);
-			return vec4(0.0);
-		}
-		uv = (view + tile) / impostor_views;
-		nd = texture(impostor_normal, uv);
-		depth = (nd.a - 0.5) * 2.0 * impostor_radius;
+	// The hit is read at the mip level of the quad's own footprint: the march branches.
+	vec2 on_plane = (view + vec2(dot(from_center, right), -dot(from_center, up)) /
+			impostor_radius * 0.5 + 0.5) / impostor_views;
+	vec2 du = dFdx(on_plane);
+	vec2 dv = dFdy(on_plane);
+	n = vec3(0.0);
+	if (dot(ray, direction) >= -1e-4) {
+		return vec4(0.0);
 	}
-	n = nd.rgb * 2.0 - 1.0;
-	return texture(impostor_albedo, uv);
+	float tile_px = float(textureSize(impostor_normal, 0).x) / impostor_views;
+	float step_length = 2.0 * impostor_radius / float(SYLVA_RELIEF_STEPS);
+	float band = SYLVA_SURFACE_TEXELS * 2.0 * impostor_radius / tile_px + step_length;
+	vec2 uv;
+	for (int i = 0; i <= SYLVA_RELIEF_STEPS; i++) {
+		float s = impostor_radius - step_length * float(i);
+		if (!sylva_on_surface(view, from_center - ray * s, direction, right, up, tile_px, band, uv)) {
+			continue;
+		}
+		float front = s + step_length;
+		float back = s;
+		for (int k = 0; i > 0 && k < SYLVA_RELIEF_REFINEMENTS; k++) {
+			float middle = 0.5 * (front + back);
+			if (sylva_on_surface(view, from_center - ray * middle, direction, right, up, tile_px, band, uv)) {
+				back = middle;
+			} else {
+				front = middle;
+			}
+		}
+		sylva_on_surface(view, from_center - ray * back, direction, right, up, tile_px, band, uv);
+		n = textureGrad(impostor_normal, uv, du, dv).rgb * 2.0 - 1.0;
+		return textureGrad(impostor_albedo, uv, du, dv);
+	}
+	return vec4(0.0);
 }
 
 void vertex() {
@@ -82,9 +121,13 @@ void fragment() {
 	vec3 na;
 	vec3 nb;
 	vec3 nc;
-	vec4 albedo = w.x * sylva_view(a, quad_point, ray, na) +
-	              w.y * sylva_view(cell + vec2(1.0, 0.0), quad_point, ray, nb) +
-	              w.z * sylva_view(cell + vec2(0.0, 1.0), quad_point, ray, nc);
+	vec4 ta = sylva_view(a, quad_point, ray, na);
+	vec4 tb = sylva_view(cell + vec2(1.0, 0.0), quad_point, ray, nb);
+	vec4 tc = sylva_view(cell + vec2(0.0, 1.0), quad_point, ray, nc);
+	vec4 albedo = w.x * ta + w.y * tb + w.z * tc;
+	// A view the ray misses adds no coverage; colour averages the views it hits.
+	vec3 hits = w * vec3(ta.a > 0.0 ? 1.0 : 0.0, tb.a > 0.0 ? 1.0 : 0.0, tc.a > 0.0 ? 1.0 : 0.0);
+	albedo.rgb /= max(hits.x + hits.y + hits.z, 1e-6);
 	vec3 n = w.x * na + w.y * nb + w.z * nc;
 	ALBEDO = albedo.rgb;
 	ALPHA = min(albedo.a * 1.4, 1.0);  // the layout's coverage_gain, as the reference

@@ -54,6 +54,15 @@ float weights[3] = {lower ? 1.0 - f.x - f.y : f.x + f.y - 1.0, lower ? f.x : 1.0
 float3 ray = normalize(p - cam);
 float4 color = 0;
 float3 n = 0;
+float hitWeight = 0.0;
+float atlasWidth, atlasHeight;
+Normal.GetDimensions(atlasWidth, atlasHeight);
+float tilePx = atlasWidth / Views;
+// The march through each view's depth (the layout's relief_steps 64, relief_refinements 3,
+// surface_texels 5): a point is on the surface where its texel (read unfiltered, at its
+// centre) is covered and the point lies from `band` behind the texel's depth to that depth.
+float stepLength = 2.0 * Radius / 64.0;
+float band = 5.0 * 2.0 * Radius / tilePx + stepLength;
 for (int k = 0; k < 3; ++k) {
     float2 s = views[k] / last * 2.0 - 1.0;
     float2 pp = float2(s.x + s.y, s.x - s.y) * 0.5;
@@ -62,24 +71,54 @@ for (int k = 0; k < 3; ++k) {
     float3 right = dot(rr, rr) > 1e-12 ? normalize(rr) : float3(1, 0, 0);
     float3 up = cross(d, right);
     float3 fromCenter = p - Center;
-    float facing = min(dot(ray, d), -1e-4);
-    float depth = 0.0;
+    // The hit is read at the mip level of the quad's own footprint: the march branches.
+    float2 onPlane = (views[k] + float2(dot(fromCenter, right), -dot(fromCenter, up)) / Radius *
+                      0.5 + 0.5) / Views;
+    float2 du = ddx(onPlane);
+    float2 dv = ddy(onPlane);
+    if (weights[k] <= 0.0 || dot(ray, d) >= -1e-4) continue;
+    // tries 0..64: the march, from Radius toward the camera to Radius behind the centre;
+    // then 3 halvings between the last miss and the first hit; then the hit itself.
+    float front = Radius, back = Radius, t = Radius;
+    bool found = false;
+    int halvings = 0;
     float2 uv = 0;
-    float4 nd = 0.5;
-    bool inside = true;
-    for (int step = 0; step <= 2; ++step) {
-        float3 hit = fromCenter + ray * ((depth - dot(fromCenter, d)) / facing);
-        float2 tile = float2(dot(hit, right), -dot(hit, up)) / Radius * 0.5 + 0.5;
-        inside = inside && all(tile >= 0.0) && all(tile <= 1.0);
-        uv = (views[k] + saturate(tile)) / Views;  // Unreal: v = 0 at the image's top row
-        nd = Texture2DSampleLevel(Normal, NormalSampler, uv, 0);
-        depth = (nd.a - 0.5) * 2.0 * Radius;
+    [loop] for (int i = 0; i <= 64 + 4; ++i) {
+        if (!found) t = Radius - stepLength * i;
+        else if (halvings < 3) t = 0.5 * (front + back);
+        else t = back;
+        float3 q = fromCenter - ray * t;
+        float2 tile = float2(dot(q, right), -dot(q, up)) / Radius * 0.5 + 0.5;
+        uv = (views[k] + tile) / Views;  // Unreal: v = 0 at the image's top row
+        bool onSurface = false;
+        if (all(tile >= 0.0) && all(tile < 1.0)) {
+            float2 texel = (views[k] * tilePx + floor(tile * tilePx) + 0.5) / (Views * tilePx);
+            float depth = (Texture2DSampleLevel(Normal, NormalSampler, texel, 0).a - 0.5) * 2.0 * Radius;
+            float along = dot(q, d);
+            onSurface = Texture2DSampleLevel(Albedo, AlbedoSampler, texel, 0).a > 0.0 &&
+                        along <= depth && along >= depth - band;
+        }
+        if (found && halvings >= 3) break;  // uv is the hit's
+        if (!found) {
+            if (i > 64) break;  // missed
+            if (!onSurface) continue;
+            found = true;
+            front = t + stepLength;
+            back = t;
+            halvings = i > 0 ? 0 : 3;
+        } else {
+            if (onSurface) back = t; else front = t;
+            ++halvings;
+        }
     }
-    if (inside) {
-        color += weights[k] * Texture2DSample(Albedo, AlbedoSampler, uv);
-        n += weights[k] * (nd.rgb * 2.0 - 1.0);
+    if (found && halvings >= 3) {
+        color += weights[k] * Albedo.SampleGrad(AlbedoSampler, uv, du, dv);
+        n += weights[k] * (Normal.SampleGrad(NormalSampler, uv, du, dv).rgb * 2.0 - 1.0);
+        hitWeight += weights[k];
     }
 }
+// A view the ray misses adds no coverage; colour averages the views it hits.
+color.rgb /= max(hitWeight, 1e-6);
 n = dot(n, n) > 0.0 ? normalize(n) : float3(0, 1, 0);
 NormalLocal = float3(n.x, n.z, n.y);  // back to Unreal's axes (a direction: no scale)
 color.a = min(color.a * 1.4, 1.0);  // the layout's coverage_gain, as the reference

@@ -22,6 +22,7 @@
 #include "impostor/hemi_octahedral.h"
 #include "impostor/impostor_bake.h"
 #include "impostor/impostor_fidelity.h"
+#include "impostor/impostor_layout.h"
 #include "impostor/impostor_mesh.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -218,12 +219,15 @@ TEST(ImpostorBake, TheSameTreeBakesTheSameBytesOnAnyNumberOfThreads) {
     EXPECT_EQ(c.normal.pixels, d.normal.pixels);
 }
 
-void check_fidelity(const std::string& name) {
+// `size` 1024 (8 x 8 views, tiles of 128) or 0 (the layout chosen per tree).
+void check_fidelity(const std::string& name, int size = 1024) {
     const GameTree& tree = game_tree(name);
-    const ImpostorSettings settings;  // 8 x 8 views, 1024 px: tiles of 128
-    const ImpostorFidelity f = impostor_fidelity(tree.parts, bake_impostor(tree.parts, settings));
+    ImpostorSettings settings;
+    settings.size = size;
+    const ImpostorAtlas atlas = bake_impostor(tree.parts, settings);
+    const ImpostorFidelity f = impostor_fidelity(tree.parts, atlas);
     if (std::getenv("SYLVA_IMPOSTOR_VERBOSE")) {
-        const std::vector<glm::vec3> directions = between_directions();
+        const std::vector<glm::vec3> directions = between_directions(atlas.views);
         for (std::size_t k = 0; k < directions.size(); ++k)
             std::printf("  between (%.2f %.2f %.2f): IoU %.3f\n", directions[k].x, directions[k].y,
                         directions[k].z, f.between[k]);
@@ -244,9 +248,11 @@ TEST(ImpostorFidelity, Spruce) {
 TEST(ImpostorFidelity, Willow) {
     check_fidelity("willow");
 }
-// Palm's fronds are a texel thin in a 128-pixel tile: the three views, lined up with one
-// depth per texel, disagree by about a texel there, and without the coverage gain
-// (kImpostorCoverageGain) the blend drops them (0.76 between views). It does not reach 0.85.
+TEST(ImpostorFidelity, Honda) {
+    check_fidelity("honda");
+}
+// Palm's fronds are a texel thin in a 128-pixel tile, where the tree's own silhouette moved
+// by a quarter of a pixel scores 0.84 between views: it does not reach 0.85.
 TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
     const GameTree& tree = game_tree("palm");
     const ImpostorFidelity f =
@@ -255,11 +261,65 @@ TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
     EXPECT_GE(f.between_iou, 0.80);
     EXPECT_LE(f.color, 10.0);
 }
-// Every template, with the figures printed (--gtest_also_run_disabled_tests): feathery
-// crowns (bush, honda, palm, seed_spruce, flowering_shrub) have parts a pixel thin in a
-// 128-pixel tile, whose silhouette moved by half a pixel already scores below 0.85.
+// Sparse crowns of thin parts at many depths: sampled on one plane per view (or stepped
+// toward the depth read there), a ray that passes beside a branch in one view lands on
+// another part, and the branches ghost (seed_spruce scored 0.68 between views) and the
+// flowers take the leaves' colour (flowering_shrub 10.8/255). The march through each view's
+// depth finds the part the ray meets. Neither reaches IoU 0.85 between views: their own
+// silhouettes moved by a quarter of a pixel score 0.87 and 0.65.
+TEST(ImpostorFidelity, ThinCrownsLineUpAtEveryDepth) {
+    const GameTree& spruce = game_tree("seed_spruce");
+    const ImpostorFidelity s =
+        impostor_fidelity(spruce.parts, bake_impostor(spruce.parts, ImpostorSettings{}));
+    EXPECT_GE(s.capture_iou, 0.90);
+    EXPECT_GE(s.between_iou, 0.80);
+    EXPECT_LE(s.color, 10.0);
+    const GameTree& shrub = game_tree("flowering_shrub");
+    const ImpostorFidelity f =
+        impostor_fidelity(shrub.parts, bake_impostor(shrub.parts, ImpostorSettings{}));
+    EXPECT_GE(f.capture_iou, 0.90);
+    EXPECT_LE(f.color, 10.0);
+}
+// Every template, with the figures printed (--gtest_also_run_disabled_tests), at the
+// layout chosen per tree: flowering_shrub's sprays stay under 0.85 between views even so.
 TEST(ImpostorFidelity, DISABLED_EveryTemplate) {
-    for (const TreeTemplate* t : builtin_templates()) check_fidelity(t->name);
+    for (const TreeTemplate* t : builtin_templates()) check_fidelity(t->name, 0);
+}
+
+// The thin share tells feathery crowns from solid ones: the trees whose parts are a pixel
+// or two wide in 128-pixel tiles (and lose a sixth of their area between views there) from
+// those that keep 0.85 in the default layout.
+TEST(ImpostorLayout, ThinShareSeparatesFeatheryCrowns) {
+    const ImpostorSettings settings;  // 8 x 8 views at 1024 px
+    for (const char* name : {"oak", "honda"})
+        EXPECT_LT(thin_share(bake_impostor(game_tree(name).parts, settings)), kThinShareLimit)
+            << name;
+    for (const char* name : {"bush", "seed_spruce"})
+        EXPECT_GE(thin_share(bake_impostor(game_tree(name).parts, settings)), kThinShareLimit)
+            << name;
+}
+
+// An automatic layout keeps 8 x 8 views at 1024 px for a solid crown and gives a thin one
+// 12 x 12 views at 2048 px, where it lines up between views to 0.85 (0.82 at the default).
+TEST(ImpostorLayout, AutomaticLayoutGivesThinCrownsMoreViews) {
+    ImpostorSettings settings;
+    settings.size = 0;
+    const ImpostorAtlas oak = bake_impostor(game_tree("oak").parts, settings);
+    EXPECT_EQ(oak.views, 8);
+    EXPECT_EQ(oak.tile, 128);
+    EXPECT_NE(oak.layout.find("8 x 8 views at 1024 px"), std::string::npos) << oak.layout;
+    const GameTree& spruce = game_tree("seed_spruce");
+    const ImpostorAtlas thin = bake_impostor(spruce.parts, settings);
+    EXPECT_EQ(thin.views, kThinViews);
+    EXPECT_EQ(thin.tile, kThinSize / kThinViews);
+    EXPECT_GE(thin.thin, kThinShareLimit);
+    const ImpostorFidelity f = impostor_fidelity(spruce.parts, thin);
+    EXPECT_GE(f.capture_iou, 0.90);
+    EXPECT_GE(f.between_iou, 0.85);
+    EXPECT_LE(f.color, 10.0);
+    // An explicit size wins.
+    settings.size = 1024;
+    EXPECT_EQ(bake_impostor(spruce.parts, settings).views, 8);
 }
 
 }  // namespace

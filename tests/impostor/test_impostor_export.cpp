@@ -12,6 +12,7 @@
 
 #include "core/color_variation.h"
 #include "export/export_tree.h"
+#include "impostor/atlas_sampler.h"
 #include "tests/helpers.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -92,6 +93,10 @@ TEST_F(ImpostorExport, AGlbCarriesBothFarLevelsWithEmbeddedTextures) {
     const nlohmann::json layout = nlohmann::json::parse(read_file(dir_ / "tree_impostor.json"));
     EXPECT_EQ(layout["format"], "sylva-impostor");
     EXPECT_EQ(layout["octahedral"]["normal"]["image"], "impostor_normal");
+    // The numbers the shaders' march through each view's depth uses.
+    EXPECT_EQ(layout["octahedral"]["relief_steps"], kImpostorReliefSteps);
+    EXPECT_EQ(layout["octahedral"]["relief_refinements"], kImpostorReliefRefinements);
+    EXPECT_EQ(layout["octahedral"]["surface_texels"], kImpostorSurfaceTexels);
     EXPECT_EQ(layout["billboard"]["quads"], 3);
 }
 
