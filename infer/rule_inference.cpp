@@ -315,6 +315,8 @@ struct Module {
         return n < bare ? n : bare + (n - bare) / period;
     }
     double head_ratio = 1.0;  // the first branched segment's length over the axis's first
+    // Per axis: its segment length at the end of the bare stretch, from the fitted line.
+    std::vector<std::optional<double>> start_length;
     std::vector<std::optional<double>> axis_phase;  // per axis: the phase of its node 0
 };
 
@@ -460,12 +462,41 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         for (const auto& [gap, n] : gaps)
             if (gap > 1 && n * 10 >= gap_count * 8) mod.period = gap;
     }
+    // The length ratio by least squares over the log lengths along every axis after its
+    // bare stretch (one slope, an intercept per axis), and each axis's length at the end of
+    // its bare stretch from its line: every segment counts, where the ratios of neighbours
+    // would rest on an axis's first and last segment alone, and a length measured with
+    // noise would scale all that follows it.
+    double sxx = 0.0, sxy = 0.0;
+    std::vector<std::pair<double, double>> means(axes.size(), {0.0, 0.0});  // (j, log length)
+    std::vector<int> counted(axes.size(), 0);
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        const Axis& axis = g.axes[seg(axes[k])];
+        double sj = 0.0, sy = 0.0;
+        int n = 0;
+        for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size(); ++j) {
+            sj += static_cast<double>(j);
+            sy += std::log(m.length[seg(axis.segments[j])]);
+            ++n;
+        }
+        if (n == 0) continue;
+        means[k] = {sj / n, sy / n};
+        counted[k] = n;
+        for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size(); ++j) {
+            const double dx = static_cast<double>(j) - means[k].first;
+            sxx += dx * dx;
+            sxy += dx * (std::log(m.length[seg(axis.segments[j])]) - means[k].second);
+        }
+    }
+    const double log_ratio = sxx > 0.0 ? sxy / sxx : 0.0;
+    mod.start_length.assign(axes.size(), std::nullopt);
     Ratio head_ratio;
-    for (int a : axes) {
-        const Axis& axis = g.axes[seg(a)];
-        if (mod.bare > 0 && static_cast<int>(axis.segments.size()) > mod.bare)
-            head_ratio.add(m.length[seg(axis.segments[static_cast<std::size_t>(mod.bare)])],
-                           m.length[seg(axis.segments[0])]);
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        if (counted[k] == 0) continue;
+        const Axis& axis = g.axes[seg(axes[k])];
+        const double at_bare = std::exp(means[k].second + log_ratio * (mod.bare - means[k].first));
+        mod.start_length[k] = at_bare;
+        if (mod.bare > 0) head_ratio.add(at_bare, m.length[seg(axis.segments[0])]);
     }
     mod.head_ratio = head_ratio.mean();
 
@@ -508,7 +539,7 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
     }
     fit_pattern(mod.interior, interior, m);
     fit_pattern(mod.tip, tips, m);
-    mod.length_ratio = length_ratio.mean();
+    mod.length_ratio = sxx > 0.0 ? std::exp(log_ratio) : length_ratio.mean();
     mod.width_ratio = width_ratio.mean();
 
     // Bends: absolute first, to find a divergence where no two branched nodes follow.
@@ -1085,11 +1116,16 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         const std::size_t s =
             static_cast<std::size_t>(axis.segments[static_cast<std::size_t>(skip)]);
         double phase = 0.0;
-        for (std::size_t k = 0; k < mod.axes.size(); ++k)
-            if (mod.axes[k] == axis_index && mod.axis_phase[k]) phase = *mod.axis_phase[k];
+        // The first length from the axis's fitted line where it has no bare stretch.
+        double length = m.length[s];
+        for (std::size_t k = 0; k < mod.axes.size(); ++k) {
+            if (mod.axes[k] != axis_index) continue;
+            if (mod.axis_phase[k]) phase = *mod.axis_phase[k];
+            if (skip == 0 && mod.bare == 0 && mod.start_length[k]) length = *mod.start_length[k];
+        }
         phase += mod.advance * static_cast<double>(skip);
         return "(" + std::to_string(axis.segments.size() - static_cast<std::size_t>(skip)) + "," +
-               std::to_string(m.budget[s]) + "," + num(m.length[s]) + "," + num(m.width[s]) + "," +
+               std::to_string(m.budget[s]) + "," + num(length) + "," + num(m.width[s]) + "," +
                num(wrap(phase)) + ")";
     };
     auto turn_text = [&](const Turn& t) {
