@@ -543,13 +543,15 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
     mod.width_ratio = width_ratio.mean();
 
     // Bends: absolute first, to find a divergence where no two branched nodes follow.
-    auto bends_of = [&](const std::function<double(int, std::size_t)>& reference) {
+    // `reference` gives the azimuth a bend is measured from, none to leave the bend out.
+    auto bends_of = [&](const std::function<std::optional<double>(int, std::size_t)>& reference) {
         TurnMean t;
         for (int a : axes) {
             const Axis& axis = g.axes[seg(a)];
             for (std::size_t j = static_cast<std::size_t>(mod.bare); j + 1 < axis.segments.size();
                  ++j)
-                t.add(m.turn[seg(axis.segments[j + 1])], reference(a, j));
+                if (const std::optional<double> r = reference(a, j))
+                    t.add(m.turn[seg(axis.segments[j + 1])], *r);
         }
         return t;
     };
@@ -618,7 +620,11 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         }
     }
     mod.tip_offset = tip_offset.n ? wrap(tip_offset.mean()) : 0.0;
-    // Axes without laterals take their phase from their bends.
+    // Axes without laterals take their phase from their bends: from the first, which then
+    // does not count among the bends measured from the phase, nor do the two after it, which
+    // share a node with it (measured with noise, they would agree with it, or turn back
+    // from it, and make a bend of noise).
+    std::vector<bool> phase_from_bend(axes.size(), false);
     {
         std::vector<std::size_t> unphased;
         for (std::size_t k = 0; k < axes.size(); ++k)
@@ -628,15 +634,20 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             const Axis& axis = g.axes[seg(axes[k])];
             if (!all || axis.segments.size() < 2) continue;
             const Turn& t = m.turn[seg(axis.segments[1])];
-            if (t.pitch > 0.05) mod.axis_phase[k] = wrap(t.az);
+            if (t.pitch > 0.05) {
+                mod.axis_phase[k] = wrap(t.az);
+                phase_from_bend[k] = true;
+            }
         }
     }
 
-    const TurnMean absolute = bends_of([](int, std::size_t) { return 0.0; });
+    const TurnMean absolute = bends_of([](int, std::size_t) { return std::optional<double>(0.0); });
     std::map<int, std::size_t> index_of;
     for (std::size_t k = 0; k < axes.size(); ++k) index_of[axes[k]] = k;
-    const TurnMean relative = bends_of([&](int a, std::size_t j) {
-        const std::optional<double>& p = mod.axis_phase[index_of[a]];
+    const TurnMean relative = bends_of([&](int a, std::size_t j) -> std::optional<double> {
+        const std::size_t k = index_of[a];
+        if (phase_from_bend[k] && j < 3) return std::nullopt;
+        const std::optional<double>& p = mod.axis_phase[k];
         return p ? *p + mod.advance * mod.phase_steps(j) : 0.0;
     });
     const bool any_phase =

@@ -204,6 +204,19 @@ TEST(InferRules, JitteredNodesDoNotScaleTheTree) {
     EXPECT_LE(r.hausdorff, 0.01 * r.example.height);
 }
 
+// Straight twigs measured with noise get a straight rule: the fir's third module (its
+// twigs, without branches of their own) draws no turn between segments.
+TEST(InferRules, JitteredStraightTwigsGetNoBend) {
+    const TreeTemplate tree = load_template("fir");
+    const ExampleTree example =
+        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
+    const std::string grammar = infer_template(example).tree.grammar;
+    const std::size_t at = grammar.find("\nC(");
+    ASSERT_NE(at, std::string::npos);
+    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    EXPECT_EQ(rule.find("&("), std::string::npos) << rule;
+}
+
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
     const ExampleTree example = example_of("cypress");
     const InferredTemplate inferred = infer_template(example);
