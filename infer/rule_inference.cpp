@@ -122,14 +122,27 @@ struct Circular {
     double strength() const { return n ? std::hypot(s, c) / n : 0.0; }
 };
 struct Mean {
-    double sum = 0.0;
+    double sum = 0.0, squares = 0.0;
     int n = 0;
     void add(double v) {
         sum += v;
+        squares += v * v;
         ++n;
     }
     double mean(double fallback = 0.0) const { return n ? sum / n : fallback; }
+    // The squared standard error of the mean (0 for fewer than two values).
+    double error2() const {
+        return n > 1 ? std::max(0.0, (squares - sum * sum / n) / (n - 1)) / n : 0.0;
+    }
 };
+
+// Whether two means differ by no more than three standard errors of their difference:
+// then a rule states one value for both (slots of a whorl at one angle), where the
+// measured difference is noise that would turn every branch of one slot.
+bool same_within_noise(const Mean& a, const Mean& b) {
+    const double error = std::sqrt(a.error2() + b.error2());
+    return std::abs(a.mean() - b.mean()) <= 3.0 * error;
+}
 struct Ratio {  // geometric mean of positive ratios
     Mean log;
     void add(double num, double den) {
@@ -366,6 +379,9 @@ void fit_pattern(NodePattern& pattern, const std::vector<NodeSample>& nodes, con
         slot.offset = i == 0 ? 0.0 : wrap(offsets[i].mean());
         slot.pitch = pitches[i].mean();
         slot.length = lengths[i].mean();
+        if (i > 0 && same_within_noise(pitches[i], pitches[0])) slot.pitch = pattern.slots[0].pitch;
+        if (i > 0 && same_within_noise(lengths[i].log, lengths[0].log))
+            slot.length = pattern.slots[0].length;
         slot.width = widths[i].mean();
         double more = 0.0;
         for (auto& [k, w] : pattern.ks)

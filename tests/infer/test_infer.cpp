@@ -217,6 +217,26 @@ TEST(InferRules, JitteredStraightTwigsGetNoBend) {
     EXPECT_EQ(rule.find("&("), std::string::npos) << rule;
 }
 
+// The five branches of a whorl measured with noise keep one branch angle and one length:
+// the fir's trunk module states no angle or length per slot.
+TEST(InferRules, JitteredWhorlKeepsOneAngleAndLength) {
+    const TreeTemplate tree = load_template("fir");
+    const ExampleTree example =
+        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
+    const std::string grammar = infer_template(example).tree.grammar;
+    const std::size_t at = grammar.find("\nA(");
+    ASSERT_NE(at, std::string::npos);
+    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    std::size_t whorl = 0;
+    for (std::size_t i = rule.find("&(ba0)"); i != std::string::npos;
+         i = rule.find("&(ba0)", i + 1))
+        ++whorl;
+    EXPECT_EQ(whorl, 5u) << rule;
+    for (std::size_t i = rule.find("l*cl0*"); i != std::string::npos;
+         i = rule.find("l*cl0*", i + 1))
+        EXPECT_EQ(rule.substr(i, 8), "l*cl0*1,") << rule;  // the first slot's length
+}
+
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
     const ExampleTree example = example_of("cypress");
     const InferredTemplate inferred = infer_template(example);
