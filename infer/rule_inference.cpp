@@ -636,6 +636,52 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         }
     }
     mod.tip_offset = tip_offset.n ? wrap(tip_offset.mean()) : 0.0;
+    // The phases and the divergence once more by least squares over every branched node
+    // (one divergence, a phase per axis): the phase from one node and the divergence from
+    // differences of neighbours (which add up to the axis's first and last node) carry the
+    // noise of those few. A node's azimuth is the mean over its laterals less their slots'
+    // offsets. On an example without noise this changes nothing.
+    if (!mod.has_tip && advance.n && !mod.interior.slots.empty()) {
+        struct Sample {
+            double x, r;
+        };
+        std::vector<std::vector<Sample>> samples(axes.size());
+        double pxx = 0.0, pxy = 0.0;
+        for (std::size_t k = 0; k < axes.size(); ++k) {
+            if (!mod.axis_phase[k]) continue;
+            const Axis& axis = g.axes[seg(axes[k])];
+            for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size();
+                 ++j) {
+                if ((static_cast<int>(j) - mod.bare) % mod.period != 0) continue;
+                const std::vector<int> lat = laterals_of(g, axis.segments[j]);
+                if (lat.empty()) continue;
+                Circular node;
+                for (std::size_t i = 0; i < lat.size() && i < mod.interior.slots.size(); ++i)
+                    node.add(m.turn[seg(lat[i])].az - mod.interior.slots[i].offset);
+                const double x = mod.phase_steps(j);
+                samples[k].push_back({x, wrap(node.mean() - *mod.axis_phase[k] - mod.advance * x)});
+            }
+            if (samples[k].empty()) continue;
+            double mx = 0.0, mr = 0.0;
+            for (const Sample& q : samples[k]) mx += q.x, mr += q.r;
+            mx /= static_cast<double>(samples[k].size());
+            mr /= static_cast<double>(samples[k].size());
+            for (const Sample& q : samples[k]) {
+                pxx += (q.x - mx) * (q.x - mx);
+                pxy += (q.x - mx) * (q.r - mr);
+            }
+        }
+        const double slope = pxx > 0.0 ? pxy / pxx : 0.0;
+        for (std::size_t k = 0; k < axes.size(); ++k) {
+            if (samples[k].empty()) continue;
+            double mx = 0.0, mr = 0.0;
+            for (const Sample& q : samples[k]) mx += q.x, mr += q.r;
+            mx /= static_cast<double>(samples[k].size());
+            mr /= static_cast<double>(samples[k].size());
+            mod.axis_phase[k] = wrap(*mod.axis_phase[k] + mr - slope * mx);
+        }
+        mod.advance = wrap(mod.advance + slope);
+    }
     // Axes without laterals take their phase from their bends: from the first, which then
     // does not count among the bends measured from the phase, nor do the two after it, which
     // share a node with it (measured with noise, they would agree with it, or turn back
