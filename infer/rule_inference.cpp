@@ -682,10 +682,10 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         }
         mod.advance = wrap(mod.advance + slope);
     }
-    // Axes without laterals take their phase from their bends: from the first, which then
-    // does not count among the bends measured from the phase, nor do the two after it, which
-    // share a node with it (measured with noise, they would agree with it, or turn back
-    // from it, and make a bend of noise).
+    // Axes without laterals take their phase from their bends (when the first is a bend).
+    // The first three bends then do not count among the bends measured from the phase:
+    // measured with noise, they share nodes with the first and would agree with it, or
+    // turn back from it, and make a bend of noise.
     std::vector<bool> phase_from_bend(axes.size(), false);
     {
         std::vector<std::size_t> unphased;
@@ -696,10 +696,16 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             const Axis& axis = g.axes[seg(axes[k])];
             if (!all || axis.segments.size() < 2) continue;
             const Turn& t = m.turn[seg(axis.segments[1])];
-            if (t.pitch > 0.05) {
-                mod.axis_phase[k] = wrap(t.az);
-                phase_from_bend[k] = true;
+            if (t.pitch <= 0.05) continue;
+            // Every bend says where node 0's phase is (its azimuth less the divergence up to
+            // it); their mean, weighted by the bends' size, carries less noise than one.
+            Circular phase;
+            for (std::size_t j = 0; j + 1 < axis.segments.size(); ++j) {
+                const Turn& b = m.turn[seg(axis.segments[j + 1])];
+                if (b.pitch > 0.05) phase.add(b.az - mod.advance * mod.phase_steps(j), b.pitch);
             }
+            mod.axis_phase[k] = wrap(phase.mean());
+            phase_from_bend[k] = true;
         }
     }
 

@@ -250,6 +250,23 @@ TEST(InferRules, JitteredWhorlsKeepTheirPhase) {
     }
 }
 
+// Fronds that curl one way, measured with noise, keep the way they curl: their phase is
+// the mean over all of their bends, not the first bend alone (whose azimuth, for a bend of
+// a few degrees, noise sets as much as the curl does). The palm's trunk is left exact, its
+// fronds jittered.
+TEST(InferRules, JitteredFrondsKeepTheirCurl) {
+    const TreeTemplate tree = load_template("palm");
+    const Skeleton exact = grow(tree);
+    Skeleton noisy = jittered(exact, 78);
+    for (std::size_t i = 0; i < noisy.segments.size(); ++i)
+        if (exact.segments[i].depth == 0) noisy.segments[i] = exact.segments[i];
+    for (Segment& seg : noisy.segments)
+        if (seg.parent >= 0) seg.a = noisy.segments[static_cast<std::size_t>(seg.parent)].b;
+    const ExampleTree example = parse_example_tree(skeleton_json(noisy, tree.params), "p.json");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(r.hausdorff, 0.02 * r.example.height);  // a frond turned the wrong way: 10 %
+}
+
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
     const ExampleTree example = example_of("cypress");
     const InferredTemplate inferred = infer_template(example);
