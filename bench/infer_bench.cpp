@@ -9,6 +9,10 @@
 // After the line per run, how many runs of each template meet every target (plain and
 // jittered), then how many runs meet each target. --summary leaves out the line per run; --dump
 // writes each run's inferred template to DIR/TEMPLATE-SET-KIND.toml, to read why a run misses.
+// --natural adds, per run, a line "seed+1": the same figures between the original and the
+// original grown from the next seed (no inference), i.e. how far the template's own
+// variation is from each target; where it misses, a stochastic grammar that matches the
+// template's statistics misses too.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +25,7 @@
 #include "core/random.h"
 #include "infer/fit_report.h"
 #include "infer/rule_inference.h"
+#include "infer/skeleton_figures.h"
 #include "tree/growth.h"
 #include "tree/template_library.h"
 #include "turtle/lsystem_params.h"
@@ -141,6 +146,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     const bool markdown = bench::take_flag(args, "--markdown");
     const bool summary = bench::take_flag(args, "--summary");
+    const bool natural_rows = bench::take_flag(args, "--natural");
     std::string dump;
     if (args.size() >= 2 && args[0] == "--dump") {
         dump = args[1];
@@ -181,6 +187,14 @@ int main(int argc, char** argv) {
             const bool exact_case = deterministic(tree);
             const double natural = skeleton_hausdorff(skeleton, grow(other));
             const ExampleTree example = as_example(skeleton, tree.params);
+            if (natural_rows) {
+                FitReport twin;
+                twin.example = skeleton_figures(skeleton);
+                twin.regrown = skeleton_figures(grow(other));
+                twin.hausdorff = natural;
+                Tally ignored;
+                row(base->name.c_str(), set, "seed+1", twin, natural, false, ignored, runs);
+            }
             const InferredTemplate inferred = infer_template(example);
             save(base->name, set, "plain", inferred);
             ++sets_run;

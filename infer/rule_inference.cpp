@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 #include "core/errors.h"
@@ -1385,6 +1386,58 @@ double misfit(const SkeletonFigures& want, const std::vector<glm::vec3>& want_po
            hausdorff_distance(want_points, sample_skeleton(grown, spacing)) / height;
 }
 
+// Tries the inferred template under a few more tropism elasticities (negative bends every
+// axis up, positive down, after each F) and keeps the one that regrows the example
+// closest, rewriting the template text's `tropism` line. Axes that curve with no repeated
+// pattern (a tree grown towards attraction points) straighten in the rules; a tropism
+// puts the curve back into the envelope's height and width. Throws Cancelled.
+void refine_tropism(InferredTemplate& best, double& best_misfit, const SkeletonFigures& want,
+                    const std::vector<glm::vec3>& want_points, float spacing,
+                    const CancelFlag& cancel) {
+    // A regrowth within a hundredth on the sum of figures already has its curves.
+    if (best_misfit < 0.01) return;
+    const double start = lsystem_params(best.tree.params).tropism;
+    double chosen = start;
+    // Only where the regrowth is not nearer the example's points anyway: a tropism trades
+    // the figures of the envelope against the place of every branch.
+    double nearest = 0.0;
+    try {
+        GrowthContext context;
+        context.cancel = cancel;
+        nearest =
+            hausdorff_distance(want_points, sample_skeleton(grow(best.tree, context), spacing));
+    } catch (const InputError&) {
+        return;
+    }
+    for (double step : {-0.2, -0.1, -0.05, -0.02, 0.02, 0.05, 0.1, 0.2}) {
+        throw_if_cancelled(cancel);
+        TreeTemplate tree = best.tree;
+        tree.params.blocks.edit<LSystemParams>().tropism = start + step;
+        GrowthContext context;
+        context.cancel = cancel;
+        try {
+            const Skeleton grown = grow(tree, context);
+            const double score = misfit(want, want_points, spacing, grown);
+            const double distance =
+                hausdorff_distance(want_points, sample_skeleton(grown, spacing));
+            if (score < best_misfit - 1e-9 && distance <= nearest) {
+                best_misfit = score;
+                nearest = distance;
+                chosen = start + step;
+            }
+        } catch (const InputError&) {
+            // Over a cost limit: this elasticity is not a candidate.
+        }
+    }
+    if (chosen == start) return;
+    best.tree.params.blocks.edit<LSystemParams>().tropism = chosen;
+    static const std::regex line(R"((^|\n)tropism = [^\n]*)");
+    best.text = std::regex_replace(best.text, line, "$1tropism = " + num(chosen),
+                                   std::regex_constants::format_first_only);
+    best.generalised.push_back("tropism " + num(chosen) +
+                               " bends the straight axes of the rules as the example's curve");
+}
+
 }  // namespace
 
 InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings) {
@@ -1424,6 +1477,7 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
             if (!used_tips) break;  // without tips it would be the same
         }
     }
+    refine_tropism(*best, best_misfit, want, want_points, spacing, settings.cancel);
     return std::move(*best);
 }
 

@@ -177,6 +177,20 @@ TEST(InferRules, StochasticTreesWithinTheTargets) {
     }
 }
 
+// A tree grown towards attraction points has curved axes and no repeated pattern: the rules
+// draw straight axes, and a fitted tropism bends them back into the example's envelope.
+TEST(InferRules, CurvedAxesKeepTheirEnvelope) {
+    const TreeTemplate tree = load_template("maple");
+    TreeTemplate other = tree;
+    other.params.seed = tree.params.seed + 1;
+    const Skeleton skeleton = grow(tree);
+    const double natural = skeleton_hausdorff(skeleton, grow(other));
+    const ExampleTree example = parse_example_tree(skeleton_json(skeleton, tree.params), "m.json");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.5);
+    EXPECT_LE(r.hausdorff, 4.0 * natural);
+}
+
 // Every node moved by up to 3 % of its segment's length, in a random direction.
 Skeleton jittered(Skeleton s, std::uint64_t seed) {
     Random random(seed);
