@@ -1234,10 +1234,25 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         result.generalised.push_back("the trunk (" + std::to_string(axis.segments.size()) +
                                      " segments) is written out in the axiom as measured");
     } else {
-        for (int r : g.roots) {
+        // Roots of a higher branch depth first, each in brackets; the first root of depth 0
+        // (or unknown) last and bare, so that its segments count at depth 0 as they do in
+        // the example (a bracket enters a branch).
+        std::vector<int> roots;
+        for (int r : g.roots)
+            if (skeleton.segments[static_cast<std::size_t>(r)].depth > 0) roots.push_back(r);
+        int bare_root = -1;
+        for (int r : g.roots)
+            if (skeleton.segments[static_cast<std::size_t>(r)].depth <= 0) {
+                if (bare_root < 0)
+                    bare_root = r;
+                else
+                    roots.push_back(r);
+            }
+        if (bare_root >= 0) roots.push_back(bare_root);
+        for (int r : roots) {
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
-            const bool bracket = skeleton.segments[ri].depth > 0 || g.roots.size() > 1;
+            const bool bracket = r != bare_root;
             // A straight axis (no bend; under tropism, one whose chord is within 2 degrees of
             // its first segment) starts along its chord, root to tip: the first segment
             // alone carries all of its noise, and a tilt at the root moves the whole tree

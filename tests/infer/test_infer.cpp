@@ -191,6 +191,15 @@ TEST(InferRules, CurvedAxesKeepTheirEnvelope) {
     EXPECT_LE(r.hausdorff, 4.0 * natural);
 }
 
+// A tree of two roots, the second a branch (depth 1) of the first: the regrown trunk keeps
+// branch depth 0 and the second root depth 1, as the example counts them.
+TEST(InferRules, SecondRootKeepsItsBranchDepth) {
+    const ExampleTree example = example_of("hedge");
+    const FitReport r = fit_report(example, infer_template(example));
+    ASSERT_GE(r.regrown.per_depth.size(), 2u);
+    EXPECT_EQ(r.regrown.per_depth[0], r.example.per_depth[0]);
+}
+
 // Every node moved by up to 3 % of its segment's length, in a random direction.
 Skeleton jittered(Skeleton s, std::uint64_t seed) {
     Random random(seed);
