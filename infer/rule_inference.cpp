@@ -320,6 +320,9 @@ struct Module {
     bool phase_known = false;
     // Nodes without branches at the base of every axis (a bare stretch), drawn by a head rule.
     int bare = 0;
+    // When positive, a segment is drawn only while its length exceeds this: axes that end
+    // where their segments grow too short rather than where a count runs out.
+    double stop = 0.0;
     // After it, laterals every `period` nodes (internodes of several segments, a whorl every
     // few); a rewrite draws the period's segments, branching at the first.
     int period = 1;
@@ -1047,7 +1050,7 @@ bool is_pipe(const Skeleton& skeleton, const TreeParams& params) {
 // says whether some module took one.
 InferredTemplate infer_with(const ExampleTree& example, const InferSettings& settings,
                             const BranchGraph& g, Convention convention, bool tips,
-                            bool* used_tips) {
+                            double length_stop, bool* used_tips) {
     const Skeleton& skeleton = example.skeleton;
     const TreeParams source = example.params.value_or(TreeParams{});
     const LSystemParams& source_lsystem = lsystem_params(source);
@@ -1123,6 +1126,33 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         for (int a : modules[k].axes)
             module_of_axis[static_cast<std::size_t>(a)] = static_cast<int>(k);
     fit_counts(modules, module_of_axis, g, m);
+    if (length_stop >= 0.0) {
+        // Each module draws while its segments stay longer than the given quantile of its
+        // lengths in the example (0 the shortest; a little above it where noise shortened
+        // a few), every lateral gets the whole budget and every node all its slots: a grammar
+        // whose rules stop on a length (`B(l) : l > 0.1`) ends each axis where its lengths
+        // fall, which no count from the budget follows.
+        for (Module& mod : modules) {
+            std::vector<double> lengths;
+            for (int a : mod.axes)
+                for (int s : g.axes[static_cast<std::size_t>(a)].segments)
+                    lengths.push_back(m.length[static_cast<std::size_t>(s)]);
+            if (lengths.empty()) continue;
+            std::sort(lengths.begin(), lengths.end());
+            const double shortest =
+                lengths[static_cast<std::size_t>(length_stop * (lengths.size() - 1))];
+            if (shortest <= 0.0) continue;
+            mod.stop = 0.98 * shortest;
+            for (NodePattern* pattern : {&mod.interior, &mod.tip}) {
+                for (Slot& slot : pattern->slots) slot.count = slot.height = FromBudget{};
+                if (pattern->ks.size() > 1) {
+                    int most = 0;
+                    for (const auto& kw : pattern->ks) most = std::max(most, kw.first);
+                    pattern->ks = {{most, 1.0}};
+                }
+            }
+        }
+    }
     *used_tips =
         std::any_of(modules.begin(), modules.end(), [](const Module& mod) { return mod.has_tip; });
 
@@ -1288,7 +1318,8 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
     for (std::size_t k = 0; k < modules.size(); ++k) {
         const Module& mod = modules[k];
         if (mod.axes.empty()) continue;
-        const std::string head = w.name(static_cast<int>(k)) + "(n,m,l,w,p) : n > 0 -> ";
+        const std::string head = w.name(static_cast<int>(k)) + "(n,m,l,w,p) : n > 0" +
+                                 (mod.stop > 0.0 ? " && l > " + num(mod.stop) : "") + " -> ";
         if (!alternatives || mod.interior.ks.size() <= 1) {
             const int laterals = static_cast<int>(mod.interior.slots.size());
             grammar += head + w.body(static_cast<int>(k), laterals, !alternatives) + "\n";
@@ -1472,24 +1503,40 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     // regrowth is cheap next to reading the example.
     std::optional<InferredTemplate> best;
     double best_misfit = 0.0;
+    Convention best_convention = Convention::Vertical;
+    bool best_tips = true;
+    auto consider = [&](Convention convention, bool tips, double length_stop, bool* used_tips) {
+        InferredTemplate candidate =
+            infer_with(example, settings, g, convention, tips, length_stop, used_tips);
+        GrowthContext context;
+        context.cancel = settings.cancel;
+        double score = 1e9;
+        try {
+            score = misfit(want, want_points, spacing, grow(candidate.tree, context));
+        } catch (const InputError&) {
+            // A grammar over a cost limit regrows nothing: another candidate wins.
+        }
+        if (!best || score < best_misfit) {
+            best = std::move(candidate);
+            best_misfit = score;
+            best_convention = convention;
+            best_tips = tips;
+        }
+    };
     for (Convention convention : {Convention::Vertical, Convention::Minimal}) {
         for (bool tips : {true, false}) {
             bool used_tips = false;
-            InferredTemplate candidate =
-                infer_with(example, settings, g, convention, tips, &used_tips);
-            GrowthContext context;
-            context.cancel = settings.cancel;
-            double score = 1e9;
-            try {
-                score = misfit(want, want_points, spacing, grow(candidate.tree, context));
-            } catch (const InputError&) {
-                // A grammar over a cost limit regrows nothing: another candidate wins.
-            }
-            if (!best || score < best_misfit) {
-                best = std::move(candidate);
-                best_misfit = score;
-            }
+            consider(convention, tips, -1.0, &used_tips);
             if (!used_tips) break;  // without tips it would be the same
+        }
+    }
+    // The closest of those once more with axes that stop on a length, only where it misses.
+    if (best_misfit >= 0.01) {
+        const Convention convention = best_convention;
+        const bool tips = best_tips;
+        for (double quantile : {0.0, 0.03, 0.06}) {
+            bool used_tips = false;
+            consider(convention, tips, quantile, &used_tips);
         }
     }
     refine_tropism(*best, best_misfit, want, want_points, spacing, settings.cancel);

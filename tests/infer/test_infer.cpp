@@ -200,6 +200,20 @@ TEST(InferRules, SecondRootKeepsItsBranchDepth) {
     EXPECT_EQ(r.regrown.per_depth[0], r.example.per_depth[0]);
 }
 
+// Axes that end where their segments grow shorter than a length (`B(l) : l > 0.12`) regrow
+// with as many segments as the example, not a count from the budget; the deepest, smallest
+// depth still differs by a few segments where a fitted ratio crosses the length early.
+TEST(InferRules, AxesStoppingOnALengthKeepTheirSegments) {
+    const ExampleTree example = example_of("birch");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(relative_difference(r.example.segments, r.regrown.segments), 0.1);
+    ASSERT_EQ(r.regrown.per_depth.size(), r.example.per_depth.size());
+    for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
+        EXPECT_LE(relative_difference(r.example.per_depth[d], r.regrown.per_depth[d]),
+                  d + 1 < r.example.per_depth.size() ? 0.1 : 0.3)
+            << "depth " << d;
+}
+
 // Every node moved by up to 3 % of its segment's length, in a random direction.
 Skeleton jittered(Skeleton s, std::uint64_t seed) {
     Random random(seed);
