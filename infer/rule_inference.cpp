@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 #include "core/errors.h"
@@ -122,14 +123,27 @@ struct Circular {
     double strength() const { return n ? std::hypot(s, c) / n : 0.0; }
 };
 struct Mean {
-    double sum = 0.0;
+    double sum = 0.0, squares = 0.0;
     int n = 0;
     void add(double v) {
         sum += v;
+        squares += v * v;
         ++n;
     }
     double mean(double fallback = 0.0) const { return n ? sum / n : fallback; }
+    // The squared standard error of the mean (0 for fewer than two values).
+    double error2() const {
+        return n > 1 ? std::max(0.0, (squares - sum * sum / n) / (n - 1)) / n : 0.0;
+    }
 };
+
+// Whether two means differ by no more than three standard errors of their difference:
+// then a rule states one value for both (slots of a whorl at one angle), where the
+// measured difference is noise that would turn every branch of one slot.
+bool same_within_noise(const Mean& a, const Mean& b) {
+    const double error = std::sqrt(a.error2() + b.error2());
+    return std::abs(a.mean() - b.mean()) <= 3.0 * error;
+}
 struct Ratio {  // geometric mean of positive ratios
     Mean log;
     void add(double num, double den) {
@@ -306,6 +320,9 @@ struct Module {
     bool phase_known = false;
     // Nodes without branches at the base of every axis (a bare stretch), drawn by a head rule.
     int bare = 0;
+    // When positive, a segment is drawn only while its length exceeds this: axes that end
+    // where their segments grow too short rather than where a count runs out.
+    double stop = 0.0;
     // After it, laterals every `period` nodes (internodes of several segments, a whorl every
     // few); a rewrite draws the period's segments, branching at the first.
     int period = 1;
@@ -315,6 +332,8 @@ struct Module {
         return n < bare ? n : bare + (n - bare) / period;
     }
     double head_ratio = 1.0;  // the first branched segment's length over the axis's first
+    // Per axis: its segment length at the end of the bare stretch, from the fitted line.
+    std::vector<std::optional<double>> start_length;
     std::vector<std::optional<double>> axis_phase;  // per axis: the phase of its node 0
 };
 
@@ -364,6 +383,9 @@ void fit_pattern(NodePattern& pattern, const std::vector<NodeSample>& nodes, con
         slot.offset = i == 0 ? 0.0 : wrap(offsets[i].mean());
         slot.pitch = pitches[i].mean();
         slot.length = lengths[i].mean();
+        if (i > 0 && same_within_noise(pitches[i], pitches[0])) slot.pitch = pattern.slots[0].pitch;
+        if (i > 0 && same_within_noise(lengths[i].log, lengths[0].log))
+            slot.length = pattern.slots[0].length;
         slot.width = widths[i].mean();
         double more = 0.0;
         for (auto& [k, w] : pattern.ks)
@@ -460,12 +482,41 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         for (const auto& [gap, n] : gaps)
             if (gap > 1 && n * 10 >= gap_count * 8) mod.period = gap;
     }
+    // The length ratio by least squares over the log lengths along every axis after its
+    // bare stretch (one slope, an intercept per axis), and each axis's length at the end of
+    // its bare stretch from its line: every segment counts, where the ratios of neighbours
+    // would rest on an axis's first and last segment alone, and a length measured with
+    // noise would scale all that follows it.
+    double sxx = 0.0, sxy = 0.0;
+    std::vector<std::pair<double, double>> means(axes.size(), {0.0, 0.0});  // (j, log length)
+    std::vector<int> counted(axes.size(), 0);
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        const Axis& axis = g.axes[seg(axes[k])];
+        double sj = 0.0, sy = 0.0;
+        int n = 0;
+        for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size(); ++j) {
+            sj += static_cast<double>(j);
+            sy += std::log(m.length[seg(axis.segments[j])]);
+            ++n;
+        }
+        if (n == 0) continue;
+        means[k] = {sj / n, sy / n};
+        counted[k] = n;
+        for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size(); ++j) {
+            const double dx = static_cast<double>(j) - means[k].first;
+            sxx += dx * dx;
+            sxy += dx * (std::log(m.length[seg(axis.segments[j])]) - means[k].second);
+        }
+    }
+    const double log_ratio = sxx > 0.0 ? sxy / sxx : 0.0;
+    mod.start_length.assign(axes.size(), std::nullopt);
     Ratio head_ratio;
-    for (int a : axes) {
-        const Axis& axis = g.axes[seg(a)];
-        if (mod.bare > 0 && static_cast<int>(axis.segments.size()) > mod.bare)
-            head_ratio.add(m.length[seg(axis.segments[static_cast<std::size_t>(mod.bare)])],
-                           m.length[seg(axis.segments[0])]);
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        if (counted[k] == 0) continue;
+        const Axis& axis = g.axes[seg(axes[k])];
+        const double at_bare = std::exp(means[k].second + log_ratio * (mod.bare - means[k].first));
+        mod.start_length[k] = at_bare;
+        if (mod.bare > 0) head_ratio.add(at_bare, m.length[seg(axis.segments[0])]);
     }
     mod.head_ratio = head_ratio.mean();
 
@@ -508,17 +559,19 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
     }
     fit_pattern(mod.interior, interior, m);
     fit_pattern(mod.tip, tips, m);
-    mod.length_ratio = length_ratio.mean();
+    mod.length_ratio = sxx > 0.0 ? std::exp(log_ratio) : length_ratio.mean();
     mod.width_ratio = width_ratio.mean();
 
     // Bends: absolute first, to find a divergence where no two branched nodes follow.
-    auto bends_of = [&](const std::function<double(int, std::size_t)>& reference) {
+    // `reference` gives the azimuth a bend is measured from, none to leave the bend out.
+    auto bends_of = [&](const std::function<std::optional<double>(int, std::size_t)>& reference) {
         TurnMean t;
         for (int a : axes) {
             const Axis& axis = g.axes[seg(a)];
             for (std::size_t j = static_cast<std::size_t>(mod.bare); j + 1 < axis.segments.size();
                  ++j)
-                t.add(m.turn[seg(axis.segments[j + 1])], reference(a, j));
+                if (const std::optional<double> r = reference(a, j))
+                    t.add(m.turn[seg(axis.segments[j + 1])], *r);
         }
         return t;
     };
@@ -587,7 +640,57 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
         }
     }
     mod.tip_offset = tip_offset.n ? wrap(tip_offset.mean()) : 0.0;
-    // Axes without laterals take their phase from their bends.
+    // The phases and the divergence once more by least squares over every branched node
+    // (one divergence, a phase per axis): the phase from one node and the divergence from
+    // differences of neighbours (which add up to the axis's first and last node) carry the
+    // noise of those few. A node's azimuth is the mean over its laterals less their slots'
+    // offsets. On an example without noise this changes nothing.
+    if (!mod.has_tip && advance.n && !mod.interior.slots.empty()) {
+        struct Sample {
+            double x, r;
+        };
+        std::vector<std::vector<Sample>> samples(axes.size());
+        double pxx = 0.0, pxy = 0.0;
+        for (std::size_t k = 0; k < axes.size(); ++k) {
+            if (!mod.axis_phase[k]) continue;
+            const Axis& axis = g.axes[seg(axes[k])];
+            for (std::size_t j = static_cast<std::size_t>(mod.bare); j < axis.segments.size();
+                 ++j) {
+                if ((static_cast<int>(j) - mod.bare) % mod.period != 0) continue;
+                const std::vector<int> lat = laterals_of(g, axis.segments[j]);
+                if (lat.empty()) continue;
+                Circular node;
+                for (std::size_t i = 0; i < lat.size() && i < mod.interior.slots.size(); ++i)
+                    node.add(m.turn[seg(lat[i])].az - mod.interior.slots[i].offset);
+                const double x = mod.phase_steps(j);
+                samples[k].push_back({x, wrap(node.mean() - *mod.axis_phase[k] - mod.advance * x)});
+            }
+            if (samples[k].empty()) continue;
+            double mx = 0.0, mr = 0.0;
+            for (const Sample& q : samples[k]) mx += q.x, mr += q.r;
+            mx /= static_cast<double>(samples[k].size());
+            mr /= static_cast<double>(samples[k].size());
+            for (const Sample& q : samples[k]) {
+                pxx += (q.x - mx) * (q.x - mx);
+                pxy += (q.x - mx) * (q.r - mr);
+            }
+        }
+        const double slope = pxx > 0.0 ? pxy / pxx : 0.0;
+        for (std::size_t k = 0; k < axes.size(); ++k) {
+            if (samples[k].empty()) continue;
+            double mx = 0.0, mr = 0.0;
+            for (const Sample& q : samples[k]) mx += q.x, mr += q.r;
+            mx /= static_cast<double>(samples[k].size());
+            mr /= static_cast<double>(samples[k].size());
+            mod.axis_phase[k] = wrap(*mod.axis_phase[k] + mr - slope * mx);
+        }
+        mod.advance = wrap(mod.advance + slope);
+    }
+    // Axes without laterals take their phase from their bends (when the first is a bend).
+    // The first three bends then do not count among the bends measured from the phase:
+    // measured with noise, they share nodes with the first and would agree with it, or
+    // turn back from it, and make a bend of noise.
+    std::vector<bool> phase_from_bend(axes.size(), false);
     {
         std::vector<std::size_t> unphased;
         for (std::size_t k = 0; k < axes.size(); ++k)
@@ -597,15 +700,26 @@ Module fit_module(const std::vector<int>& axes, const BranchGraph& g, const Meas
             const Axis& axis = g.axes[seg(axes[k])];
             if (!all || axis.segments.size() < 2) continue;
             const Turn& t = m.turn[seg(axis.segments[1])];
-            if (t.pitch > 0.05) mod.axis_phase[k] = wrap(t.az);
+            if (t.pitch <= 0.05) continue;
+            // Every bend says where node 0's phase is (its azimuth less the divergence up to
+            // it); their mean, weighted by the bends' size, carries less noise than one.
+            Circular phase;
+            for (std::size_t j = 0; j + 1 < axis.segments.size(); ++j) {
+                const Turn& b = m.turn[seg(axis.segments[j + 1])];
+                if (b.pitch > 0.05) phase.add(b.az - mod.advance * mod.phase_steps(j), b.pitch);
+            }
+            mod.axis_phase[k] = wrap(phase.mean());
+            phase_from_bend[k] = true;
         }
     }
 
-    const TurnMean absolute = bends_of([](int, std::size_t) { return 0.0; });
+    const TurnMean absolute = bends_of([](int, std::size_t) { return std::optional<double>(0.0); });
     std::map<int, std::size_t> index_of;
     for (std::size_t k = 0; k < axes.size(); ++k) index_of[axes[k]] = k;
-    const TurnMean relative = bends_of([&](int a, std::size_t j) {
-        const std::optional<double>& p = mod.axis_phase[index_of[a]];
+    const TurnMean relative = bends_of([&](int a, std::size_t j) -> std::optional<double> {
+        const std::size_t k = index_of[a];
+        if (phase_from_bend[k] && j < 3) return std::nullopt;
+        const std::optional<double>& p = mod.axis_phase[k];
         return p ? *p + mod.advance * mod.phase_steps(j) : 0.0;
     });
     const bool any_phase =
@@ -936,7 +1050,7 @@ bool is_pipe(const Skeleton& skeleton, const TreeParams& params) {
 // says whether some module took one.
 InferredTemplate infer_with(const ExampleTree& example, const InferSettings& settings,
                             const BranchGraph& g, Convention convention, bool tips,
-                            bool* used_tips) {
+                            double length_stop, bool* used_tips) {
     const Skeleton& skeleton = example.skeleton;
     const TreeParams source = example.params.value_or(TreeParams{});
     const LSystemParams& source_lsystem = lsystem_params(source);
@@ -1012,6 +1126,33 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         for (int a : modules[k].axes)
             module_of_axis[static_cast<std::size_t>(a)] = static_cast<int>(k);
     fit_counts(modules, module_of_axis, g, m);
+    if (length_stop >= 0.0) {
+        // Each module draws while its segments stay longer than the given quantile of its
+        // lengths in the example (0 the shortest; a little above it where noise shortened
+        // a few), every lateral gets the whole budget and every node all its slots: a grammar
+        // whose rules stop on a length (`B(l) : l > 0.1`) ends each axis where its lengths
+        // fall, which no count from the budget follows.
+        for (Module& mod : modules) {
+            std::vector<double> lengths;
+            for (int a : mod.axes)
+                for (int s : g.axes[static_cast<std::size_t>(a)].segments)
+                    lengths.push_back(m.length[static_cast<std::size_t>(s)]);
+            if (lengths.empty()) continue;
+            std::sort(lengths.begin(), lengths.end());
+            const double shortest =
+                lengths[static_cast<std::size_t>(length_stop * (lengths.size() - 1))];
+            if (shortest <= 0.0) continue;
+            mod.stop = 0.98 * shortest;
+            for (NodePattern* pattern : {&mod.interior, &mod.tip}) {
+                for (Slot& slot : pattern->slots) slot.count = slot.height = FromBudget{};
+                if (pattern->ks.size() > 1) {
+                    int most = 0;
+                    for (const auto& kw : pattern->ks) most = std::max(most, kw.first);
+                    pattern->ks = {{most, 1.0}};
+                }
+            }
+        }
+    }
     *used_tips =
         std::any_of(modules.begin(), modules.end(), [](const Module& mod) { return mod.has_tip; });
 
@@ -1085,11 +1226,16 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         const std::size_t s =
             static_cast<std::size_t>(axis.segments[static_cast<std::size_t>(skip)]);
         double phase = 0.0;
-        for (std::size_t k = 0; k < mod.axes.size(); ++k)
-            if (mod.axes[k] == axis_index && mod.axis_phase[k]) phase = *mod.axis_phase[k];
+        // The first length from the axis's fitted line where it has no bare stretch.
+        double length = m.length[s];
+        for (std::size_t k = 0; k < mod.axes.size(); ++k) {
+            if (mod.axes[k] != axis_index) continue;
+            if (mod.axis_phase[k]) phase = *mod.axis_phase[k];
+            if (skip == 0 && mod.bare == 0 && mod.start_length[k]) length = *mod.start_length[k];
+        }
         phase += mod.advance * static_cast<double>(skip);
         return "(" + std::to_string(axis.segments.size() - static_cast<std::size_t>(skip)) + "," +
-               std::to_string(m.budget[s]) + "," + num(m.length[s]) + "," + num(m.width[s]) + "," +
+               std::to_string(m.budget[s]) + "," + num(length) + "," + num(m.width[s]) + "," +
                num(wrap(phase)) + ")";
     };
     auto turn_text = [&](const Turn& t) {
@@ -1118,10 +1264,25 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
         result.generalised.push_back("the trunk (" + std::to_string(axis.segments.size()) +
                                      " segments) is written out in the axiom as measured");
     } else {
-        for (int r : g.roots) {
+        // Roots of a higher branch depth first, each in brackets; the first root of depth 0
+        // (or unknown) last and bare, so that its segments count at depth 0 as they do in
+        // the example (a bracket enters a branch).
+        std::vector<int> roots;
+        for (int r : g.roots)
+            if (skeleton.segments[static_cast<std::size_t>(r)].depth > 0) roots.push_back(r);
+        int bare_root = -1;
+        for (int r : g.roots)
+            if (skeleton.segments[static_cast<std::size_t>(r)].depth <= 0) {
+                if (bare_root < 0)
+                    bare_root = r;
+                else
+                    roots.push_back(r);
+            }
+        if (bare_root >= 0) roots.push_back(bare_root);
+        for (int r : roots) {
             const std::size_t ri = static_cast<std::size_t>(r);
             const int axis = g.axis_of[ri];
-            const bool bracket = skeleton.segments[ri].depth > 0 || g.roots.size() > 1;
+            const bool bracket = r != bare_root;
             // A straight axis (no bend; under tropism, one whose chord is within 2 degrees of
             // its first segment) starts along its chord, root to tip: the first segment
             // alone carries all of its noise, and a tilt at the root moves the whole tree
@@ -1157,7 +1318,8 @@ InferredTemplate infer_with(const ExampleTree& example, const InferSettings& set
     for (std::size_t k = 0; k < modules.size(); ++k) {
         const Module& mod = modules[k];
         if (mod.axes.empty()) continue;
-        const std::string head = w.name(static_cast<int>(k)) + "(n,m,l,w,p) : n > 0 -> ";
+        const std::string head = w.name(static_cast<int>(k)) + "(n,m,l,w,p) : n > 0" +
+                                 (mod.stop > 0.0 ? " && l > " + num(mod.stop) : "") + " -> ";
         if (!alternatives || mod.interior.ks.size() <= 1) {
             const int laterals = static_cast<int>(mod.interior.slots.size());
             grammar += head + w.body(static_cast<int>(k), laterals, !alternatives) + "\n";
@@ -1270,6 +1432,58 @@ double misfit(const SkeletonFigures& want, const std::vector<glm::vec3>& want_po
            hausdorff_distance(want_points, sample_skeleton(grown, spacing)) / height;
 }
 
+// Tries the inferred template under a few more tropism elasticities (negative bends every
+// axis up, positive down, after each F) and keeps the one that regrows the example
+// closest, rewriting the template text's `tropism` line. Axes that curve with no repeated
+// pattern (a tree grown towards attraction points) straighten in the rules; a tropism
+// puts the curve back into the envelope's height and width. Throws Cancelled.
+void refine_tropism(InferredTemplate& best, double& best_misfit, const SkeletonFigures& want,
+                    const std::vector<glm::vec3>& want_points, float spacing,
+                    const CancelFlag& cancel) {
+    // A regrowth within a hundredth on the sum of figures already has its curves.
+    if (best_misfit < 0.01) return;
+    const double start = lsystem_params(best.tree.params).tropism;
+    double chosen = start;
+    // Only where the regrowth is not nearer the example's points anyway: a tropism trades
+    // the figures of the envelope against the place of every branch.
+    double nearest = 0.0;
+    try {
+        GrowthContext context;
+        context.cancel = cancel;
+        nearest =
+            hausdorff_distance(want_points, sample_skeleton(grow(best.tree, context), spacing));
+    } catch (const InputError&) {
+        return;
+    }
+    for (double step : {-0.2, -0.1, -0.05, -0.02, 0.02, 0.05, 0.1, 0.2}) {
+        throw_if_cancelled(cancel);
+        TreeTemplate tree = best.tree;
+        tree.params.blocks.edit<LSystemParams>().tropism = start + step;
+        GrowthContext context;
+        context.cancel = cancel;
+        try {
+            const Skeleton grown = grow(tree, context);
+            const double score = misfit(want, want_points, spacing, grown);
+            const double distance =
+                hausdorff_distance(want_points, sample_skeleton(grown, spacing));
+            if (score < best_misfit - 1e-9 && distance <= nearest) {
+                best_misfit = score;
+                nearest = distance;
+                chosen = start + step;
+            }
+        } catch (const InputError&) {
+            // Over a cost limit: this elasticity is not a candidate.
+        }
+    }
+    if (chosen == start) return;
+    best.tree.params.blocks.edit<LSystemParams>().tropism = chosen;
+    static const std::regex line(R"((^|\n)tropism = [^\n]*)");
+    best.text = std::regex_replace(best.text, line, "$1tropism = " + num(chosen),
+                                   std::regex_constants::format_first_only);
+    best.generalised.push_back("tropism " + num(chosen) +
+                               " bends the straight axes of the rules as the example's curve");
+}
+
 }  // namespace
 
 InferredTemplate infer_template(const ExampleTree& example, const InferSettings& settings) {
@@ -1289,26 +1503,43 @@ InferredTemplate infer_template(const ExampleTree& example, const InferSettings&
     // regrowth is cheap next to reading the example.
     std::optional<InferredTemplate> best;
     double best_misfit = 0.0;
+    Convention best_convention = Convention::Vertical;
+    bool best_tips = true;
+    auto consider = [&](Convention convention, bool tips, double length_stop, bool* used_tips) {
+        InferredTemplate candidate =
+            infer_with(example, settings, g, convention, tips, length_stop, used_tips);
+        GrowthContext context;
+        context.cancel = settings.cancel;
+        double score = 1e9;
+        try {
+            score = misfit(want, want_points, spacing, grow(candidate.tree, context));
+        } catch (const InputError&) {
+            // A grammar over a cost limit regrows nothing: another candidate wins.
+        }
+        if (!best || score < best_misfit) {
+            best = std::move(candidate);
+            best_misfit = score;
+            best_convention = convention;
+            best_tips = tips;
+        }
+    };
     for (Convention convention : {Convention::Vertical, Convention::Minimal}) {
         for (bool tips : {true, false}) {
             bool used_tips = false;
-            InferredTemplate candidate =
-                infer_with(example, settings, g, convention, tips, &used_tips);
-            GrowthContext context;
-            context.cancel = settings.cancel;
-            double score = 1e9;
-            try {
-                score = misfit(want, want_points, spacing, grow(candidate.tree, context));
-            } catch (const InputError&) {
-                // A grammar over a cost limit regrows nothing: another candidate wins.
-            }
-            if (!best || score < best_misfit) {
-                best = std::move(candidate);
-                best_misfit = score;
-            }
+            consider(convention, tips, -1.0, &used_tips);
             if (!used_tips) break;  // without tips it would be the same
         }
     }
+    // The closest of those once more with axes that stop on a length, only where it misses.
+    if (best_misfit >= 0.01) {
+        const Convention convention = best_convention;
+        const bool tips = best_tips;
+        for (double quantile : {0.0, 0.03, 0.06}) {
+            bool used_tips = false;
+            consider(convention, tips, quantile, &used_tips);
+        }
+    }
+    refine_tropism(*best, best_misfit, want, want_points, spacing, settings.cancel);
     return std::move(*best);
 }
 

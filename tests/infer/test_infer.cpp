@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/random.h"
 #include "export/skeleton_json.h"
 #include "infer/example_tree.h"
 #include "infer/fit_report.h"
@@ -174,6 +175,133 @@ TEST(InferRules, StochasticTreesWithinTheTargets) {
                 0.1)
                 << name << " depth " << d;
     }
+}
+
+// A tree grown towards attraction points has curved axes and no repeated pattern: the rules
+// draw straight axes, and a fitted tropism bends them back into the example's envelope.
+TEST(InferRules, CurvedAxesKeepTheirEnvelope) {
+    const TreeTemplate tree = load_template("maple");
+    TreeTemplate other = tree;
+    other.params.seed = tree.params.seed + 1;
+    const Skeleton skeleton = grow(tree);
+    const double natural = skeleton_hausdorff(skeleton, grow(other));
+    const ExampleTree example = parse_example_tree(skeleton_json(skeleton, tree.params), "m.json");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(relative_difference(r.example.crown_width, r.regrown.crown_width), 0.5);
+    EXPECT_LE(r.hausdorff, 4.0 * natural);
+}
+
+// A tree of two roots, the second a branch (depth 1) of the first: the regrown trunk keeps
+// branch depth 0 and the second root depth 1, as the example counts them.
+TEST(InferRules, SecondRootKeepsItsBranchDepth) {
+    const ExampleTree example = example_of("hedge");
+    const FitReport r = fit_report(example, infer_template(example));
+    ASSERT_GE(r.regrown.per_depth.size(), 2u);
+    EXPECT_EQ(r.regrown.per_depth[0], r.example.per_depth[0]);
+}
+
+// Axes that end where their segments grow shorter than a length (`B(l) : l > 0.12`) regrow
+// with as many segments as the example, not a count from the budget; the deepest, smallest
+// depth still differs by a few segments where a fitted ratio crosses the length early.
+TEST(InferRules, AxesStoppingOnALengthKeepTheirSegments) {
+    const ExampleTree example = example_of("birch");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(relative_difference(r.example.segments, r.regrown.segments), 0.1);
+    ASSERT_EQ(r.regrown.per_depth.size(), r.example.per_depth.size());
+    for (std::size_t d = 0; d < r.example.per_depth.size(); ++d)
+        EXPECT_LE(relative_difference(r.example.per_depth[d], r.regrown.per_depth[d]),
+                  d + 1 < r.example.per_depth.size() ? 0.1 : 0.3)
+            << "depth " << d;
+}
+
+// Every node moved by up to 3 % of its segment's length, in a random direction.
+Skeleton jittered(Skeleton s, std::uint64_t seed) {
+    Random random(seed);
+    std::vector<glm::vec3> offset(s.segments.size());
+    for (std::size_t i = 0; i < s.segments.size(); ++i) {
+        const float length = glm::length(s.segments[i].b - s.segments[i].a);
+        glm::vec3 d(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
+        offset[i] = d * (0.06f * length);
+    }
+    for (std::size_t i = 0; i < s.segments.size(); ++i) s.segments[i].b += offset[i];
+    for (Segment& seg : s.segments)
+        if (seg.parent >= 0) seg.a = s.segments[static_cast<std::size_t>(seg.parent)].b;
+    return s;
+}
+
+// Measured with noise, a deterministic tree still regrows within 1 % of its height: the
+// length ratio and the first length rest on every segment of an axis, not on its ends.
+TEST(InferRules, JitteredNodesDoNotScaleTheTree) {
+    const TreeTemplate tree = load_template("cypress");
+    const ExampleTree example =
+        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "c.json");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_EQ(r.regrown.segments, r.example.segments);
+    EXPECT_LE(relative_difference(r.example.height, r.regrown.height), 0.01);
+    EXPECT_LE(r.hausdorff, 0.01 * r.example.height);
+}
+
+// Straight twigs measured with noise get a straight rule: the fir's third module (its
+// twigs, without branches of their own) draws no turn between segments.
+TEST(InferRules, JitteredStraightTwigsGetNoBend) {
+    const TreeTemplate tree = load_template("fir");
+    const ExampleTree example =
+        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
+    const std::string grammar = infer_template(example).tree.grammar;
+    const std::size_t at = grammar.find("\nC(");
+    ASSERT_NE(at, std::string::npos);
+    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    EXPECT_EQ(rule.find("&("), std::string::npos) << rule;
+}
+
+// The five branches of a whorl measured with noise keep one branch angle and one length:
+// the fir's trunk module states no angle or length per slot.
+TEST(InferRules, JitteredWhorlKeepsOneAngleAndLength) {
+    const TreeTemplate tree = load_template("fir");
+    const ExampleTree example =
+        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
+    const std::string grammar = infer_template(example).tree.grammar;
+    const std::size_t at = grammar.find("\nA(");
+    ASSERT_NE(at, std::string::npos);
+    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    std::size_t whorl = 0;
+    for (std::size_t i = rule.find("&(ba0)"); i != std::string::npos;
+         i = rule.find("&(ba0)", i + 1))
+        ++whorl;
+    EXPECT_EQ(whorl, 5u) << rule;
+    for (std::size_t i = rule.find("l*cl0*"); i != std::string::npos;
+         i = rule.find("l*cl0*", i + 1))
+        EXPECT_EQ(rule.substr(i, 8), "l*cl0*1,") << rule;  // the first slot's length
+}
+
+// A tree of whorls measured with noise regrows within 1 % of its height: the phase and the
+// divergence of the whorls rest on every node of the trunk, not on its first ones.
+TEST(InferRules, JitteredWhorlsKeepTheirPhase) {
+    const TreeTemplate tree = load_template("fir");
+    const Skeleton skeleton = grow(tree);
+    for (std::uint64_t seed : {78u, 80u}) {  // two draws of the noise
+        const ExampleTree example =
+            parse_example_tree(skeleton_json(jittered(skeleton, seed), tree.params), "f.json");
+        const FitReport r = fit_report(example, infer_template(example));
+        EXPECT_LE(r.hausdorff, 0.01 * r.example.height) << seed;
+    }
+}
+
+// Fronds that curl one way, measured with noise, keep the way they curl: their phase is
+// the mean over all of their bends, not the first bend alone (whose azimuth, for a bend of
+// a few degrees, noise sets as much as the curl does). The palm's trunk is left exact, its
+// fronds jittered.
+TEST(InferRules, JitteredFrondsKeepTheirCurl) {
+    const TreeTemplate tree = load_template("palm");
+    const Skeleton exact = grow(tree);
+    Skeleton noisy = jittered(exact, 78);
+    for (std::size_t i = 0; i < noisy.segments.size(); ++i)
+        if (exact.segments[i].depth == 0) noisy.segments[i] = exact.segments[i];
+    for (Segment& seg : noisy.segments)
+        if (seg.parent >= 0) seg.a = noisy.segments[static_cast<std::size_t>(seg.parent)].b;
+    const ExampleTree example = parse_example_tree(skeleton_json(noisy, tree.params), "p.json");
+    const FitReport r = fit_report(example, infer_template(example));
+    EXPECT_LE(r.hausdorff, 0.02 * r.example.height);  // a frond turned the wrong way: 10 %
 }
 
 TEST(InferRules, TemplateTextReadsBackAndGrowsTheSameTree) {
