@@ -78,21 +78,6 @@ ExampleTree as_example(const Skeleton& skeleton, const TreeParams& params) {
     return e;
 }
 
-// Every node moved by up to 3 % of its segment's length, in a random direction.
-Skeleton jittered(Skeleton s, std::uint64_t seed) {
-    Random random(seed);
-    std::vector<glm::vec3> offset(s.segments.size());
-    for (std::size_t i = 0; i < s.segments.size(); ++i) {
-        const float length = glm::length(s.segments[i].b - s.segments[i].a);
-        glm::vec3 d(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
-        offset[i] = d * (0.06f * length);
-    }
-    for (std::size_t i = 0; i < s.segments.size(); ++i) s.segments[i].b += offset[i];
-    for (Segment& seg : s.segments)
-        if (seg.parent >= 0) seg.a = s.segments[static_cast<std::size_t>(seg.parent)].b;
-    return s;
-}
-
 struct Tally {
     int all = 0;  // runs that meet every target (and the exact regrowth, where it applies)
     int runs = 0, count = 0, length = 0, height = 0, width = 0, depth = 0, hausdorff = 0, rules = 0,

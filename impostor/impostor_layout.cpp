@@ -4,9 +4,8 @@
 #include <oneapi/tbb/parallel_reduce.h>
 
 #include <algorithm>
-
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 
 namespace sylva {
 
@@ -47,7 +46,9 @@ double thin_share(const ImpostorAtlas& atlas) {
             }
             return c;
         },
-        [](Count l, Count r) { return Count{l.covered + r.covered, l.thin + r.thin}; });
+        [](Count l, Count r) {
+            return Count{l.covered + r.covered, l.thin + r.thin};
+        });
     return total.covered ? static_cast<double>(total.thin) / static_cast<double>(total.covered)
                          : 0.0;
 }

@@ -6,6 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "core/random.h"
+
 namespace sylva {
 
 SkeletonFigures skeleton_figures(const Skeleton& skeleton) {
@@ -122,6 +124,20 @@ double skeleton_hausdorff(const Skeleton& a, const Skeleton& b) {
     const float spacing = static_cast<float>(
         std::max({skeleton_figures(a).height, skeleton_figures(b).height, 1e-3}) / 200.0);
     return hausdorff_distance(sample_skeleton(a, spacing), sample_skeleton(b, spacing));
+}
+
+Skeleton jittered(Skeleton s, std::uint64_t seed) {
+    Random random(seed);
+    std::vector<glm::vec3> offset(s.segments.size());
+    for (std::size_t i = 0; i < s.segments.size(); ++i) {
+        const float length = glm::length(s.segments[i].b - s.segments[i].a);
+        glm::vec3 d(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
+        offset[i] = d * (0.06f * length);
+    }
+    for (std::size_t i = 0; i < s.segments.size(); ++i) s.segments[i].b += offset[i];
+    for (Segment& seg : s.segments)
+        if (seg.parent >= 0) seg.a = s.segments[static_cast<std::size_t>(seg.parent)].b;
+    return s;
 }
 
 }  // namespace sylva

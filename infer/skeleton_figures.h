@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/skeleton.h"
@@ -29,5 +30,10 @@ double hausdorff_distance(const std::vector<glm::vec3>& a, const std::vector<glm
 
 // Both skeletons sampled at 1/200 of the larger height, compared (meters).
 double skeleton_hausdorff(const Skeleton& a, const Skeleton& b);
+
+// The skeleton with every segment's end moved by up to 3 % of the segment's length in a
+// random direction (the same for a seed), children following: how a measured tree differs
+// from the one that was grown (the robustness target of `sylva infer`'s tests and bench).
+Skeleton jittered(Skeleton skeleton, std::uint64_t seed);
 
 }  // namespace sylva

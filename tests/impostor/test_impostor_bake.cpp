@@ -291,7 +291,7 @@ TEST(ImpostorFidelity, DISABLED_EveryTemplate) {
 // those that keep 0.85 in the default layout.
 TEST(ImpostorLayout, ThinShareSeparatesFeatheryCrowns) {
     const ImpostorSettings settings;  // 8 x 8 views at 1024 px
-    for (const char* name : {"oak", "honda"})
+    for (const char* name : {"oak", "maple"})
         EXPECT_LT(thin_share(bake_impostor(game_tree(name).parts, settings)), kThinShareLimit)
             << name;
     for (const char* name : {"bush", "seed_spruce"})

@@ -214,21 +214,6 @@ TEST(InferRules, AxesStoppingOnALengthKeepTheirSegments) {
             << "depth " << d;
 }
 
-// Every node moved by up to 3 % of its segment's length, in a random direction.
-Skeleton jittered(Skeleton s, std::uint64_t seed) {
-    Random random(seed);
-    std::vector<glm::vec3> offset(s.segments.size());
-    for (std::size_t i = 0; i < s.segments.size(); ++i) {
-        const float length = glm::length(s.segments[i].b - s.segments[i].a);
-        glm::vec3 d(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
-        offset[i] = d * (0.06f * length);
-    }
-    for (std::size_t i = 0; i < s.segments.size(); ++i) s.segments[i].b += offset[i];
-    for (Segment& seg : s.segments)
-        if (seg.parent >= 0) seg.a = s.segments[static_cast<std::size_t>(seg.parent)].b;
-    return s;
-}
-
 // Measured with noise, a deterministic tree still regrows within 1 % of its height: the
 // length ratio and the first length rest on every segment of an axis, not on its ends.
 TEST(InferRules, JitteredNodesDoNotScaleTheTree) {

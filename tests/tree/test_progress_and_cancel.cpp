@@ -109,6 +109,20 @@ TEST(MeshingProgress, RisesToOneWhileTrunkPiecesAndCrownAreMeshedBesideEachOther
     }
 }
 
+// How soon cancelled work must stop: within a second, three in a sanitizer build, whose
+// checks slow the work between two polls of the flag several times over.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr double kStopsWithinSeconds = 3.0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr double kStopsWithinSeconds = 3.0;
+#else
+constexpr double kStopsWithinSeconds = 1.0;
+#endif
+#else
+constexpr double kStopsWithinSeconds = 1.0;
+#endif
+
 // Runs `work` with the flag set 50 ms in; the seconds from setting it to the throw.
 double seconds_to_cancel(const std::function<void(CancelFlag)>& work) {
     std::atomic<bool> cancel{false};
@@ -154,7 +168,7 @@ TEST(Cancel, HandleCuttingStopsSoonAfterTheFlagIsSet) {
     const double seconds = seconds_to_cancel([&](CancelFlag cancel) {
         cut_handles(trunk, std::numeric_limits<std::size_t>::max(), cancel);
     });
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kStopsWithinSeconds);
 }
 
 TEST(Cancel, AHeavyReductionStopsSoonAfterTheFlagIsSet) {
@@ -166,7 +180,7 @@ TEST(Cancel, AHeavyReductionStopsSoonAfterTheFlagIsSet) {
         budget.total = 800;
         reduce_tree(tree, budget, settings);
     });
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kStopsWithinSeconds);
 }
 
 }  // namespace
