@@ -32,7 +32,7 @@ std::vector<glm::vec3> sample_skeleton(const Skeleton& skeleton, float spacing) 
     std::vector<glm::vec3> points;
     for (const Segment& s : skeleton.segments) {
         const float length = glm::length(s.b - s.a);
-        const int pieces = std::clamp(static_cast<int>(std::ceil(length / spacing)), 1, 1000);
+        const int pieces = std::clamp(static_cast<int>(std::ceil(length / spacing)), 1, 200);
         for (int k = 0; k <= pieces; ++k)
             points.push_back(s.a + (s.b - s.a) * (static_cast<float>(k) / pieces));
     }

@@ -21,7 +21,9 @@ struct SkeletonFigures {
 
 SkeletonFigures skeleton_figures(const Skeleton& skeleton);
 
-// Points along every segment at most `spacing` apart, both ends included.
+// Points along every segment at most `spacing` apart (at most 200 pieces a segment: a
+// segment longer than 200 spacings, far longer than the tree is tall, is no real branch but
+// would cost its square in distance queries), both ends included.
 std::vector<glm::vec3> sample_skeleton(const Skeleton& skeleton, float spacing);
 
 // The symmetric Hausdorff distance between two point sets (the larger of the two directed
