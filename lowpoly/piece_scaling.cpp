@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/disjoint_sets.h"
+#include "lowpoly/merge_meshes.h"
 
 namespace sylva {
 namespace {
@@ -23,21 +23,13 @@ struct Piece {
 
 // The pieces of `mesh` and, per vertex, the index of its piece (or -1 when unused).
 std::vector<Piece> pieces_of(const Mesh& mesh, std::vector<int>& piece_of_vertex) {
-    DisjointSets sets(mesh.positions.size());
-    for (const auto& t : mesh.triangles) {
-        sets.unite(t[0], t[1]);
-        sets.unite(t[0], t[2]);
-    }
-    std::vector<int> piece_of_root(mesh.positions.size(), -1);
+    std::size_t count = 0;
+    const std::vector<std::uint32_t> component = component_of_triangles(mesh, count);
     piece_of_vertex.assign(mesh.positions.size(), -1);
-    std::vector<Piece> pieces;
-    for (const auto& t : mesh.triangles) {
-        const std::uint32_t root = sets.find(t[0]);
-        if (piece_of_root[root] < 0) {
-            piece_of_root[root] = static_cast<int>(pieces.size());
-            pieces.emplace_back();
-        }
-        const int k = piece_of_root[root];
+    std::vector<Piece> pieces(count);
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        const int k = static_cast<int>(component[i]);
         Piece& piece = pieces[static_cast<std::size_t>(k)];
         const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]],
                         c = mesh.positions[t[2]];
