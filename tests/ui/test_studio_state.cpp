@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -170,12 +172,70 @@ TEST(StudioState, TotalsCountTheFinishedPartsAgainstTheBudget) {
     }
 }
 
+// Makes the worker wait, after it hands a tree over, until a poll has taken it: what a job
+// shows no longer depends on how often the polling thread runs (under load a draft could be
+// replaced by level 0 before any poll saw it). Construct before start_generation(), watch()
+// the job right after it.
+class HandOverGate {
+  public:
+    explicit HandOverGate(StudioState& state) {
+        state.wake = [this] {
+            std::unique_lock lock(mutex_);
+            const int mine = ++handed_;
+            changed_.wait(lock, [&] { return progress_ != nullptr; });
+            JobProgress* progress = progress_;
+            lock.unlock();
+            {
+                // Woken by the job's end (the result is set): nothing waits to be taken, and
+                // the poll that takes the result joins this thread.
+                const std::lock_guard handed(progress->draft_mutex);
+                if (!progress->draft_tree) return;
+            }
+            lock.lock();
+            changed_.wait_for(lock, std::chrono::seconds(30), [&] { return seen_ >= mine; });
+        };
+    }
+    void watch(JobProgress& progress) {
+        {
+            const std::lock_guard lock(mutex_);
+            progress_ = &progress;
+        }
+        changed_.notify_all();
+    }
+    // Polls as main does: what was handed over before the poll began is on screen after it.
+    void poll(StudioState& state) {
+        int handed = 0;
+        {
+            const std::lock_guard lock(mutex_);
+            handed = handed_;
+        }
+        poll_jobs(state);
+        {
+            const std::lock_guard lock(mutex_);
+            seen_ = handed;
+        }
+        changed_.notify_all();
+    }
+
+  private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    JobProgress* progress_ = nullptr;
+    int handed_ = 0;
+    int seen_ = 0;
+};
+
 // Polls as main does until no generation runs, keeping every tree that reached the screen.
-std::vector<std::shared_ptr<const GeneratedTree>> trees_shown_until_done(StudioState& state) {
+// With a gate, every tree the job handed over is among them.
+std::vector<std::shared_ptr<const GeneratedTree>> trees_shown_until_done(
+    StudioState& state, HandOverGate* gate = nullptr) {
     std::vector<std::shared_ptr<const GeneratedTree>> shown;
     const Clock::time_point end = Clock::now() + std::chrono::seconds(60);
     while ((generation_running(state) || !state.stale.empty()) && Clock::now() < end) {
-        poll_jobs(state);
+        if (gate)
+            gate->poll(state);
+        else
+            poll_jobs(state);
         if (state.tree_changed) {
             shown.push_back(state.tree);
             state.tree_changed = false;
@@ -194,16 +254,17 @@ TEST(StudioState, ASliderHeldStillShowsADraftThenItsGameMesh) {
     state.tree_template.params.blocks.edit<LSystemParams>().tropism += 0.1;
     set_dragging(state, true);
     ASSERT_TRUE(edit_pending(state));
+    HandOverGate gate(state);
     start_generation(state);
     ASSERT_TRUE(state.job);
+    gate.watch(*state.job->progress);
     EXPECT_TRUE(state.job->progress->draft);
-    const auto shown = trees_shown_until_done(state);
+    const auto shown = trees_shown_until_done(state, &gate);
 
     // Still held: the raw meshes came first, then the game mesh of the same tree, without
-    // waiting for the release: its level 0 (when a poll caught it before the job ended),
-    // then the whole LOD chain, whose level 0 is that one.
-    ASSERT_GE(shown.size(), 2u);
-    ASSERT_LE(shown.size(), 3u);
+    // waiting for the release: its level 0, then the whole LOD chain, whose level 0 is that
+    // one.
+    ASSERT_EQ(shown.size(), 3u);
     EXPECT_TRUE(shown[0]->draft);
     EXPECT_FALSE(shown[0]->reduced());
     const GeneratedTree& chain = *shown.back();
@@ -213,13 +274,11 @@ TEST(StudioState, ASliderHeldStillShowsADraftThenItsGameMesh) {
     EXPECT_EQ(chain.finished.levels.size(), static_cast<std::size_t>(kLodLevels));
     EXPECT_TRUE(same_mesh(shown[0]->tree.crown, chain.tree.crown));
     EXPECT_LE(chain.finished.levels[0].triangles, 300u);
-    if (shown.size() == 3) {
-        const GeneratedTree& level0 = *shown[1];
-        EXPECT_FALSE(level0.draft);
-        ASSERT_EQ(level0.finished.levels.size(), 1u);
-        EXPECT_TRUE(same_mesh(level0.finished.levels[0].trunk, chain.finished.levels[0].trunk));
-        EXPECT_TRUE(same_mesh(level0.finished.levels[0].crown, chain.finished.levels[0].crown));
-    }
+    const GeneratedTree& level0 = *shown[1];
+    EXPECT_FALSE(level0.draft);
+    ASSERT_EQ(level0.finished.levels.size(), 1u);
+    EXPECT_TRUE(same_mesh(level0.finished.levels[0].trunk, chain.finished.levels[0].trunk));
+    EXPECT_TRUE(same_mesh(level0.finished.levels[0].crown, chain.finished.levels[0].crown));
     EXPECT_TRUE(state.dragging);
     EXPECT_FALSE(edit_pending(state));
 
