@@ -1,10 +1,8 @@
 #include "app/impostor_cli.h"
 
-#include <algorithm>
 #include <charconv>
 #include <cstdio>
-
-#include "impostor/impostor_layout.h"
+#include <stdexcept>
 
 namespace sylva {
 namespace {
@@ -49,18 +47,15 @@ bool parse_impostor_flag(const std::string& arg, const std::function<std::string
     return true;
 }
 
-void print_far_levels(const ImpostorOptions& options, std::size_t levels) {
+void print_far_levels(const ImpostorOptions& options, std::size_t levels,
+                      const std::string& layout) {
     const ImpostorKind kind = options.kind;
     if (kind == ImpostorKind::None) return;
     if (kind == ImpostorKind::Billboard || kind == ImpostorKind::Both)
         std::printf("  LOD%zu: billboard, %d crossed quads\n", levels++, options.billboard_quads);
     if (kind == ImpostorKind::Octahedral || kind == ImpostorKind::Both) {
         if (options.size == 0) {
-            std::printf(
-                "  LOD%zu: octahedral impostor, %d x %d views of 128 px, or %d x %d views at %d "
-                "px for a thin tree (the layout JSON says which and why)\n",
-                levels, options.views, options.views, std::max(kThinViews, options.views),
-                std::max(kThinViews, options.views), kThinSize);
+            std::printf("  LOD%zu: octahedral impostor, %s\n", levels, layout.c_str());
             return;
         }
         const int tile = options.size / options.views;

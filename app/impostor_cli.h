@@ -19,7 +19,9 @@ bool parse_impostor_flag(const std::string& arg, const std::function<std::string
                          ImpostorOptions& options);
 
 // "  LOD<i>: octahedral impostor, ..." for each far level appended after `levels` levels of
-// the tree; nothing without an impostor.
-void print_far_levels(const ImpostorOptions& options, std::size_t levels);
+// the tree; nothing without an impostor. `layout` is what write_tree() said the automatic
+// layout chose.
+void print_far_levels(const ImpostorOptions& options, std::size_t levels,
+                      const std::string& layout);
 
 }  // namespace sylva

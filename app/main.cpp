@@ -471,6 +471,7 @@ int run_export(const Options& o) {
     Stopwatch clock;
     FinishedTree finished;
     std::vector<std::filesystem::path> files;
+    std::string impostor_layout;
     tbb::parallel_invoke(
         [&] {
             finished = finish_tree(tree, finish);
@@ -478,7 +479,8 @@ int run_export(const Options& o) {
             export_options.engine.seed = tmpl.params.seed;  // colour variation and wind phases
             export_options.material_prefix = material_prefix(tmpl.name, tmpl.params.seed);
             export_options.engine.wind_motion = wind_motion(tmpl.params);  // for the kits
-            files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format);
+            files = write_tree(o.output, tree, finished, tmpl.colors, export_options, format,
+                               &impostor_layout);
         },
         [&] { raw_states = part_states(raw); });
     folder.keep();
@@ -506,7 +508,7 @@ int run_export(const Options& o) {
         if (!level.note.empty()) std::printf("    note: %s\n", level.note.c_str());
     }
     print_far_levels(o.export_options.impostor,
-                     finished.levels.empty() ? 1 : finished.levels.size());
+                     finished.levels.empty() ? 1 : finished.levels.size(), impostor_layout);
     std::printf("  skeleton: %zu segments, %zu tips\n  time:", tree.skeleton.segments.size(),
                 tips(tree.skeleton).size());
     for (size_t i = 0; i < tree.times.size(); ++i)

@@ -195,13 +195,15 @@ std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path,
                                               const FinishedTree& finished,
                                               const PartColors& colors,
                                               const ExportOptions& options,
-                                              const ExportFormat* format) {
+                                              const ExportFormat* format,
+                                              std::string* impostor_layout) {
     ExportOptions with_palette = options;
     if (options.engine.palette) with_palette.palette_png = palette_png(colors);
     std::function<void(FileSet&)> kit;
     if (!options.engine_kit.empty())
         kit = [&](FileSet& files) { add_engine_kit(files, options.engine_kit, options.profile); };
     const EngineModel model = engine_model(tree, finished, colors, options);
+    if (impostor_layout) *impostor_layout = model.atlas ? model.atlas->layout : std::string();
     if (model.atlas || model.billboard)
         with_palette.sidecars.push_back(
             {"_impostor.json", far_levels_layout(model, output_target(path),

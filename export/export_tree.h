@@ -110,12 +110,14 @@ std::vector<BakePart> bake_parts(const ModelParts& level);
 // Writes engine_model() of the finished tree to `path` (format: given, or from the
 // extension), and with options.engine_kit the profile's import kit there, with
 // options.impostor the layout JSON `<stem>_impostor.json` beside it, all in one transaction.
-// Returns every file written. Throws InputError for an unknown extension, IoError when a file
-// cannot be written.
+// Returns every file written; `impostor_layout`, when given, gets the octahedral atlas's
+// layout line (what an automatic layout chose and why; empty otherwise). Throws InputError for
+// an unknown extension, IoError when a file cannot be written.
 std::vector<std::filesystem::path> write_tree(const std::filesystem::path& path, const Tree& tree,
                                               const FinishedTree& finished,
                                               const PartColors& colors,
                                               const ExportOptions& options = {},
-                                              const ExportFormat* format = nullptr);
+                                              const ExportFormat* format = nullptr,
+                                              std::string* impostor_layout = nullptr);
 
 }  // namespace sylva

@@ -147,5 +147,16 @@ TEST_F(ImpostorExport, TheCliRefusesPlyAndBadValues) {
     EXPECT_TRUE(fs::exists(dir_ / "t_impostor.json"));
 }
 
+TEST_F(ImpostorExport, TheCliSaysWhichLayoutItChose) {
+    const test::CommandResult ok = sylva("export --impostor -o " + (dir_ / "t.glb").string());
+    ASSERT_EQ(ok.code, 0) << ok.output;
+    const nlohmann::json layout = nlohmann::json::parse(read_file(dir_ / "t_impostor.json"));
+    const std::string choice = layout["octahedral"]["layout_choice"];
+    ASSERT_EQ(choice.rfind("auto: ", 0), 0u) << choice;
+    // The one layout baked, as the JSON says it, not the two it could have been.
+    EXPECT_NE(ok.output.find("LOD1: octahedral impostor, " + choice + "\n"), std::string::npos)
+        << ok.output;
+}
+
 }  // namespace
 }  // namespace sylva
