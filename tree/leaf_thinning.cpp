@@ -18,15 +18,14 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
     return v;
 }
 
-// A hash of where the leaf is: as random as the scatter, stable for the same leaf.
-std::uint64_t rank_of(const glm::vec3& base) {
+}  // namespace
+
+std::uint64_t leaf_rank(const glm::vec3& base) {
     std::uint64_t seed = 0;
     for (float c : {base.x, base.y, base.z})
         seed = Random(seed ^ std::bit_cast<std::uint32_t>(c)).next();
     return seed;
 }
-
-}  // namespace
 
 std::vector<LeafPiece> split_leaves(const Mesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.positions.size());
@@ -58,7 +57,7 @@ Mesh thin_leaves(const Mesh& leaves, std::size_t max_triangles, float max_growth
     if (leaves.triangles.size() <= max_triangles) return leaves;
     const std::vector<LeafPiece> all = split_leaves(leaves);
     std::vector<std::uint64_t> rank(all.size());
-    for (std::size_t l = 0; l < all.size(); ++l) rank[l] = rank_of(leaves.positions[all[l].base]);
+    for (std::size_t l = 0; l < all.size(); ++l) rank[l] = leaf_rank(leaves.positions[all[l].base]);
 
     std::vector<std::size_t> by_rank(all.size());
     std::iota(by_rank.begin(), by_rank.end(), std::size_t{0});

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
 
 #include "core/mesh.h"
@@ -24,6 +25,10 @@ struct LeafPiece {
 // The leaves of `leaves` (tree/leaves.h: no two share a vertex), in the order of their first
 // triangle.
 std::vector<LeafPiece> split_leaves(const Mesh& leaves);
+
+// A leaf's rank for thinning, a hash of where its base is: as random as the scatter, stable
+// for the same leaf.
+std::uint64_t leaf_rank(const glm::vec3& base);
 
 // The number of leaves in `leaves`: its sets of triangles joined by shared vertices
 // (tree/leaves.h: no two leaves share a vertex).

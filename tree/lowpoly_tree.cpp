@@ -20,6 +20,7 @@
 #include "tree/crown_hulls.h"
 #include "tree/leaf_cards.h"
 #include "tree/leaf_thinning.h"
+#include "tree/leaf_triangles.h"
 
 namespace sylva {
 namespace {
@@ -344,6 +345,9 @@ Mesh game_leaves(const Tree& tree, std::size_t budget) {
         case LeafStyle::Leaves:
             return thin_leaves(tree.leaves, budget);
         case LeafStyle::Cards:
+            if (leaves_fit_as_triangles(tree.leaves, budget))
+                return leaf_triangles(tree.leaves, budget);
+            break;
         case LeafStyle::Textured:
             break;
     }

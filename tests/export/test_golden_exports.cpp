@@ -112,9 +112,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"windswept.fbx", 0x75bc3d2c7fc4bbcaull},
         // `export -t palm --lod -o palm_lod.glb`, `.fbx` and `... -o palm_lod.obj` (MTL,
         // LOD0-LOD3).
-        {"palm_lod.glb", 0xfe78c57b32fea426ull},
-        {"palm_lod.fbx", 0xed307fb7ec9fed86ull},
-        {"palm_lod.obj", 0xabe4fc3e4e347c30ull},
+        {"palm_lod.glb", 0x814d1a6dc2f12356ull},
+        {"palm_lod.fbx", 0xc9a008232ec39f02ull},
+        {"palm_lod.obj", 0xdfc7b9ad19b22f44ull},
     };
     return hashes;
 }
