@@ -54,10 +54,10 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"birch.glb", 0x5a8f66bf72a497b8ull},
         {"birch.ply", 0xe76a8689f185593ull},
         {"birch.fbx", 0x9d8d99fb4a1a046bull},
-        {"bush.obj", 0x5c9676d56e14e596ull},
-        {"bush.glb", 0x4303fb27c13c013ull},
-        {"bush.ply", 0x966c06ea65c40bffull},
-        {"bush.fbx", 0x4f823c6cbcd9748dull},
+        {"bush.obj", 0x8f7c1cf1064dd898ull},
+        {"bush.glb", 0x67dea3431b676bfeull},
+        {"bush.ply", 0xb7f16734d063143ull},
+        {"bush.fbx", 0xbd1cc45ba237e2acull},
         {"cypress.obj", 0x964e880af127b09eull},
         {"cypress.glb", 0x81db1aa41cdcb9bdull},
         {"cypress.ply", 0x8ada96cc396bbd91ull},
@@ -112,9 +112,9 @@ const std::map<std::string, std::uint64_t>& golden_hashes() {
         {"windswept.fbx", 0x75bc3d2c7fc4bbcaull},
         // `export -t palm --lod -o palm_lod.glb`, `.fbx` and `... -o palm_lod.obj` (MTL,
         // LOD0-LOD3).
-        {"palm_lod.glb", 0xfe78c57b32fea426ull},
-        {"palm_lod.fbx", 0xed307fb7ec9fed86ull},
-        {"palm_lod.obj", 0xabe4fc3e4e347c30ull},
+        {"palm_lod.glb", 0x627c2e5951040cd1ull},
+        {"palm_lod.fbx", 0x8e8740138a2d9ae4ull},
+        {"palm_lod.obj", 0xbfd9ec93b3091306ull},
     };
     return hashes;
 }
