@@ -3,9 +3,8 @@
 // to choose between clusterings of a crown into hulls (tree/crown_hulls.h).
 #pragma once
 
-#include <span>
-
 #include <glm/vec3.hpp>
+#include <span>
 
 namespace sylva {
 
