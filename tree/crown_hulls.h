@@ -25,13 +25,16 @@ inline constexpr std::size_t kCrownHullBudget = 400;
 inline constexpr std::size_t kTrianglesPerHull = 70;
 
 // The crown's vertices split into `hulls` clusters (k-means, seeded by farthest points, so
-// deterministic), a cluster split again where its vertices lie on surface pieces apart (each
-// piece of at least a tenth of it, the largest first, up to `pieces` clusters in all: a hull
-// over two curtains or two blobs would bridge the gap between them), and the convex hull of each
-// (core/convex_hull.h's extreme_point_hull: at most 124 triangles each), as one mesh: every hull
-// closed, 2-manifold and outward, within the crown's bounding box. Clusters are near-disjoint in
-// space, so neighbouring hulls overlap only where they meet. A crown with fewer than 4 vertices, or
-// a cluster that spans no volume (flat), gives `crown` back unchanged; so does `hulls` 0.
+// deterministic; on the positions, or with heights counting 1.5 times where those clusters'
+// hulls fill a quarter less of the sky between the crown's parts, tree/hull_gap.h: flat
+// clusters that keep to one tier of an umbrella), a cluster split again where its vertices lie on
+// surface pieces apart (each piece of at least a tenth of it, the largest first, up to `pieces`
+// clusters in all: a hull over two curtains or two blobs would bridge the gap between them), and
+// the convex hull of each (core/convex_hull.h's extreme_point_hull: at most 124 triangles each), as
+// one mesh: every hull closed, 2-manifold and outward, within the crown's bounding box. Clusters
+// are near-disjoint in space, so neighbouring hulls overlap only where they meet. A crown with
+// fewer than 4 vertices, or a cluster that spans no volume (flat), gives `crown` back unchanged; so
+// does `hulls` 0.
 Mesh crown_hulls(const Mesh& crown, std::size_t hulls, std::size_t pieces);
 
 }  // namespace sylva

@@ -18,6 +18,9 @@ struct LeafCardSettings {
     // The smallest patch, in lengths of the tree's median leaf.
     float min_leaves_across = 0.5f;
     std::uint64_t seed = 1;  // the cards' tilt and turn
+    // The crown the leaves lie on (its vertices), or none: a card in the open is no larger
+    // than its leaves need (see leaf_cards()).
+    const Mesh* crown = nullptr;
 };
 
 // The leaves of `leaves` (tree/leaves.h: no two share a vertex) as at most
@@ -30,6 +33,8 @@ struct LeafCardSettings {
 // random; where the patch's leaves lie alike (their normals, turned outwards, mostly agree:
 // a frond's leaflets, a row of leaves on a twig) the card lies in their mean plane instead
 // and runs along their mean direction, so it covers them as they show from the side.
+// A card whose patch has no crown surface near (settings.crown, within a cell) has at most 1.75
+// times its leaves' area, shrunk evenly.
 // Same leaves and settings, same cards. No leaves, or a budget below two triangles,
 // give none.
 Mesh leaf_cards(const Mesh& leaves, const LeafCardSettings& settings);

@@ -353,6 +353,7 @@ Mesh game_leaves(const Tree& tree, std::size_t budget) {
     }
     LeafCardSettings cards;
     cards.max_triangles = budget;
+    cards.crown = &tree.crown;
     return leaf_cards(tree.leaves, cards);
 }
 

@@ -81,6 +81,43 @@ TEST(CrownHulls, AClusterOverPiecesApartIsSplitUpToThePieces) {
     EXPECT_GT(bridged[0], 2.0 + 1e-3);
 }
 
+// Two flat tiers, one above the other, each a layer of small blobs (no piece large enough to
+// split a cluster by itself): the hulls each keep to one tier, none reaches across the sky
+// between them, though k-means on the plain positions makes columns through both.
+TEST(CrownHulls, HullsOverFlatTiersKeepToATier) {
+    constexpr float kRise = 1.1f;  // from one tier to the next
+    Mesh crown;
+    for (int tier = 0; tier < 2; ++tier)
+        for (int i = 0; i < 8; ++i)
+            for (int j = 0; j < 8; ++j) {
+                const glm::vec3 lo(0.5f * static_cast<float>(i), kRise * static_cast<float>(tier),
+                                   0.5f * static_cast<float>(j));
+                const Mesh blob = box(lo, lo + glm::vec3(0.4f, 0.1f, 0.4f));
+                const auto first = static_cast<std::uint32_t>(crown.positions.size());
+                crown.positions.insert(crown.positions.end(), blob.positions.begin(),
+                                       blob.positions.end());
+                for (const auto& t : blob.triangles)
+                    crown.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+            }
+    const Mesh hulls = crown_hulls(crown, 8, 8);
+    expect_closed_outward(hulls, "hulls");
+    DisjointSets pieces(static_cast<std::uint32_t>(hulls.positions.size()));
+    for (const auto& t : hulls.triangles) {
+        pieces.unite(t[0], t[1]);
+        pieces.unite(t[1], t[2]);
+    }
+    std::vector<float> low(hulls.positions.size(), 1e30f), high(hulls.positions.size(), -1e30f);
+    for (std::uint32_t v = 0; v < hulls.positions.size(); ++v) {
+        const std::uint32_t root = pieces.find(v);
+        low[root] = std::min(low[root], hulls.positions[v].y);
+        high[root] = std::max(high[root], hulls.positions[v].y);
+    }
+    for (std::uint32_t v = 0; v < hulls.positions.size(); ++v) {
+        if (pieces.find(v) != v) continue;
+        EXPECT_LT(high[v] - low[v], 0.5f) << "a hull spans both tiers";
+    }
+}
+
 TEST(CrownHulls, ZeroHullsOrAFlatCrownKeepsTheCrown) {
     const Mesh crown = two_boxes();
     EXPECT_EQ(crown_hulls(crown, 0, 0).triangles, crown.triangles);

@@ -125,6 +125,39 @@ TEST(LeafCards, ACardOfLeavesThatLieAlikeLiesAsTheyDo) {
     }
 }
 
+double area_of(const Mesh& mesh) {
+    double area = 0.0;
+    for (const auto& t : mesh.triangles)
+        area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                             mesh.positions[t[2]] - mesh.positions[t[0]]));
+    return area;
+}
+
+// Small leaves spread apart (a shrub's twigs): a card for several of them would span the sky
+// between them. In the open the cards' area stays within 1.75 times the leaves'; over a crown
+// they keep the leaves' spread (their overlap lies on the crown).
+TEST(LeafCards, ACardInTheOpenIsNoLargerThanItsLeavesNeed) {
+    Mesh leaves;
+    for (int i = 0; i < 64; ++i) {
+        const glm::vec3 base(0.5f * static_cast<float>(i % 4), 0.5f * static_cast<float>(i / 16),
+                             0.5f * static_cast<float>((i / 4) % 4));
+        const auto first = static_cast<std::uint32_t>(leaves.positions.size());
+        leaves.positions.push_back(base);
+        leaves.positions.push_back(base + glm::vec3(0.05f, 0.05f, 0.0f));
+        leaves.positions.push_back(base + glm::vec3(0.0f, 0.1f, 0.0f));
+        leaves.positions.push_back(base + glm::vec3(-0.05f, 0.05f, 0.0f));
+        leaves.triangles.push_back({first, first + 1, first + 2});
+        leaves.triangles.push_back({first, first + 2, first + 3});
+    }
+    const Mesh open = leaf_cards(leaves, {.max_triangles = 16});
+    ASSERT_GT(open.triangles.size(), 0u);
+    EXPECT_LE(area_of(open), 1.75 * area_of(leaves) * 1.001);
+    Mesh crown;  // a crown surface through every leaf
+    crown.positions = leaves.positions;
+    const Mesh over_crown = leaf_cards(leaves, {.max_triangles = 16, .crown = &crown});
+    EXPECT_GT(area_of(over_crown), 4.0 * area_of(leaves));
+}
+
 TEST(LeafCards, TheirUvsFillTheUnitSquareAsALeafs) {
     const Tree tree = game_tree("oak", 800);
     const Mesh cards = leaf_cards(tree.leaves, {.max_triangles = 200});
