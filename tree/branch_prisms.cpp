@@ -219,6 +219,7 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
     std::vector<char> drawn(n, 0);
     std::vector<float> tolerances(n, look.tolerance);
     std::vector<std::size_t> drawn_order;
+    std::vector<char> short_tip(n, 0);
     std::size_t triangles = 0;
     while (!ready.empty()) {
         const auto i = static_cast<std::size_t>(-ready.top().second);
@@ -227,8 +228,12 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
         // fit; the first branch (the trunk) is drawn however coarse it must be.
         const bool first = triangles == 0;
         float tolerance = look.tolerance * static_cast<float>(1 << first_try);
+        // Every axis first: the first (the trunk, which shows most) ends in its short point
+        // at once where that fits.
+        if (first && order == PrismOrder::EveryAxisFirst)
+            short_tip[i] = cost_at(i, tolerance, true) <= max_triangles;
         for (int tries = first_try; tries < kCoarserTries; ++tries, tolerance *= 2.0f) {
-            const std::size_t cost = cost_at(i, tolerance, false);
+            const std::size_t cost = cost_at(i, tolerance, short_tip[i] != 0);
             if (cost == 0) break;
             if (triangles + cost > max_triangles && !(first && tries + 1 == kCoarserTries))
                 continue;
@@ -246,9 +251,9 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
     // extra triangles fit.
     if (order == PrismOrder::EveryAxisFirst)
         for (std::size_t i : drawn_order) {
-            const std::size_t now = cost_at(i, tolerances[i], false);
+            const std::size_t now = cost_at(i, tolerances[i], short_tip[i] != 0);
             for (float finer = look.tolerance; finer < tolerances[i]; finer *= 2.0f) {
-                const std::size_t cost = cost_at(i, finer, false);
+                const std::size_t cost = cost_at(i, finer, short_tip[i] != 0);
                 if (triangles - now + cost > max_triangles) continue;
                 triangles = triangles - now + cost;
                 tolerances[i] = finer;
@@ -256,7 +261,6 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
             }
         }
     // Short points with the triangles left, where every axis is drawn: largest axis first.
-    std::vector<char> short_tip(n, 0);
     if (drawn_order.size() == n) {
         std::vector<std::size_t> by_area(n);
         std::iota(by_area.begin(), by_area.end(), std::size_t{0});
@@ -264,6 +268,7 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget, std::size
             return axes.axes[a].area > axes.axes[b].area;
         });
         for (std::size_t i : by_area) {
+            if (short_tip[i]) continue;
             const std::size_t plain = cost_at(i, tolerances[i], false);
             const std::size_t tipped = cost_at(i, tolerances[i], true);
             if (tipped <= plain || triangles + (tipped - plain) > max_triangles) continue;
@@ -298,10 +303,22 @@ std::size_t fewest_prism_triangles(const BranchAxes& axes, std::size_t budget) {
     const PrismLook look = prism_look(axes, budget);
     const float coarsest = look.tolerance * static_cast<float>(1 << (kCoarserTries - 1));
     std::size_t triangles = 0;
-    for (const BranchAxis& branch : axes.axes)
+    std::size_t first = axes.axes.size();  // the largest root, drawn first
+    for (std::size_t i = 0; i < axes.axes.size(); ++i) {
+        const BranchAxis& branch = axes.axes[i];
+        if (branch.parent < 0 && (first == axes.axes.size() || branch.area > axes.axes[first].area))
+            first = i;
         triangles += axis_triangles(
             drawn_axis(branch.axis, coarsest, false),
             sides_for(branch.axis.radii.front(), axes.thickest, look.max_sides, look.tolerance));
+    }
+    if (first < axes.axes.size()) {  // with its short point
+        const BranchAxis& trunk = axes.axes[first];
+        const int sides =
+            sides_for(trunk.axis.radii.front(), axes.thickest, look.max_sides, look.tolerance);
+        triangles += axis_triangles(drawn_axis(trunk.axis, coarsest, true), sides) -
+                     axis_triangles(drawn_axis(trunk.axis, coarsest, false), sides);
+    }
     return triangles;
 }
 

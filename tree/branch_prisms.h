@@ -64,9 +64,10 @@ struct BranchPrisms {
 enum class PrismOrder {
     // The largest first, each as fine as fits: where a crown hides the small ones.
     LargestFirst,
-    // Every axis first, each as coarse as the look allows (four times its tolerance), then
-    // the largest refined first: where nothing hides a branch (a sparse crown,
-    // tree/sparse_crown.h), a coarse branch shows more than a finer one's refinement.
+    // Every axis first, each as coarse as the look allows (four times its tolerance; the
+    // first, the trunk, with its short point), then the largest refined first: where
+    // nothing hides a branch (a sparse crown, tree/sparse_crown.h), a coarse branch shows
+    // more than a finer one's refinement.
     EveryAxisFirst,
 };
 
@@ -86,8 +87,8 @@ BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget,
                            std::size_t max_triangles = std::numeric_limits<std::size_t>::max(),
                            PrismOrder order = PrismOrder::LargestFirst);
 
-// The triangles every axis takes at four times the look's tolerance of `budget`: the least
-// that draws them all.
+// The triangles every axis takes at four times the look's tolerance of `budget`, the first
+// with its short point: the least that PrismOrder::EveryAxisFirst draws them all with.
 std::size_t fewest_prism_triangles(const BranchAxes& axes, std::size_t budget);
 
 }  // namespace sylva
