@@ -46,7 +46,7 @@ BranchAxes branch_axes(const Skeleton& skeleton, std::span<const std::uint8_t> s
                        float min_radius);
 
 // How a budget of trunk + crown triangles draws branches: the most sides any prism gets (the
-// thickest branch; a branch of a quarter of its radius gets half as many, at least three),
+// thickest branch; a thinner one as many as keep its facets as wide, at least three),
 // and how far a prism may stray from its branch's bends, relative to the skeleton's extent.
 struct PrismLook {
     int max_sides = 6;
@@ -60,12 +60,35 @@ struct BranchPrisms {
     std::size_t left_out = 0;  // axes that did not fit (with every axis growing from them)
 };
 
+// Which axes a budget too small for all of them draws.
+enum class PrismOrder {
+    // The largest first, each as fine as fits: where a crown hides the small ones.
+    LargestFirst,
+    // Every axis first, each as coarse as the look allows (four times its tolerance; the
+    // first, the trunk, with its short point), then the largest refined first: where
+    // nothing hides a branch (a sparse crown, tree/sparse_crown.h), a coarse branch shows
+    // more than a finer one's refinement.
+    EveryAxisFirst,
+};
+
+// A pointed axis whose last segment is longer than this many times its end's radius ends,
+// when every axis is drawn and triangles are left, in a short point (a ring half its radius
+// before the end): a point over the whole segment shows half of it.
+inline constexpr float kShortTipSegment = 3.0f;
+
 // The axes as prisms for a game mesh of `budget` trunk + crown triangles, with at most
-// `max_triangles` of them: the axes by what they show (BranchAxis::area), largest first,
-// each drawn when it and the axis it grows from fit, simplified further (up to four times
-// the look's tolerance) where that makes it fit. The first axis (the trunk) is always drawn,
-// however coarse, even past `max_triangles`. Same axes and numbers, same mesh.
+// `max_triangles` of them: the axes by what they show (BranchAxis::area) in `order`, each
+// drawn when it and the axis it grows from fit, simplified further (up to four times the
+// look's tolerance) where that makes it fit. The first axis (the trunk) is always drawn,
+// however coarse, even past `max_triangles`. Where every axis is drawn, triangles left
+// give long last segments short points (kShortTipSegment), largest axis first. Same axes
+// and numbers, same mesh.
 BranchPrisms branch_prisms(const BranchAxes& axes, std::size_t budget,
-                           std::size_t max_triangles = std::numeric_limits<std::size_t>::max());
+                           std::size_t max_triangles = std::numeric_limits<std::size_t>::max(),
+                           PrismOrder order = PrismOrder::LargestFirst);
+
+// The triangles every axis takes at four times the look's tolerance of `budget`, the first
+// with its short point: the least that PrismOrder::EveryAxisFirst draws them all with.
+std::size_t fewest_prism_triangles(const BranchAxes& axes, std::size_t budget);
 
 }  // namespace sylva

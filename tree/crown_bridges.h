@@ -25,12 +25,19 @@ namespace sylva {
 // crown_merge on and more blobs than half the budget leaves kTrianglesPerCrownPiece each,
 // struts between the nearest blobs (crown_merge.h), each a cone from one sphere's centre to
 // the other's, at each end as thick as its sphere and at least half a cell (so the grid
-// sees it), or at least a cell where the struts are slender (on average longer than four
-// times the larger sphere's radius, or joining the crown into fewer than four pieces: thin,
-// they would take the crown's triangles).
-// Empty without a budget, with crown_merge off, or when the blobs are few enough.
+// sees it), or at least a cell where the struts join the crown into fewer than four pieces
+// (thin, they would take the crown's triangles).
+// Empty without a budget, with crown_merge off, when the blobs are few enough, or when the
+// struts would be slender (on average longer than kSparseCrownSpacing times the larger
+// sphere's radius): a sparse crown, whose gaps the full-detail tree shows open, keeps its
+// blobs apart (tree/sparse_crown.h).
 std::vector<CappedCone> crown_bridge_cones(const SphereField& crown, std::size_t budget,
                                            const TreeParams& p, const Box& box);
+
+// Whether a budget of `budget` trunk + crown triangles keeps a sparse crown's blobs apart:
+// from about 200 on, where the bridges would join the crown into at least four pieces.
+// Below, a few of its blobs read less than one slab over them does, and it is bridged.
+bool keeps_sparse_crown_apart(std::size_t budget);
 
 // The crown and its bridges as one field: the hard union of two distance bounds, still a
 // distance bound, so the sparse meshers may skip space.

@@ -17,10 +17,12 @@
 #include "lowpoly/piece_scaling.h"
 #include "lowpoly/surface_sampling.h"
 #include "lowpoly/triangle_bvh.h"
+#include "tree/crown_bridges.h"
 #include "tree/crown_hulls.h"
 #include "tree/leaf_cards.h"
 #include "tree/leaf_thinning.h"
 #include "tree/leaf_triangles.h"
+#include "tree/sparse_crown.h"
 
 namespace sylva {
 namespace {
@@ -234,9 +236,28 @@ std::size_t prism_allowance(const Tree& tree, std::size_t total) {
     return static_cast<std::size_t>(std::lround(share * static_cast<double>(total)));
 }
 
+// A sparse crown (tree/sparse_crown.h) whose rest of the budget gives each piece fewer than
+// this many triangles is drawn as polyhedra, not reduced: a reduction of many tiny blobs
+// at once gives some a tetrahedron and others a dozen triangles.
+constexpr std::size_t kMostPolyhedronTriangles = 12;
+
+// The trunk's share of `total` triangles beside a sparse crown of `pieces` pieces: what the
+// crown's polyhedra leave (octahedra, else bipyramids, else tetrahedra) where that still draws
+// every branch (fewest_prism_triangles()), else `allowance`: a sparse crown's tufts are a
+// fair part of its outline, and without its branches such a tree does not read at all.
+std::size_t sparse_crown_allowance(const Tree& tree, std::size_t total, std::size_t pieces,
+                                   std::size_t allowance) {
+    const std::size_t fewest = fewest_prism_triangles(tree.branch_axes, total);
+    for (const std::size_t each : {8, 6, 4})
+        if (total >= pieces * each + fewest) return total - pieces * each;
+    return allowance;
+}
+
 // A tree whose branches are prisms (Tree::branch_axes): as many branches as the trunk's
 // share of the budget buys (at most `most_branch_triangles`, a LOD level's trunk at most
-// the level before's), the crown reduced alone to the rest, drawn as `budget` says.
+// the level before's), the crown reduced alone to the rest, drawn as `budget` says; a sparse
+// crown with few triangles a piece as polyhedra, beside every branch drawn coarse before
+// any is refined (PrismOrder::EveryAxisFirst).
 ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& hull_source,
                                const TreeBudget& budget, const DecimateSettings& settings,
                                std::size_t most_branch_triangles) {
@@ -248,9 +269,18 @@ ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& 
         out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
         return out;
     }
-    const std::size_t allowance = budget.trunk ? *budget.trunk : prism_allowance(tree, total);
+    // A crown is sparse only unbridged and where the budget keeps its blobs apart
+    // (crown_bridges.h); below, it is drawn as its hulls or bridged slabs.
+    const bool sparse =
+        tree.crown_bridges == 0 && keeps_sparse_crown_apart(total) && is_sparse_crown(hull_source);
+    std::size_t pieces = 0;
+    if (sparse) component_of_triangles(hull_source, pieces);
+    std::size_t allowance = budget.trunk ? *budget.trunk : prism_allowance(tree, total);
+    if (sparse && !budget.trunk && !budget.crown)
+        allowance = sparse_crown_allowance(tree, total, pieces, allowance);
     BranchPrisms prisms =
-        branch_prisms(tree.branch_axes, total, std::min(allowance, most_branch_triangles));
+        branch_prisms(tree.branch_axes, total, std::min(allowance, most_branch_triangles),
+                      sparse ? PrismOrder::EveryAxisFirst : PrismOrder::LargestFirst);
     TreeBudget rest = budget;
     rest.trunk = rest.crown = std::nullopt;
     const std::size_t drawn = prisms.mesh.triangles.size();
@@ -260,8 +290,12 @@ ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& 
     // between tiers and curtains the crown's outline shows (a willow at 800 kept 0.85 of its
     // silhouette with them, 0.87 with these).
     const std::size_t lumps = crown_hull_count(rest) > 0 ? crown_hull_count(budget) : 0;
-    ReducedTree out =
-        reduce_shaped(Mesh{}, crown, hull_source, rest, settings, tree.crown_bridges == 0, lumps);
+    ReducedTree out;
+    if (sparse && rest.total < pieces * kMostPolyhedronTriangles)
+        out.crown = sparse_crown_polyhedra(hull_source, rest.total);
+    else
+        out = reduce_shaped(Mesh{}, crown, hull_source, rest, settings, tree.crown_bridges == 0,
+                            lumps);
     out.trunk = std::move(prisms.mesh);
     out.triangles = out.trunk.triangles.size() + out.crown.triangles.size();
     out.within_budget = out.within_budget && out.triangles <= total;

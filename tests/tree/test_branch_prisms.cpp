@@ -2,11 +2,14 @@
 // drawn without the one it grows from, the trunk always drawn, straight runs one axis.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "core/mesh_checks.h"
 #include "quality/self_intersections.h"
+#include "tests/helpers.h"
 #include "tree/branch_prisms.h"
 #include "tree/pipeline.h"
 #include "tree/template_library.h"
@@ -45,8 +48,8 @@ TEST(BranchPrisms, AStraightRunIsOneAxisAndABranchItsChild) {
     EXPECT_EQ(branch_axes(twice, std::vector<std::uint8_t>(5, 1), 0.01f).axes.size(), 2u);
 }
 
-// A branch gets the square-root rule's sides (the thickest the look's most) unless fewer
-// keep its polygon within half the look's tolerance of round: a twig that thin is a
+// A branch gets sides in proportion to its radius (the thickest the look's most) unless
+// fewer keep its polygon within half the look's tolerance of round: a twig that thin is a
 // triangle, whatever the trunk's radius.
 TEST(BranchPrisms, ATwigTheBudgetCannotShowRoundIsATriangle) {
     Skeleton s;
@@ -57,14 +60,15 @@ TEST(BranchPrisms, ATwigTheBudgetCannotShowRoundIsATriangle) {
     const PrismLook look = prism_look(axes, 800);  // 0.04 m on a 10 m tree: a stray of 0.02
     ASSERT_EQ(look.max_sides, 6);
     ASSERT_NEAR(look.tolerance, 0.04f, 1e-6f);
-    // The trunk ends in a cap (a branch grows from it), the branch in a point.
+    // The trunk ends in a cap (a branch grows from it), the branch, ten radii long, in a
+    // short point (a ring before it: every axis is drawn and triangles are left).
     const auto triangles = [](int trunk_sides, int branch_sides) {
-        return tube_triangles(2, trunk_sides, false) + tube_triangles(2, branch_sides, true);
+        return tube_triangles(2, trunk_sides, false) + tube_triangles(3, branch_sides, true);
     };
-    // Radius 0.3: 6 sqrt(0.6) = 4.6, 5 sides; round enough at 5 (pi / acos(1 - 0.02 / 0.3)
+    // Radius 0.3: 6 x 0.6 = 3.6, 4 sides; round enough at 4 (pi / acos(1 - 0.02 / 0.3)
     // asks for 9).
-    EXPECT_EQ(branch_prisms(axes, 800).mesh.triangles.size(), triangles(6, 5));
-    // A trunk and a branch of 0.02 and 0.015: the square-root rule gives 6 and 5, but
+    EXPECT_EQ(branch_prisms(axes, 800).mesh.triangles.size(), triangles(6, 4));
+    // A trunk and a branch of 0.02 and 0.015: the radius rule gives 6 and 5, but
     // neither radius is above the stray: triangles.
     s.segments[0].ra = s.segments[0].rb = 0.02f;
     s.segments[1].ra = s.segments[1].rb = 0.015f;
@@ -75,6 +79,54 @@ TEST(BranchPrisms, ATwigTheBudgetCannotShowRoundIsATriangle) {
     s.segments[1].ra = s.segments[1].rb = 0.03f;
     const BranchAxes finer = branch_axes(s, std::vector<std::uint8_t>(2, 1), 0.001f);
     EXPECT_GT(branch_prisms(finer, 3000).mesh.triangles.size(), triangles(3, 3));
+}
+
+// A pointed branch of one long segment: drawn with triangles to spare its point is short
+// (the branch keeps its width to half a radius before its end, where a point over the whole
+// segment thins it from the base); held to the plain prism's triangles, it is that prism.
+TEST(BranchPrisms, ALongLastSegmentEndsInAShortPoint) {
+    Skeleton s;
+    s.segments.push_back({{0, 0, 0}, {0, 2, 0}, 0.1f, 0.1f, -1, 0});
+    const BranchAxes axes = branch_axes(s, std::vector<std::uint8_t>(1, 1), 0.001f);
+    ASSERT_EQ(axes.axes.size(), 1u);
+    ASSERT_TRUE(axes.axes[0].axis.pointed);
+    // The widest a vertex lies from the axis in the top tenth, below the point.
+    const auto width_near_end = [](const Mesh& mesh) {
+        float widest = 0.0f;
+        for (const glm::vec3& p : mesh.positions)
+            if (p.y > 1.8f && p.y < 2.0f) widest = std::max(widest, std::hypot(p.x, p.z));
+        return widest;
+    };
+    const BranchPrisms free = branch_prisms(axes, 800);
+    EXPECT_GE(width_near_end(free.mesh), 0.1f);
+    const int sides = prism_look(axes, 800).max_sides;
+    EXPECT_EQ(free.mesh.triangles.size(), tube_triangles(3, sides, true));
+    const BranchPrisms held = branch_prisms(axes, 800, tube_triangles(2, sides, true));
+    EXPECT_EQ(held.mesh.triangles.size(), tube_triangles(2, sides, true));
+    EXPECT_LT(width_near_end(held.mesh), 0.05f);
+    test::expect_closed_manifold(free.mesh);
+}
+
+// Where nothing hides a branch, a budget that cannot draw every axis at the look's
+// tolerance but can draw each coarser draws them all (the largest first leaves some out).
+TEST(BranchPrisms, EveryAxisFirstDrawsEveryAxisTheBudgetCanDrawCoarse) {
+    MeshOptions options;
+    options.budget = 200;
+    const Tree tree = generate_tree(load_template("seed_spruce"), options);
+    const BranchAxes& axes = tree.branch_axes;
+    const std::size_t fewest = fewest_prism_triangles(axes, 200);
+    ASSERT_GT(axes.axes.size(), 30u);
+    const BranchPrisms every = branch_prisms(axes, 200, fewest, PrismOrder::EveryAxisFirst);
+    EXPECT_EQ(every.left_out, 0u);
+    EXPECT_LE(every.mesh.triangles.size(), fewest);
+    EXPECT_GT(branch_prisms(axes, 200, fewest, PrismOrder::LargestFirst).left_out, 0u);
+    // With more, the largest are refined: more triangles, every axis still drawn.
+    const BranchPrisms more = branch_prisms(axes, 200, 2 * fewest, PrismOrder::EveryAxisFirst);
+    EXPECT_EQ(more.left_out, 0u);
+    EXPECT_GT(more.mesh.triangles.size(), every.mesh.triangles.size());
+    EXPECT_LE(more.mesh.triangles.size(), 2 * fewest);
+    EXPECT_TRUE(find_self_intersections(more.mesh).pairs.empty());
+    test::expect_closed_manifold(more.mesh);
 }
 
 class PrismsOfTemplate : public ::testing::TestWithParam<std::string> {};

@@ -1,6 +1,6 @@
 // The struts that join a low budget's crown blobs (tree/crown_bridges.h): as thick as their
-// spheres where they are short, so the gaps between blobs stay open; a cell thick where they
-// are slender or the budget joins the whole crown.
+// spheres where they are short, so the gaps between blobs stay open; none for a sparse crown
+// (slender struts) from 200 triangles on; a cell thick where the budget joins the whole crown.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -47,11 +47,17 @@ TEST(CrownBridges, ShortStrutsAreAsThickAsTheirSpheres) {
         EXPECT_FLOAT_EQ(c.ra, 0.15f);
 }
 
-TEST(CrownBridges, SlenderStrutsAndAWholeCrownJoinedAreACellThick) {
-    // Spheres of 0.2 1.2 apart: struts six radii long.
+// Spheres of 0.2 1.2 apart (struts six radii long) are a sparse crown: from 200 triangles on
+// its blobs stay apart, below its struts are a cell thick, as are those that join a whole
+// crown into a few pieces.
+TEST(CrownBridges, ASparseCrownStaysApartAndAWholeCrownJoinedIsACellThick) {
     const Row slender = row_of(0.2f, 1.2f);
+    EXPECT_TRUE(crown_bridge_cones(slender.field, 400, slender.params, slender.box).empty());
+    EXPECT_TRUE(crown_bridge_cones(slender.field, 200, slender.params, slender.box).empty());
+    EXPECT_TRUE(keeps_sparse_crown_apart(200));
+    EXPECT_FALSE(keeps_sparse_crown_apart(150));
     const std::vector<CappedCone> struts =
-        crown_bridge_cones(slender.field, 400, slender.params, slender.box);
+        crown_bridge_cones(slender.field, 150, slender.params, slender.box);
     ASSERT_FALSE(struts.empty());
     for (const CappedCone& c : struts) EXPECT_FLOAT_EQ(c.ra, 0.3f);
     // 100 triangles join the short struts' row into two pieces.
