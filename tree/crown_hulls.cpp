@@ -12,6 +12,7 @@
 
 #include "core/convex_hull.h"
 #include "core/disjoint_sets.h"
+#include "core/mesh_checks.h"
 #include "lowpoly/merge_meshes.h"
 #include "tree/hull_gap.h"
 
@@ -175,10 +176,7 @@ std::vector<std::uint32_t> least_gap_clusters(const Mesh& crown,
                                               const std::vector<glm::vec3>& points,
                                               std::size_t hulls, std::size_t pieces) {
     if (hulls < 2) return apart_clusters(crown, index, k_means(points, hulls), pieces);
-    double area = 0.0;
-    for (const auto& t : crown.triangles)
-        area += 0.5 * glm::length(glm::cross(crown.positions[t[1]] - crown.positions[t[0]],
-                                             crown.positions[t[2]] - crown.positions[t[0]]));
+    const double area = surface_area(crown);
     const std::size_t stride = sample_stride(points.size());
     const auto cell = static_cast<float>(kGapCell * std::sqrt(area * static_cast<double>(stride) /
                                                               static_cast<double>(points.size())));

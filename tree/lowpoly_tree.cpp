@@ -11,6 +11,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/mesh_checks.h"
 #include "lowpoly/handle_cutting.h"
 #include "lowpoly/inner_shells.h"
 #include "lowpoly/merge_meshes.h"
@@ -214,15 +215,6 @@ ReducedTree reduce_shaped(const Mesh& trunk, const Mesh& crown, const Mesh& hull
     return out;
 }
 
-// The surface area of a mesh.
-double area_of(const Mesh& mesh) {
-    double area = 0.0;
-    for (const auto& t : mesh.triangles)
-        area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                             mesh.positions[t[2]] - mesh.positions[t[0]]));
-    return area;
-}
-
 // The trunk's share of `total` triangles when its branches are prisms: all of it without a
 // crown, else in proportion to the branches' side area against the crown's surface, between a
 // quarter and three quarters (the crown and the branches each need some to read at all).
@@ -232,7 +224,7 @@ std::size_t prism_allowance(const Tree& tree, std::size_t total) {
     for (const BranchAxis& axis : tree.branch_axes.axes)
         branches += 0.5 * std::numbers::pi * axis.area;  // pi (r0 + r1) L, a cone's side
     const double share =
-        std::clamp(branches / std::max(branches + area_of(tree.crown), 1e-12), 0.25, 0.75);
+        std::clamp(branches / std::max(branches + surface_area(tree.crown), 1e-12), 0.25, 0.75);
     return static_cast<std::size_t>(std::lround(share * static_cast<double>(total)));
 }
 

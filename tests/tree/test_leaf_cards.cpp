@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <string>
 
+#include "core/mesh_checks.h"
 #include "export/part_attributes.h"
 #include "lowpoly/triangle_bvh.h"
 #include "tree/leaf_cards.h"
@@ -125,14 +126,6 @@ TEST(LeafCards, ACardOfLeavesThatLieAlikeLiesAsTheyDo) {
     }
 }
 
-double area_of(const Mesh& mesh) {
-    double area = 0.0;
-    for (const auto& t : mesh.triangles)
-        area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                             mesh.positions[t[2]] - mesh.positions[t[0]]));
-    return area;
-}
-
 // Small leaves spread apart (a shrub's twigs): a card for several of them would span the sky
 // between them. In the open the cards' area stays within 1.75 times the leaves'; over a crown
 // they keep the leaves' spread (their overlap lies on the crown).
@@ -151,11 +144,11 @@ TEST(LeafCards, ACardInTheOpenIsNoLargerThanItsLeavesNeed) {
     }
     const Mesh open = leaf_cards(leaves, {.max_triangles = 16});
     ASSERT_GT(open.triangles.size(), 0u);
-    EXPECT_LE(area_of(open), 1.75 * area_of(leaves) * 1.001);
+    EXPECT_LE(surface_area(open), 1.75 * surface_area(leaves) * 1.001);
     Mesh crown;  // a crown surface through every leaf
     crown.positions = leaves.positions;
     const Mesh over_crown = leaf_cards(leaves, {.max_triangles = 16, .crown = &crown});
-    EXPECT_GT(area_of(over_crown), 4.0 * area_of(leaves));
+    EXPECT_GT(surface_area(over_crown), 4.0 * surface_area(leaves));
 }
 
 TEST(LeafCards, TheirUvsFillTheUnitSquareAsALeafs) {
