@@ -300,7 +300,7 @@ TEST(ImpostorLayout, ThinShareSeparatesFeatheryCrowns) {
 }
 
 // An automatic layout keeps 8 x 8 views at 1024 px for a solid crown and gives a thin one
-// 12 x 12 views at 2048 px, where it lines up between views to 0.85 (0.82 at the default).
+// 16 x 16 views at 2048 px, where it lines up between views to 0.85 (0.82 at the default).
 TEST(ImpostorLayout, AutomaticLayoutGivesThinCrownsMoreViews) {
     ImpostorSettings settings;
     settings.size = 0;
