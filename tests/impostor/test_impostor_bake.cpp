@@ -219,8 +219,9 @@ TEST(ImpostorBake, TheSameTreeBakesTheSameBytesOnAnyNumberOfThreads) {
     EXPECT_EQ(c.normal.pixels, d.normal.pixels);
 }
 
-// `size` 1024 (8 x 8 views, tiles of 128) or 0 (the layout chosen per tree).
-void check_fidelity(const std::string& name, int size = 1024) {
+// `size` 1024 (8 x 8 views, tiles of 128) or 0 (the layout chosen per tree); `between` the
+// least IoU between views it must keep.
+void check_fidelity(const std::string& name, int size = 1024, double between = 0.85) {
     const GameTree& tree = game_tree(name);
     ImpostorSettings settings;
     settings.size = size;
@@ -235,7 +236,7 @@ void check_fidelity(const std::string& name, int size = 1024) {
     std::printf("%s: silhouette IoU at captures >= %.3f, between >= %.3f; colour <= %.2f/255\n",
                 name.c_str(), f.capture_iou, f.between_iou, f.color);
     EXPECT_GE(f.capture_iou, 0.90) << name;
-    EXPECT_GE(f.between_iou, 0.85) << name;
+    EXPECT_GE(f.between_iou, between) << name;
     EXPECT_LE(f.color, 10.0) << name;
 }
 
@@ -254,12 +255,7 @@ TEST(ImpostorFidelity, Honda) {
 // Palm's fronds are a texel thin in a 128-pixel tile, where the tree's own silhouette moved
 // by a quarter of a pixel scores 0.84 between views: it does not reach 0.85.
 TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
-    const GameTree& tree = game_tree("palm");
-    const ImpostorFidelity f =
-        impostor_fidelity(tree.parts, bake_impostor(tree.parts, ImpostorSettings{}));
-    EXPECT_GE(f.capture_iou, 0.90);
-    EXPECT_GE(f.between_iou, 0.80);
-    EXPECT_LE(f.color, 10.0);
+    check_fidelity("palm", 1024, 0.80);
 }
 // Sparse crowns of thin parts at many depths: sampled on one plane per view (or stepped
 // toward the depth read there), a ray that passes beside a branch in one view lands on
@@ -268,17 +264,8 @@ TEST(ImpostorFidelity, PalmKeepsItsThinFrondsBetweenViews) {
 // depth finds the part the ray meets. Neither reaches IoU 0.85 between views: their own
 // silhouettes moved by a quarter of a pixel score 0.87 and 0.65.
 TEST(ImpostorFidelity, ThinCrownsLineUpAtEveryDepth) {
-    const GameTree& spruce = game_tree("seed_spruce");
-    const ImpostorFidelity s =
-        impostor_fidelity(spruce.parts, bake_impostor(spruce.parts, ImpostorSettings{}));
-    EXPECT_GE(s.capture_iou, 0.90);
-    EXPECT_GE(s.between_iou, 0.80);
-    EXPECT_LE(s.color, 10.0);
-    const GameTree& shrub = game_tree("flowering_shrub");
-    const ImpostorFidelity f =
-        impostor_fidelity(shrub.parts, bake_impostor(shrub.parts, ImpostorSettings{}));
-    EXPECT_GE(f.capture_iou, 0.90);
-    EXPECT_LE(f.color, 10.0);
+    check_fidelity("seed_spruce", 1024, 0.80);
+    check_fidelity("flowering_shrub", 1024, 0.0);  // no floor between views: see above
 }
 // Every template, with the figures printed (--gtest_also_run_disabled_tests), at the
 // layout chosen per tree: flowering_shrub's sprays stay under 0.85 between views even so.

@@ -226,29 +226,38 @@ TEST(InferRules, JitteredNodesDoNotScaleTheTree) {
     EXPECT_LE(r.hausdorff, 0.01 * r.example.height);
 }
 
+// The rules inferred from the fir measured with noise (seed 77), inferred once for the tests
+// that read them.
+const std::string& jittered_fir_grammar() {
+    static const std::string grammar = [] {
+        const TreeTemplate tree = load_template("fir");
+        const ExampleTree example =
+            parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
+        return infer_template(example).tree.grammar;
+    }();
+    return grammar;
+}
+
+// The line of `grammar` whose rule rewrites `module` (as "M(" starts it); empty if none.
+std::string rule_of(const std::string& grammar, const std::string& module) {
+    const std::size_t at = grammar.find("\n" + module + "(");
+    if (at == std::string::npos) return {};
+    return grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+}
+
 // Straight twigs measured with noise get a straight rule: the fir's third module (its
 // twigs, without branches of their own) draws no turn between segments.
 TEST(InferRules, JitteredStraightTwigsGetNoBend) {
-    const TreeTemplate tree = load_template("fir");
-    const ExampleTree example =
-        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
-    const std::string grammar = infer_template(example).tree.grammar;
-    const std::size_t at = grammar.find("\nC(");
-    ASSERT_NE(at, std::string::npos);
-    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    const std::string rule = rule_of(jittered_fir_grammar(), "C");
+    ASSERT_FALSE(rule.empty());
     EXPECT_EQ(rule.find("&("), std::string::npos) << rule;
 }
 
 // The five branches of a whorl measured with noise keep one branch angle and one length:
 // the fir's trunk module states no angle or length per slot.
 TEST(InferRules, JitteredWhorlKeepsOneAngleAndLength) {
-    const TreeTemplate tree = load_template("fir");
-    const ExampleTree example =
-        parse_example_tree(skeleton_json(jittered(grow(tree), 77), tree.params), "f.json");
-    const std::string grammar = infer_template(example).tree.grammar;
-    const std::size_t at = grammar.find("\nA(");
-    ASSERT_NE(at, std::string::npos);
-    const std::string rule = grammar.substr(at + 1, grammar.find('\n', at + 1) - at - 1);
+    const std::string rule = rule_of(jittered_fir_grammar(), "A");
+    ASSERT_FALSE(rule.empty());
     std::size_t whorl = 0;
     for (std::size_t i = rule.find("&(ba0)"); i != std::string::npos;
          i = rule.find("&(ba0)", i + 1))
