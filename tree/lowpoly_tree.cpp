@@ -263,10 +263,10 @@ ReducedTree reduce_with_prisms(const Tree& tree, const Mesh& crown, const Mesh& 
     }
     // A crown is sparse only unbridged and where the budget keeps its blobs apart
     // (crown_bridges.h); below, it is drawn as its hulls or bridged slabs.
-    const bool sparse =
-        tree.crown_bridges == 0 && keeps_sparse_crown_apart(total) && is_sparse_crown(hull_source);
-    std::size_t pieces = 0;
-    if (sparse) component_of_triangles(hull_source, pieces);
+    const std::size_t pieces = tree.crown_bridges == 0 && keeps_sparse_crown_apart(total)
+                                   ? sparse_crown_pieces(hull_source)
+                                   : 0;
+    const bool sparse = pieces > 0;
     std::size_t allowance = budget.trunk ? *budget.trunk : prism_allowance(tree, total);
     if (sparse && !budget.trunk && !budget.crown)
         allowance = sparse_crown_allowance(tree, total, pieces, allowance);

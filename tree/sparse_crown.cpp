@@ -15,12 +15,10 @@
 namespace sylva {
 namespace {
 
-// A connected piece of the crown: the mean of its vertices and their mean distance from it,
-// and its surface area.
+// A connected piece of the crown: the mean of its vertices and their mean distance from it.
 struct Piece {
     glm::vec3 center{0.0f};
     float radius = 0.0f;
-    double area = 0.0;
 };
 
 std::vector<Piece> pieces_of(const Mesh& crown) {
@@ -31,11 +29,7 @@ std::vector<Piece> pieces_of(const Mesh& crown) {
     std::vector<std::uint32_t> of_vertex(crown.positions.size(),
                                          std::numeric_limits<std::uint32_t>::max());
     for (std::size_t t = 0; t < crown.triangles.size(); ++t) {
-        const auto& tri = crown.triangles[t];
-        for (std::uint32_t v : tri) of_vertex[v] = label[t];
-        pieces[label[t]].area +=
-            0.5 * glm::length(glm::cross(crown.positions[tri[1]] - crown.positions[tri[0]],
-                                         crown.positions[tri[2]] - crown.positions[tri[0]]));
+        for (std::uint32_t v : crown.triangles[t]) of_vertex[v] = label[t];
     }
     std::vector<std::size_t> vertices(count, 0);
     for (std::size_t v = 0; v < of_vertex.size(); ++v) {
@@ -97,9 +91,9 @@ constexpr float kGoldenAngle = 2.39996323f;  // radians
 
 }  // namespace
 
-bool is_sparse_crown(const Mesh& crown) {
+std::size_t sparse_crown_pieces(const Mesh& crown) {
     const std::vector<Piece> pieces = pieces_of(crown);
-    if (pieces.size() < 2) return false;
+    if (pieces.size() < 2) return 0;
     double spacing = 0.0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         float nearest = std::numeric_limits<float>::max();
@@ -114,7 +108,7 @@ bool is_sparse_crown(const Mesh& crown) {
         }
         spacing += nearest / std::max({pieces[i].radius, pieces[other].radius, 1e-6f});
     }
-    return spacing > kSparseCrownSpacing * static_cast<double>(pieces.size());
+    return spacing > kSparseCrownSpacing * static_cast<double>(pieces.size()) ? pieces.size() : 0;
 }
 
 Mesh sparse_crown_polyhedra(const Mesh& crown, std::size_t budget) {

@@ -21,11 +21,11 @@ namespace sylva {
 // bridge between two of them is a rod, not a neck (tree/crown_bridges.h).
 inline constexpr double kSparseCrownSpacing = 4.0;
 
-// Whether a meshed crown is sparse: at least two connected pieces, and the mean over them of
-// the distance to the nearest other piece's centre over the larger of the two radii is above
-// kSparseCrownSpacing (a piece's centre is its vertices' mean, its radius their mean
-// distance from it).
-bool is_sparse_crown(const Mesh& crown);
+// The number of connected pieces of a meshed crown if it is sparse, else 0. Sparse: at least
+// two pieces, and the mean over them of the distance to the nearest other piece's centre over
+// the larger of the two radii is above kSparseCrownSpacing (a piece's centre is its vertices'
+// mean, its radius their mean distance from it).
+std::size_t sparse_crown_pieces(const Mesh& crown);
 
 // The crown's pieces as regular polyhedra within `budget` triangles: octahedra, bipyramids
 // or tetrahedra (8, 6 or 4 triangles, as many as the budget gives every piece; under four a

@@ -35,10 +35,10 @@ Mesh balls_in_a_row(int count, float radius, float spacing, float growth = 0.0f)
 }
 
 TEST(SparseCrown, BlobsFarApartForTheirSizeAreSparse) {
-    EXPECT_TRUE(is_sparse_crown(balls_in_a_row(10, 0.1f, 1.0f)));   // ten radii apart
-    EXPECT_FALSE(is_sparse_crown(balls_in_a_row(10, 0.1f, 0.3f)));  // three radii apart
-    EXPECT_FALSE(is_sparse_crown(balls_in_a_row(1, 0.1f, 1.0f)));   // one piece
-    EXPECT_FALSE(is_sparse_crown(Mesh{}));
+    EXPECT_EQ(sparse_crown_pieces(balls_in_a_row(10, 0.1f, 1.0f)), 10u);  // ten radii apart
+    EXPECT_EQ(sparse_crown_pieces(balls_in_a_row(10, 0.1f, 0.3f)), 0u);   // three radii apart
+    EXPECT_EQ(sparse_crown_pieces(balls_in_a_row(1, 0.1f, 1.0f)), 0u);    // one piece
+    EXPECT_EQ(sparse_crown_pieces(Mesh{}), 0u);
 }
 
 // Every piece a polyhedron of as many triangles as the budget gives each (8, 6 or 4), with
